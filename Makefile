@@ -1,0 +1,31 @@
+# The two entry points of the README: `make demo` and `make test`. Both install what they need.
+# Developers can use the CMake presets directly: cmake --preset dev && cmake --build --preset dev.
+
+BUILD_DIR := build/dev
+JOBS ?= $(shell nproc)
+
+.PHONY: deps configure build demo test bench format format-check clean
+
+deps:
+	bash packaging/install-deps.sh
+
+configure: deps
+	cmake --preset dev >/dev/null
+
+build: configure
+	cmake --build --preset dev -j $(JOBS)
+
+demo: build
+	$(BUILD_DIR)/app/bladeaxis --batch --demo --out out/demo
+
+test: build
+	ctest --preset dev -j $(JOBS)
+
+bench: build
+	bash tests/bench/run_benchmarks.sh $(BUILD_DIR)
+
+format:
+	find core app ui tests -name '*.h' -o -name '*.cpp' | xargs clang-format -i
+
+clean:
+	rm -rf build out

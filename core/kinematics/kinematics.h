@@ -1,0 +1,28 @@
+#pragma once
+// Forward and inverse kinematics of the table-A / head-B chain (spec §6.3), as pure functions.
+// Branch selection: A is chosen nearest to a reference angle (unwrapping), B in [-90, 90] deg.
+
+#include "core/base/error.h"
+#include "core/geometry/vec.h"
+#include "core/kinematics/machine_model.h"
+
+namespace bladeaxis::kinematics {
+
+// Tool tip O and unit tool axis V (tip -> spindle) in the workpiece frame W, mm.
+struct ToolPose {
+    Vec3 tip = Vec3::Zero();
+    Vec3 axis = Vec3::UnitZ();
+};
+
+ToolPose forwardKinematics(const TableAHeadB& chain, const MachineAxes& axes);
+
+// Inverse kinematics. `aReference` (rad, programmed convention) selects the A branch: the
+// result is the solution nearest to it, so a sequence of calls unwraps A continuously.
+// Errors (Geometry): non-finite input, zero axis, or an axis along the A axis (A undefined).
+Result<MachineAxes> inverseKinematics(const TableAHeadB& chain, const ToolPose& pose,
+                                      double aReference = 0.0);
+
+// Tool axis for a given programmed A and B, in W (spec §6.1 with the sign conventions).
+Vec3 toolAxisFor(const TableAHeadB& chain, double a, double b);
+
+} // namespace bladeaxis::kinematics

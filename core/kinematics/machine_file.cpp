@@ -1,0 +1,244 @@
+#include "core/kinematics/machine_file.h"
+
+#include "core/base/file_io.h"
+#include "core/base/units.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <optional>
+
+namespace bladeaxis::kinematics {
+
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr const char* kSchema = "bladeaxis-machine/1";
+
+// Machine files are small; locating a key by its first quoted occurrence gives the reader a
+// line to look at, which nlohmann::json does not keep for values.
+int lineOfKey(std::string_view text, std::string_view key) {
+    const std::string quoted = "\"" + std::string(key) + "\"";
+    const std::size_t at = text.find(quoted);
+    if (at == std::string_view::npos) {
+        return 0;
+    }
+    int line = 1;
+    for (std::size_t i = 0; i < at; ++i) {
+        line += text[i] == '\n' ? 1 : 0;
+    }
+    return line;
+}
+
+class MachineReader {
+  public:
+    MachineReader(std::string_view text, std::string_view file) : m_text(text), m_file(file) {}
+
+    Result<MachineModel> read(const Json& root);
+
+  private:
+    std::unexpected<Error> fail(std::string_view path, std::string_view key,
+                                const std::string& what) const {
+        return makeError(ErrorCode::MachineFile, std::string(path) + ": " + what,
+                         {m_file, lineOfKey(m_text, key), 0});
+    }
+    Result<double> number(const Json& object, std::string_view path, const char* key,
+                          std::optional<double> fallback, bool positive) const;
+    Result<AxisLimits> axis(const Json& axes, AxisId id, bool rotary) const;
+    Status chain(const Json& root, TableAHeadB& chain) const;
+
+    std::string_view m_text;
+    std::string m_file;
+};
+
+Result<double> MachineReader::number(const Json& object, std::string_view path, const char* key,
+                                     std::optional<double> fallback, bool positive) const {
+    const std::string fullPath = std::string(path) + "." + key;
+    if (!object.contains(key)) {
+        if (fallback) {
+            return *fallback;
+        }
+        return fail(fullPath, key, "missing, expected a number");
+    }
+    const Json& value = object.at(key);
+    if (!value.is_number()) {
+        return fail(fullPath, key, "expected a number, got " + value.dump());
+    }
+    const double number = value.get<double>();
+    if (!std::isfinite(number) || (positive && !(number > 0.0))) {
+        return fail(fullPath, key, "expected a positive number, got " + value.dump());
+    }
+    return number;
+}
+
+Result<AxisLimits> MachineReader::axis(const Json& axes, AxisId id, bool rotary) const {
+    const std::string name = axisName(id);
+    const std::string path = "axes." + name;
+    if (!axes.contains(name) || !axes.at(name).is_object()) {
+        return fail(path, name, "missing, expected an object with the axis limits");
+    }
+    const Json& object = axes.at(name);
+    // Linear axes in mm, rotary in degrees in the file; converted to rad here.
+    const double scale = rotary ? units::degToRad(1.0) : 1.0;
+    const char* unitLength = rotary ? "deg" : "mm";
+    auto key = [&](const char* stem) { return std::string(stem) + "_" + unitLength; };
+    AxisLimits limits;
+    const std::string velocityKey = key("velocity") + "_s";
+    const std::string accelerationKey = key("acceleration") + "_s2";
+    const std::string jerkKey = key("jerk") + "_s3";
+    const std::string backlashKey = key("backlash");
+    auto velocity = number(object, path, velocityKey.c_str(), std::nullopt, true);
+    auto acceleration = number(object, path, accelerationKey.c_str(), std::nullopt, true);
+    auto jerk = number(object, path, jerkKey.c_str(), std::nullopt, true);
+    auto backlash = number(object, path, backlashKey.c_str(), 0.0, false);
+    for (const auto* value : {&velocity, &acceleration, &jerk, &backlash}) {
+        if (!value->has_value()) {
+            return std::unexpected(value->error());
+        }
+    }
+    limits.velocity = *velocity * scale;
+    limits.acceleration = *acceleration * scale;
+    limits.jerk = *jerk * scale;
+    limits.backlash = *backlash * scale;
+    if (*backlash < 0.0) {
+        return fail(path + "." + backlashKey, backlashKey, "expected a number >= 0");
+    }
+    const std::string minKey = key("min");
+    const std::string maxKey = key("max");
+    if (object.contains(minKey) || object.contains(maxKey)) {
+        auto min = number(object, path, minKey.c_str(), std::nullopt, false);
+        if (!min) {
+            return std::unexpected(min.error());
+        }
+        auto max = number(object, path, maxKey.c_str(), std::nullopt, false);
+        if (!max) {
+            return std::unexpected(max.error());
+        }
+        if (!(*max > *min)) {
+            return fail(path + "." + maxKey, maxKey, "expected max > min");
+        }
+        limits.hasTravel = true;
+        limits.min = *min * scale;
+        limits.max = *max * scale;
+    }
+    return limits;
+}
+
+Status MachineReader::chain(const Json& root, TableAHeadB& chain) const {
+    if (!root.contains("kinematics") || !root.at("kinematics").is_object()) {
+        return fail("kinematics", "kinematics", "missing, expected an object");
+    }
+    const Json& object = root.at("kinematics");
+    const std::string type = object.value("type", "");
+    if (type != "table_a_head_b") {
+        return fail("kinematics.type", "type",
+                    "expected \"table_a_head_b\" (rotary table A about X, head B about Y), got \"" +
+                        type + "\"");
+    }
+    auto pivot = number(object, "kinematics", "pivot_length_mm", 0.0, false);
+    if (!pivot) {
+        return std::unexpected(pivot.error());
+    }
+    chain.pivotLength = *pivot;
+    for (const auto& [key, target] : {std::pair{"table_offset_mm", &chain.tableOffset},
+                                      std::pair{"head_offset_mm", &chain.headOffset}}) {
+        if (!object.contains(key)) {
+            continue;
+        }
+        const Json& value = object.at(key);
+        if (!value.is_array() || value.size() != 3 || !value[0].is_number() ||
+            !value[1].is_number() || !value[2].is_number()) {
+            return fail(std::string("kinematics.") + key, key, "expected [x, y, z] in mm");
+        }
+        *target = Vec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
+    }
+    for (const auto& [key, target] :
+         {std::pair{"a_sign", &chain.aSign}, std::pair{"b_sign", &chain.bSign}}) {
+        const int sign = object.value(key, 1);
+        if (sign != 1 && sign != -1) {
+            return fail(std::string("kinematics.") + key, key, "expected 1 or -1");
+        }
+        *target = sign;
+    }
+    return {};
+}
+
+Result<MachineModel> MachineReader::read(const Json& root) {
+    if (!root.is_object()) {
+        return makeError(ErrorCode::MachineFile, "expected a JSON object at the top level",
+                         {m_file, 1, 1});
+    }
+    if (root.value("schema", "") != kSchema) {
+        return fail("schema", "schema", std::string("expected \"") + kSchema + "\"");
+    }
+    MachineModel machine;
+    machine.sourceFile = m_file;
+    machine.name = root.value("name", "unnamed machine");
+    if (auto status = chain(root, machine.chain); !status) {
+        return std::unexpected(status.error());
+    }
+    if (!root.contains("axes") || !root.at("axes").is_object()) {
+        return fail("axes", "axes", "missing, expected an object with X, Y, Z, A, B");
+    }
+    for (AxisId id : kAllAxes) {
+        auto limits = axis(root.at("axes"), id, isRotary(id));
+        if (!limits) {
+            return std::unexpected(limits.error());
+        }
+        machine.limit(id) = *limits;
+    }
+    const std::string mode = root.at("axes").at("A").value("mode", "continuous");
+    if (mode == "continuous") {
+        machine.aMode = RotaryMode::Continuous;
+    } else if (mode == "modulo") {
+        machine.aMode = RotaryMode::Modulo;
+    } else {
+        return fail("axes.A.mode", "mode",
+                    "expected \"continuous\" or \"modulo\", got \"" + mode + "\"");
+    }
+    return machine;
+}
+
+// Converts nlohmann's byte offset of a syntax error into line and column.
+SourceLocation locateByte(std::string_view text, std::size_t byte, const std::string& file) {
+    int line = 1;
+    int column = 1;
+    for (std::size_t i = 0; i < std::min(byte, text.size()); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return {file, line, std::max(1, column - 1)};
+}
+
+} // namespace
+
+Result<MachineModel> parseMachineJson(std::string_view text, std::string_view fileName) {
+    const std::string file(fileName);
+    Json root;
+    try {
+        root = Json::parse(text);
+    } catch (const Json::parse_error& error) {
+        std::string what = error.what();
+        // nlohmann's message starts with "[json.exception.parse_error.101] parse error at line..."
+        const std::size_t colon = what.rfind(": ");
+        const std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
+        return makeError(ErrorCode::MachineFile, "invalid JSON: " + detail,
+                         locateByte(text, error.byte, file));
+    }
+    return MachineReader(text, file).read(root);
+}
+
+Result<MachineModel> loadMachineFile(const std::filesystem::path& path) {
+    auto text = readTextFile(path);
+    if (!text) {
+        return std::unexpected(text.error());
+    }
+    return parseMachineJson(*text, path.string());
+}
+
+} // namespace bladeaxis::kinematics

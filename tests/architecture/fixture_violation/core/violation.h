@@ -1,0 +1,3 @@
+#pragma once
+// Deliberately violates the dependency rule: the architecture check must reject this tree.
+#include <QString>

@@ -1,0 +1,34 @@
+#include "core/base/error.h"
+
+#include <gtest/gtest.h>
+
+namespace bladeaxis {
+namespace {
+
+TEST(Error, ToStringNamesFileLineColumnAndMessage) {
+    const Error error{ErrorCode::Parse, "expected a number after 'X'", {"blade.nc", 12, 5}, {}};
+    EXPECT_EQ(error.toString(), "blade.nc:12:5: parse error: expected a number after 'X'");
+}
+
+TEST(Error, ToStringOmitsUnknownLocationParts) {
+    EXPECT_EQ((SourceLocation{"m.json", 3, 0}).toString(), "m.json:3");
+    EXPECT_EQ((SourceLocation{"m.json", 0, 0}).toString(), "m.json");
+    const Error error{ErrorCode::InvalidArgument, "bad", {}, {}};
+    EXPECT_EQ(error.toString(), "invalid argument: bad");
+}
+
+TEST(Error, FurtherErrorsFollowOnTheirOwnLines) {
+    Error error{ErrorCode::Parse, "first", {"a.nc", 1, 1}, {}};
+    error.more.push_back({ErrorCode::Parse, "second", {"a.nc", 2, 1}, {}});
+    EXPECT_EQ(error.toString(), "a.nc:1:1: parse error: first\na.nc:2:1: parse error: second");
+}
+
+TEST(Error, MakeErrorBuildsAnUnexpectedResult) {
+    const Result<int> result = makeError(ErrorCode::FileNotFound, "no such file", {"x.nc"});
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::FileNotFound);
+    EXPECT_EQ(result.error().where.file, "x.nc");
+}
+
+} // namespace
+} // namespace bladeaxis

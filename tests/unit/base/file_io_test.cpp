@@ -1,0 +1,66 @@
+#include "core/base/file_io.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace bladeaxis {
+namespace {
+
+namespace fs = std::filesystem;
+
+class FileIo : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        m_dir = fs::temp_directory_path() /
+                ("bladeaxis_file_io_" +
+                 std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir);
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+    fs::path m_dir;
+};
+
+TEST_F(FileIo, WrittenContentReadsBackIdentically) {
+    const fs::path path = m_dir / "out.nc";
+    const std::string content = "G1 X1.000\r\nM30\n";
+    ASSERT_TRUE(writeFileAtomically(path, content).has_value());
+    const auto back = readTextFile(path);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_EQ(*back, content);
+}
+
+TEST_F(FileIo, MissingFileIsFileNotFoundNamingThePath) {
+    const auto result = readTextFile(m_dir / "missing.nc");
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::FileNotFound);
+    EXPECT_NE(result.error().toString().find("missing.nc"), std::string::npos);
+}
+
+TEST_F(FileIo, DirectoryIsNotReadableAsAFile) {
+    const auto result = readTextFile(m_dir);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::FileUnreadable);
+}
+
+TEST_F(FileIo, RefusesToOverwriteAProtectedInputAndLeavesItUnchanged) {
+    const fs::path input = m_dir / "in.nc";
+    std::ofstream(input) << "original";
+    const fs::path inputs[] = {input};
+    const auto status = writeFileAtomically(m_dir / "." / "in.nc", "new", inputs);
+    ASSERT_FALSE(status.has_value());
+    EXPECT_EQ(status.error().code, ErrorCode::WriteFailed);
+    EXPECT_EQ(*readTextFile(input), "original");
+}
+
+TEST_F(FileIo, FailedWriteLeavesNoPartialOrTemporaryFile) {
+    const auto status = writeFileAtomically(m_dir / "no_such_dir" / "out.nc", "x");
+    ASSERT_FALSE(status.has_value());
+    EXPECT_TRUE(fs::is_empty(m_dir));
+}
+
+} // namespace
+} // namespace bladeaxis

@@ -1,0 +1,108 @@
+#include "core/base/units.h"
+#include "core/kinematics/kinematics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace bladeaxis::kinematics {
+namespace {
+
+using units::degToRad;
+
+TableAHeadB offsetChain() {
+    TableAHeadB chain;
+    chain.pivotLength = 310.0;
+    chain.tableOffset = Vec3(12.0, -4.0, 150.0);
+    chain.headOffset = Vec3(0.5, 0.0, -2.0);
+    return chain;
+}
+
+TEST(ForwardKinematics, ZeroAnglesGiveTheToolAlongZ) {
+    const ToolPose pose = forwardKinematics({}, {1.0, 2.0, 3.0, 0.0, 0.0});
+    EXPECT_NEAR((pose.tip - Vec3(1, 2, 3)).norm(), 0.0, 1e-15);
+    EXPECT_NEAR((pose.axis - Vec3::UnitZ()).norm(), 0.0, 1e-15);
+}
+
+// Spec §6.1: V = (sin B0, sin A cos B0, cos A cos B0) in W.
+TEST(ForwardKinematics, ToolAxisFollowsTheSpecFormula) {
+    const double a = degToRad(37.0);
+    const double b = degToRad(5.0);
+    const ToolPose pose = forwardKinematics({}, {0, 0, 0, a, b});
+    const Vec3 expected(std::sin(b), std::sin(a) * std::cos(b), std::cos(a) * std::cos(b));
+    EXPECT_NEAR((pose.axis - expected).norm(), 0.0, 1e-15);
+    EXPECT_NEAR((toolAxisFor({}, a, b) - expected).norm(), 0.0, 1e-15);
+}
+
+// With B fixed the programmed X does not depend on A (spec §6.3).
+TEST(ForwardKinematics, RotatingTheTableLeavesXUnchanged) {
+    const TableAHeadB chain{};
+    const Vec3 tip(5.0, 20.0, -3.0);
+    for (double a : {0.0, 0.7, 2.0, -1.3}) {
+        auto axes = inverseKinematics(chain, {tip, toolAxisFor(chain, a, degToRad(5))}, a);
+        ASSERT_TRUE(axes.has_value());
+        EXPECT_NEAR(axes->x, 5.0, 1e-12);
+        EXPECT_NEAR(axes->a, a, 1e-12);
+    }
+}
+
+TEST(Kinematics, ForwardOfInverseReproducesRandomPoses) {
+    std::mt19937_64 random(42);
+    std::uniform_real_distribution<double> coordinate(-200.0, 200.0);
+    std::uniform_real_distribution<double> angle(-3.0, 3.0);
+    std::uniform_real_distribution<double> tilt(-1.2, 1.2);
+    for (int sign : {1, -1}) {
+        TableAHeadB chain = offsetChain();
+        chain.aSign = sign;
+        chain.bSign = -sign;
+        for (int i = 0; i < 1000; ++i) {
+            const ToolPose pose{Vec3(coordinate(random), coordinate(random), coordinate(random)),
+                                toolAxisFor(chain, angle(random), tilt(random))};
+            auto axes = inverseKinematics(chain, pose, 0.0);
+            ASSERT_TRUE(axes.has_value());
+            const ToolPose back = forwardKinematics(chain, *axes);
+            EXPECT_LT((back.tip - pose.tip).norm(), 1e-12 * 400);
+            EXPECT_LT((back.axis - pose.axis).norm(), 1e-12);
+        }
+    }
+}
+
+TEST(Kinematics, InverseOfForwardReproducesRandomAxes) {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> coordinate(-300.0, 300.0);
+    std::uniform_real_distribution<double> angle(-10.0, 10.0);
+    std::uniform_real_distribution<double> tilt(-1.4, 1.4);
+    const TableAHeadB chain = offsetChain();
+    for (int i = 0; i < 1000; ++i) {
+        const MachineAxes axes{coordinate(random), coordinate(random), coordinate(random),
+                               angle(random), tilt(random)};
+        // The A branch is selected by the reference: give the original A as reference.
+        auto back = inverseKinematics(chain, forwardKinematics(chain, axes), axes.a);
+        ASSERT_TRUE(back.has_value());
+        for (AxisId id : kAllAxes) {
+            EXPECT_NEAR((*back)[id], axes[id], 1e-9) << axisName(id);
+        }
+    }
+}
+
+TEST(InverseKinematics, UnwrapsANearTheReference) {
+    const Vec3 axis = toolAxisFor({}, degToRad(10.0), degToRad(5.0));
+    auto axes = inverseKinematics({}, {Vec3::Zero(), axis}, degToRad(700.0));
+    ASSERT_TRUE(axes.has_value());
+    EXPECT_NEAR(units::radToDeg(axes->a), 730.0, 1e-9);
+}
+
+TEST(InverseKinematics, RejectsNanZeroAndAxisParallelToA) {
+    const double nan = std::nan("");
+    EXPECT_EQ(inverseKinematics({}, {Vec3(nan, 0, 0), Vec3::UnitZ()}).error().code,
+              ErrorCode::Geometry);
+    EXPECT_EQ(inverseKinematics({}, {Vec3::Zero(), Vec3::Zero()}).error().code,
+              ErrorCode::Geometry);
+    const auto parallel = inverseKinematics({}, {Vec3::Zero(), Vec3::UnitX()});
+    ASSERT_FALSE(parallel.has_value());
+    EXPECT_NE(parallel.error().message.find("parallel to the A axis"), std::string::npos);
+}
+
+} // namespace
+} // namespace bladeaxis::kinematics

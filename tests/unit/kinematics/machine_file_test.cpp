@@ -1,0 +1,145 @@
+#include "core/base/units.h"
+#include "core/kinematics/machine_file.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace bladeaxis::kinematics {
+namespace {
+
+const std::string kShippedMachine =
+    std::string(BLADEAXIS_SOURCE_DIR) + "/resources/machines/blade_ab.json";
+
+TEST(MachineFile, ShippedDefaultMachineLoadsAndMatchesTheBuiltIn) {
+    auto machine = loadMachineFile(kShippedMachine);
+    ASSERT_TRUE(machine.has_value()) << machine.error().toString();
+    const MachineModel builtIn = defaultBladeMachine();
+    for (AxisId id : kAllAxes) {
+        EXPECT_NEAR(machine->limit(id).velocity, builtIn.limit(id).velocity, 1e-12) << axisName(id);
+        EXPECT_NEAR(machine->limit(id).acceleration, builtIn.limit(id).acceleration, 1e-12);
+        EXPECT_NEAR(machine->limit(id).jerk, builtIn.limit(id).jerk, 1e-12);
+        EXPECT_EQ(machine->limit(id).hasTravel, builtIn.limit(id).hasTravel);
+    }
+    EXPECT_EQ(machine->aMode, RotaryMode::Continuous);
+}
+
+TEST(MachineFile, RotaryLimitsAreConvertedFromDegreesToRadians) {
+    auto machine = loadMachineFile(kShippedMachine);
+    ASSERT_TRUE(machine.has_value());
+    EXPECT_NEAR(machine->limit(AxisId::A).velocity, units::degToRad(360.0), 1e-12);
+    EXPECT_NEAR(machine->limit(AxisId::B).max, units::degToRad(87.0), 1e-12);
+}
+
+struct BadMachineCase {
+    const char* name;
+    const char* json;
+    const char* expected; // substring of Error::toString()
+};
+
+std::string validAxes(const std::string& aAxis) {
+    const std::string linear =
+        R"({"velocity_mm_s": 500, "acceleration_mm_s2": 3000, "jerk_mm_s3": 30000})";
+    return R"("axes": {"X": )" + linear + R"(, "Y": )" + linear + R"(, "Z": )" + linear +
+           R"(, "A": )" + aAxis +
+           R"(, "B": {"velocity_deg_s": 90, "acceleration_deg_s2": 900, "jerk_deg_s3": 9000}})";
+}
+
+const std::string kHeader =
+    R"({"schema": "bladeaxis-machine/1", "kinematics": {"type": "table_a_head_b"}, )";
+const std::string kGoodA =
+    R"({"velocity_deg_s": 360, "acceleration_deg_s2": 1800, "jerk_deg_s3": 18000})";
+
+class BadMachineFile : public ::testing::TestWithParam<BadMachineCase> {};
+
+TEST_P(BadMachineFile, IsRejectedWithAMessageNamingTheProblem) {
+    const BadMachineCase& c = GetParam();
+    auto machine = parseMachineJson(c.json, "m.json");
+    ASSERT_FALSE(machine.has_value()) << c.name;
+    EXPECT_EQ(machine.error().code, ErrorCode::MachineFile);
+    EXPECT_NE(machine.error().toString().find(c.expected), std::string::npos)
+        << "got: " << machine.error().toString();
+}
+
+const std::string kNegativeVelocity =
+    kHeader +
+    validAxes(R"({"velocity_deg_s": -3, "acceleration_deg_s2": 1800, "jerk_deg_s3": 1})") + "}";
+const std::string kMissingJerk =
+    kHeader + validAxes(R"({"velocity_deg_s": 3, "acceleration_deg_s2": 1800})") + "}";
+const std::string kBadMode =
+    kHeader +
+    validAxes(
+        R"({"mode": "spiral", "velocity_deg_s": 3, "acceleration_deg_s2": 1, "jerk_deg_s3": 1})") +
+    "}";
+const std::string kTextVelocity =
+    kHeader +
+    validAxes(R"({"velocity_deg_s": "fast", "acceleration_deg_s2": 1, "jerk_deg_s3": 1})") + "}";
+const std::string kTravelReversed =
+    kHeader +
+    validAxes(
+        R"({"min_deg": 10, "max_deg": -10, "velocity_deg_s": 3, "acceleration_deg_s2": 1, "jerk_deg_s3": 1})") +
+    "}";
+const std::string kNoAxes = kHeader + "\"x\": 1}";
+const std::string kWrongType =
+    R"({"schema": "bladeaxis-machine/1", "kinematics": {"type": "head_head"}, )" +
+    validAxes(kGoodA) + "}";
+const std::string kBadSign =
+    R"({"schema": "bladeaxis-machine/1", "kinematics": {"type": "table_a_head_b", "a_sign": 2}, )" +
+    validAxes(kGoodA) + "}";
+const std::string kBadOffset =
+    R"({"schema": "bladeaxis-machine/1", "kinematics": {"type": "table_a_head_b", "table_offset_mm": [1, 2]}, )" +
+    validAxes(kGoodA) + "}";
+
+INSTANTIATE_TEST_SUITE_P(
+    Corpus, BadMachineFile,
+    ::testing::Values(
+        BadMachineCase{"syntax", "{\n  \"schema\": \n}",
+                       "m.json:3:1: machine file error: invalid JSON"},
+        BadMachineCase{"empty", "", "invalid JSON"},
+        BadMachineCase{"not an object", "[1, 2]", "expected a JSON object"},
+        BadMachineCase{"wrong schema", R"({"schema": "other/2"})",
+                       "schema: expected \"bladeaxis-machine/1\""},
+        BadMachineCase{"no kinematics", R"({"schema": "bladeaxis-machine/1"})",
+                       "kinematics: missing"},
+        BadMachineCase{"wrong chain", kWrongType.c_str(),
+                       "kinematics.type: expected \"table_a_head_b\""},
+        BadMachineCase{"bad sign", kBadSign.c_str(), "kinematics.a_sign: expected 1 or -1"},
+        BadMachineCase{"bad offset", kBadOffset.c_str(),
+                       "table_offset_mm: expected [x, y, z] in mm"},
+        BadMachineCase{"no axes", kNoAxes.c_str(), "axes: missing"},
+        BadMachineCase{"negative velocity", kNegativeVelocity.c_str(),
+                       "axes.A.velocity_deg_s: expected a positive number, got -3"},
+        BadMachineCase{"missing jerk", kMissingJerk.c_str(), "axes.A.jerk_deg_s3: missing"},
+        BadMachineCase{"bad mode", kBadMode.c_str(),
+                       "axes.A.mode: expected \"continuous\" or \"modulo\""},
+        BadMachineCase{"text velocity", kTextVelocity.c_str(), "expected a number, got \"fast\""},
+        BadMachineCase{"travel reversed", kTravelReversed.c_str(),
+                       "axes.A.max_deg: expected max > min"}));
+
+TEST(MachineFile, ErrorNamesTheLineOfTheOffendingKey) {
+    const std::string json =
+        "{\n\"schema\": \"bladeaxis-machine/1\",\n\"kinematics\": {\"type\": \"x\"}\n}";
+    auto machine = parseMachineJson(json, "m.json");
+    ASSERT_FALSE(machine.has_value());
+    EXPECT_EQ(machine.error().where.line, 3);
+}
+
+TEST(MachineFile, MissingFileIsFileNotFound) {
+    auto machine = loadMachineFile("/nonexistent/machine.json");
+    ASSERT_FALSE(machine.has_value());
+    EXPECT_EQ(machine.error().code, ErrorCode::FileNotFound);
+}
+
+TEST(MachineFile, ModuloModeIsRead) {
+    const std::string json =
+        kHeader +
+        validAxes(
+            R"({"mode": "modulo", "velocity_deg_s": 3, "acceleration_deg_s2": 1, "jerk_deg_s3": 1})") +
+        "}";
+    auto machine = parseMachineJson(json, "m.json");
+    ASSERT_TRUE(machine.has_value()) << machine.error().toString();
+    EXPECT_EQ(machine->aMode, RotaryMode::Modulo);
+}
+
+} // namespace
+} // namespace bladeaxis::kinematics

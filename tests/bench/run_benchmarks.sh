@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Runs every benchmark executable of a build (make bench) and keeps the JSON results under
+# out/bench/. Benchmarks are never part of `make test`: timings are reported, not asserted.
+set -euo pipefail
+build="${1:-build/dev}"
+mkdir -p out/bench
+found=0
+for bench in "$build"/tests/bench/bench_*; do
+    [[ -x "$bench" ]] || continue
+    found=1
+    name=$(basename "$bench")
+    echo "== $name"
+    "$bench" --benchmark_out="out/bench/$name.json" --benchmark_out_format=json \
+             --benchmark_counters_tabular=true
+done
+if ((found == 0)); then
+    echo "no benchmarks built in $build (configure with -DBLADEAXIS_BUILD_BENCHMARKS=ON)" >&2
+    exit 1
+fi

@@ -72,8 +72,13 @@ CubicSpline::CubicSpline(std::span<const double> knots, std::span<const double> 
     if (n < 2 || n != m_values.size()) {
         return;
     }
-    for (std::size_t i = 0; i + 1 < n; ++i) {
-        if (!(m_knots[i + 1] > m_knots[i]) || !std::isfinite(m_values[i])) {
+    // Every knot and value must be finite (the last ones included: an infinite end knot passes
+    // the ordering test and a NaN last value would spread through the whole solve).
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(m_knots[i]) || !std::isfinite(m_values[i])) {
+            return;
+        }
+        if (i + 1 < n && !(m_knots[i + 1] > m_knots[i])) {
             return;
         }
     }

@@ -1,0 +1,172 @@
+#include "core/analysis/axis_profile.h"
+
+#include "core/analysis/derivatives.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace bladeaxis::analysis {
+
+namespace {
+
+std::string recordName(std::size_t index, const toolpath::ClRecord& record) {
+    std::string name = "record " + std::to_string(index);
+    if (record.line > 0) {
+        name += " (line " + std::to_string(record.line) + ")";
+    }
+    return name;
+}
+
+bool axesFinite(const kinematics::MachineAxes& m) {
+    return std::isfinite(m.x) && std::isfinite(m.y) && std::isfinite(m.z) && std::isfinite(m.a) &&
+           std::isfinite(m.b);
+}
+
+Status validateInput(std::span<const kinematics::MachineAxes> axes,
+                     std::span<const toolpath::ClRecord> records,
+                     const AxisProfileOptions& options) {
+    if (axes.size() != records.size()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "axis motion: " + std::to_string(axes.size()) + " axis sets for " +
+                             std::to_string(records.size()) + " records");
+    }
+    if (records.empty()) {
+        return makeError(ErrorCode::InvalidArgument, "axis motion: no records to analyse");
+    }
+    if (!std::isfinite(options.feedOverride) || options.feedOverride < 0.0) {
+        return makeError(ErrorCode::InvalidArgument, "feed override must be >= 0 mm/s, got " +
+                                                         std::to_string(options.feedOverride));
+    }
+    const bool centre = options.feedReference == FeedReference::Centre;
+    if (centre && !(options.toolRadius > 0.0 && std::isfinite(options.toolRadius))) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "feed reference 'centre' needs a tool radius > 0 mm, got " +
+                             std::to_string(options.toolRadius));
+    }
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const toolpath::ClRecord& r = records[i];
+        const bool poseOk = r.tip.allFinite() && (!centre || r.axis.allFinite());
+        if (!poseOk || !axesFinite(axes[i])) {
+            return makeError(ErrorCode::Geometry,
+                             "non-finite tool pose or machine axis at " + recordName(i, r));
+        }
+        if (!std::isfinite(r.feed) || r.feed < 0.0) {
+            return makeError(ErrorCode::Geometry, "invalid feed " + std::to_string(r.feed) +
+                                                      " mm/s at " + recordName(i, r));
+        }
+    }
+    return {};
+}
+
+// The one constant feed of the analysis (see AxisProfileOptions::feedOverride).
+Result<double> chooseFeed(std::span<const toolpath::ClRecord> records, double feedOverride) {
+    if (feedOverride > 0.0) {
+        return feedOverride;
+    }
+    std::vector<double> feeds;
+    for (const toolpath::ClRecord& r : records) {
+        if (r.feed > 0.0 && (feeds.empty() || r.feed != feeds.back())) {
+            feeds.push_back(r.feed); // runs of one feed are stored once while scanning
+        }
+    }
+    if (feeds.empty()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "no programmed feed in the program: give a feed override");
+    }
+    if (std::all_of(feeds.begin(), feeds.end(), [&](double f) { return f == feeds.front(); })) {
+        return feeds.front();
+    }
+    // Varying feeds: the median over records, not over runs, so every record counts once.
+    feeds.clear();
+    for (const toolpath::ClRecord& r : records) {
+        if (r.feed > 0.0) {
+            feeds.push_back(r.feed);
+        }
+    }
+    const std::size_t mid = feeds.size() / 2;
+    std::nth_element(feeds.begin(), feeds.begin() + mid, feeds.end());
+    double median = feeds[mid];
+    if (feeds.size() % 2 == 0) {
+        median = 0.5 * (median + *std::max_element(feeds.begin(), feeds.begin() + mid));
+    }
+    return median;
+}
+
+// Fills pathParameter and sampleRecord; drops points closer than kMinPathStepMm to the last
+// kept one (distance to the kept point, so creeping sub-threshold steps still add up).
+void buildPathParameter(std::span<const toolpath::ClRecord> records,
+                        const AxisProfileOptions& options, AxisProfile& profile) {
+    const bool centre = options.feedReference == FeedReference::Centre;
+    const double radius = options.toolRadius;
+    auto pointOf = [&](const toolpath::ClRecord& r) -> Vec3 {
+        return centre ? Vec3(r.tip + radius * r.axis) : r.tip;
+    };
+    profile.pathParameter.reserve(records.size());
+    profile.sampleRecord.reserve(records.size());
+    Vec3 last = pointOf(records[0]);
+    double s = 0.0;
+    profile.pathParameter.push_back(0.0);
+    profile.sampleRecord.push_back(0);
+    for (std::size_t i = 1; i < records.size(); ++i) {
+        const Vec3 p = pointOf(records[i]);
+        const double step = (p - last).norm();
+        if (!(step >= kMinPathStepMm)) {
+            ++profile.mergedDuplicates;
+            continue;
+        }
+        s += step;
+        last = p;
+        profile.pathParameter.push_back(s);
+        profile.sampleRecord.push_back(i);
+    }
+    profile.pathLength = s;
+}
+
+} // namespace
+
+Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> axes,
+                                      std::span<const toolpath::ClRecord> records,
+                                      const AxisProfileOptions& options) {
+    if (Status ok = validateInput(axes, records, options); !ok) {
+        return std::unexpected(std::move(ok.error()));
+    }
+    const Result<double> feed = chooseFeed(records, options.feedOverride);
+    if (!feed) {
+        return std::unexpected(feed.error());
+    }
+    AxisProfile profile;
+    profile.feed = *feed;
+    profile.feedReference = options.feedReference;
+    profile.method = options.method;
+    buildPathParameter(records, options, profile);
+    profile.cycleTime = profile.pathLength / profile.feed;
+    const std::size_t n = profile.pathParameter.size();
+    profile.time.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        profile.time[i] = profile.pathParameter[i] / profile.feed;
+    }
+    std::vector<double> position;
+    for (kinematics::AxisId id : kinematics::kAllAxes) {
+        position.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            position[i] = axes[profile.sampleRecord[i]][id];
+        }
+        Result<AxisSeries> series = differentiateAxis(profile.pathParameter, std::move(position),
+                                                      profile.feed, options.method);
+        if (!series) {
+            Error error = std::move(series.error());
+            error.message = std::string("axis ") + kinematics::axisName(id) + ": " + error.message;
+            return std::unexpected(std::move(error));
+        }
+        profile.axes[static_cast<int>(id)] = std::move(*series);
+        position = {};
+    }
+    std::vector<double> a(axes.size());
+    std::transform(axes.begin(), axes.end(), a.begin(),
+                   [](const kinematics::MachineAxes& m) { return m.a; });
+    profile.aReversals = auditReversals(a);
+    return profile;
+}
+
+} // namespace bladeaxis::analysis

@@ -1,0 +1,82 @@
+#pragma once
+// Machine-axis motion along a posted program at constant feed (spec §8.1-8.2): path parameter,
+// time, per-axis velocity / acceleration / jerk with peaks and 99.9th percentiles, and the A
+// reversal audit (spec §6.4). Units: mm, rad, s; linear axes mm/s..., rotary rad/s....
+
+#include "core/analysis/reversals.h"
+#include "core/base/error.h"
+#include "core/kinematics/machine_model.h"
+#include "core/toolpath/toolpath.h"
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace bladeaxis::analysis {
+
+// Consecutive samples closer than this along the path (mm) are merged: the spline and the
+// differences need a strictly increasing path parameter.
+constexpr double kMinPathStepMm = 1e-9;
+
+// What the feed moves (spec §8.1): the tool tip (NC convention with tool-centre-point control)
+// or the cutter centre Q = O + R V (then A'' = theta''(S) F^2 exactly for re-scheduled paths).
+enum class FeedReference { Tip, Centre };
+
+// Spline: not-a-knot C2 cubic q(s) per axis, derivatives analytic (the headline method).
+// FiniteDifference: raw 3-point non-uniform differences (exact for quadratics); mostly measures
+// the CL discretisation, reported for comparison.
+enum class DerivativeMethod { Spline, FiniteDifference };
+
+struct AxisProfileOptions {
+    FeedReference feedReference = FeedReference::Tip;
+    DerivativeMethod method = DerivativeMethod::Spline;
+    // mm/s. 0 = the programmed feed. The analysis is always at ONE constant feed (peak ratios
+    // between methods are then F-free, spec §8.1); when the programmed feeds vary, that feed is
+    // the median of the positive programmed feeds (rapids and unknown feeds, stored as 0, are
+    // ignored). A per-record feed would add impulsive accelerations at every feed step, which
+    // measure the post-processor, not the tool orientation.
+    double feedOverride = 0.0;
+    double toolRadius = 0.0; // mm, required (> 0) for FeedReference::Centre
+};
+
+// One machine axis. Derivatives are time derivatives at the constant feed F:
+// velocity = q'(s) F, acceleration = q''(s) F^2, jerk = q'''(s) F^3.
+struct AxisSeries {
+    std::vector<double> position, velocity, acceleration, jerk; // at the samples
+    // max |.| over the samples, and for the spline method also over 4 interior points per
+    // interval (q'' is linear and q''' constant per interval, so only the velocity can peak
+    // inside an interval; the other two peaks are attained at the samples).
+    double peakVelocity = 0.0, peakAcceleration = 0.0, peakJerk = 0.0;
+    // 99.9th percentile of |.| at the samples (linear interpolation between order statistics).
+    double p999Velocity = 0.0, p999Acceleration = 0.0;
+};
+
+struct AxisProfile {
+    std::vector<double> pathParameter;     // s, mm, strictly increasing, s[0] = 0
+    std::vector<double> time;              // s at the constant feed: t = s / F
+    std::vector<std::size_t> sampleRecord; // input record of each sample (merged ones dropped)
+    std::array<AxisSeries, 5> axes;        // X Y Z A B, index by kinematics::AxisId
+    // A reversals over ALL input records (indices are record indices): a rotation at a fixed
+    // point, merged away for the derivatives, still turns the axis.
+    ReversalAudit aReversals;
+    double pathLength = 0.0;                          // mm
+    double feed = 0.0;                                // mm/s used
+    double cycleTime = 0.0;                           // s at that constant feed
+    std::size_t mergedDuplicates = 0;                 // samples dropped because ds < kMinPathStepMm
+    FeedReference feedReference = FeedReference::Tip; // which arc length s is (report it)
+    DerivativeMethod method = DerivativeMethod::Spline;
+
+    const AxisSeries& axis(kinematics::AxisId id) const { return axes[static_cast<int>(id)]; }
+};
+
+// axes: machine axes per record (A already continuous: see unwrapRotary for modulo programs);
+// records: tip and tool axis per record (for s) and the programmed feeds.
+// Errors: InvalidArgument (sizes differ, empty input, no usable feed, bad options), Geometry
+// (a non-finite coordinate, axis value or feed, named with its record index and source line).
+// A single sample (one record, or all records merged) gives zero derivatives.
+Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> axes,
+                                      std::span<const toolpath::ClRecord> records,
+                                      const AxisProfileOptions& options);
+
+} // namespace bladeaxis::analysis

@@ -1,0 +1,191 @@
+#include "core/analysis/derivatives.h"
+
+#include "core/geometry/cubic_spline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace bladeaxis::analysis {
+
+namespace {
+
+// Slope at x of the parabola through three points (Lagrange form): the one-sided end formula
+// of the 3-point scheme, exact for quadratics like the interior one.
+double parabolaSlope(const double* x, const double* y, double at) {
+    const double l0 = ((at - x[1]) + (at - x[2])) / ((x[0] - x[1]) * (x[0] - x[2]));
+    const double l1 = ((at - x[0]) + (at - x[2])) / ((x[1] - x[0]) * (x[1] - x[2]));
+    const double l2 = ((at - x[0]) + (at - x[1])) / ((x[2] - x[0]) * (x[2] - x[1]));
+    return y[0] * l0 + y[1] * l1 + y[2] * l2;
+}
+
+// q'_i by the 3-point non-uniform formula of spec §8.1, one-sided parabolas at the ends.
+void firstDifference(std::span<const double> s, std::span<const double> q,
+                     std::vector<double>& out) {
+    const std::size_t n = s.size();
+    out.assign(n, 0.0);
+    if (n == 2) {
+        out[0] = out[1] = (q[1] - q[0]) / (s[1] - s[0]);
+    }
+    if (n < 3) {
+        return;
+    }
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        const double hm = s[i] - s[i - 1];
+        const double hp = s[i + 1] - s[i];
+        out[i] =
+            (hm * hm * (q[i + 1] - q[i]) + hp * hp * (q[i] - q[i - 1])) / (hm * hp * (hm + hp));
+    }
+    out[0] = parabolaSlope(&s[0], &q[0], s[0]);
+    out[n - 1] = parabolaSlope(&s[n - 3], &q[n - 3], s[n - 1]);
+}
+
+// q''_i by the 3-point formula; the parabola of the end triple has the same constant second
+// derivative at its end point, so the ends copy their neighbours.
+void secondDifference(std::span<const double> s, std::span<const double> q,
+                      std::vector<double>& out) {
+    const std::size_t n = s.size();
+    out.assign(n, 0.0);
+    if (n < 3) {
+        return;
+    }
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        const double hm = s[i] - s[i - 1];
+        const double hp = s[i + 1] - s[i];
+        out[i] = 2.0 * (hm * (q[i + 1] - q[i]) - hp * (q[i] - q[i - 1])) / (hm * hp * (hm + hp));
+    }
+    out[0] = out[1];
+    out[n - 1] = out[n - 2];
+}
+
+void scale(std::vector<double>& values, double factor) {
+    for (double& v : values) {
+        v *= factor;
+    }
+}
+
+double maxAbs(std::span<const double> values) {
+    double peak = 0.0;
+    for (double v : values) {
+        peak = std::max(peak, std::abs(v));
+    }
+    return peak;
+}
+
+void finiteDifferences(std::span<const double> s, double feed, AxisSeries& series) {
+    firstDifference(s, series.position, series.velocity);
+    secondDifference(s, series.position, series.acceleration);
+    // The raw third difference: the 3-point slope of q'' (still exact, zero, for quadratics).
+    firstDifference(s, series.acceleration, series.jerk);
+    scale(series.velocity, feed);
+    scale(series.acceleration, feed * feed);
+    scale(series.jerk, feed * feed * feed);
+}
+
+// Returns the largest |velocity| found at the 4 interior points of the intervals.
+Status splineDerivatives(std::span<const double> s, double feed, AxisSeries& series,
+                         double& interiorPeak) {
+    const std::size_t n = s.size();
+    series.velocity.assign(n, 0.0);
+    series.acceleration.assign(n, 0.0);
+    series.jerk.assign(n, 0.0);
+    interiorPeak = 0.0;
+    if (n < 2) {
+        return {};
+    }
+    const geometry::CubicSpline spline(s, series.position);
+    if (!spline.isValid()) {
+        return makeError(ErrorCode::Internal, "axis spline rejected validated samples");
+    }
+    const double feed2 = feed * feed;
+    const double feed3 = feed2 * feed;
+    for (std::size_t i = 0; i < n; ++i) {
+        series.velocity[i] = spline.firstDerivativeAtKnot(i) * feed;
+        series.acceleration[i] = spline.secondDerivativeAtKnot(i) * feed2;
+        series.jerk[i] = spline.thirdDerivativeAtKnot(i) * feed3;
+    }
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        const double h = s[i + 1] - s[i];
+        for (int k = 1; k <= 4; ++k) {
+            const double x = s[i] + 0.2 * k * h;
+            interiorPeak = std::max(interiorPeak, std::abs(spline.firstDerivative(i, x)));
+        }
+    }
+    interiorPeak *= feed;
+    return {};
+}
+
+Status validate(std::span<const double> s, std::span<const double> position, double feed) {
+    if (s.size() != position.size()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "axis samples: " + std::to_string(s.size()) + " path values but " +
+                             std::to_string(position.size()) + " positions");
+    }
+    if (!(feed > 0.0) || !std::isfinite(feed)) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "feed must be positive and finite, got " + std::to_string(feed));
+    }
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (!std::isfinite(s[i]) || !std::isfinite(position[i])) {
+            return makeError(ErrorCode::Geometry,
+                             "non-finite path value or position at sample " + std::to_string(i));
+        }
+        if (i > 0 && !(s[i] > s[i - 1])) {
+            return makeError(ErrorCode::InvalidArgument,
+                             "path parameter not strictly increasing at sample " +
+                                 std::to_string(i));
+        }
+    }
+    return {};
+}
+
+} // namespace
+
+Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,
+                                     double feed, DerivativeMethod method) {
+    if (Status ok = validate(s, position, feed); !ok) {
+        return std::unexpected(std::move(ok.error()));
+    }
+    AxisSeries series;
+    series.position = std::move(position);
+    double interiorPeak = 0.0;
+    if (method == DerivativeMethod::Spline) {
+        if (Status ok = splineDerivatives(s, feed, series, interiorPeak); !ok) {
+            return std::unexpected(std::move(ok.error()));
+        }
+    } else {
+        finiteDifferences(s, feed, series);
+    }
+    series.peakVelocity = std::max(maxAbs(series.velocity), interiorPeak);
+    series.peakAcceleration = maxAbs(series.acceleration);
+    series.peakJerk = maxAbs(series.jerk);
+    series.p999Velocity = absPercentile(series.velocity, 0.999);
+    series.p999Acceleration = absPercentile(series.acceleration, 0.999);
+    if (!std::isfinite(series.peakVelocity + series.peakAcceleration + series.peakJerk)) {
+        return makeError(ErrorCode::Geometry, "axis derivatives overflow (samples too close for "
+                                              "the jumps between them)");
+    }
+    return series;
+}
+
+double absPercentile(std::span<const double> values, double p) {
+    if (values.empty() || !(p >= 0.0)) {
+        return 0.0;
+    }
+    std::vector<double> sorted(values.size());
+    std::transform(values.begin(), values.end(), sorted.begin(),
+                   // NaN would break the ordering nth_element relies on: rank it highest.
+                   [](double v) { return std::isnan(v) ? HUGE_VAL : std::abs(v); });
+    const double position = std::min(p, 1.0) * static_cast<double>(sorted.size() - 1);
+    const auto k = static_cast<std::size_t>(position);
+    const double fraction = position - static_cast<double>(k);
+    std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+    const double lower = sorted[k];
+    if (fraction == 0.0 || k + 1 >= sorted.size()) {
+        return lower;
+    }
+    const double upper = *std::min_element(sorted.begin() + k + 1, sorted.end());
+    return lower + fraction * (upper - lower);
+}
+
+} // namespace bladeaxis::analysis

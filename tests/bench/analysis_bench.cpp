@@ -1,0 +1,64 @@
+// Axis-motion analysis on a million-record program: must stay O(n) and well under 1 s.
+
+#include "core/analysis/axis_profile.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using namespace bladeaxis;
+
+// A helix about X (the A axis): the tip advances 0.01 mm per record along X while the table
+// turns, so A = phi grows continuously as in a blade finishing spiral.
+struct HelixProgram {
+    std::vector<toolpath::ClRecord> records;
+    std::vector<kinematics::MachineAxes> axes;
+
+    explicit HelixProgram(std::size_t count) {
+        records.resize(count);
+        axes.resize(count);
+        const double radius = 40.0;
+        for (std::size_t i = 0; i < count; ++i) {
+            const double phi = 0.002 * static_cast<double>(i);
+            const double x = 0.01 * static_cast<double>(i);
+            records[i].tip = Vec3(x, radius * std::cos(phi), radius * std::sin(phi));
+            records[i].axis = Vec3(0.0, std::cos(phi), std::sin(phi));
+            records[i].feed = 50.0;
+            axes[i] = {x, 0.0, radius, phi, 0.0};
+        }
+    }
+};
+
+void BM_AnalyseMillionRecords(benchmark::State& state) {
+    const HelixProgram program(1'000'000);
+    analysis::AxisProfileOptions options;
+    for (auto _ : state) {
+        auto profile = analysis::analyseAxisMotion(program.axes, program.records, options);
+        benchmark::DoNotOptimize(profile);
+        if (!profile) {
+            state.SkipWithError("analysis failed");
+            break;
+        }
+    }
+    state.SetItemsProcessed(state.iterations() * 1'000'000);
+}
+BENCHMARK(BM_AnalyseMillionRecords)->Unit(benchmark::kMillisecond);
+
+void BM_AnalyseMillionRecordsFiniteDifference(benchmark::State& state) {
+    const HelixProgram program(1'000'000);
+    analysis::AxisProfileOptions options;
+    options.method = analysis::DerivativeMethod::FiniteDifference;
+    for (auto _ : state) {
+        auto profile = analysis::analyseAxisMotion(program.axes, program.records, options);
+        benchmark::DoNotOptimize(profile);
+    }
+    state.SetItemsProcessed(state.iterations() * 1'000'000);
+}
+BENCHMARK(BM_AnalyseMillionRecordsFiniteDifference)->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+BENCHMARK_MAIN();

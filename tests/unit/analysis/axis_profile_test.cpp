@@ -1,0 +1,264 @@
+#include "core/analysis/axis_profile.h"
+#include "core/base/units.h"
+#include "tests/unit/analysis/test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace bladeaxis::analysis {
+namespace {
+
+using kinematics::AxisId;
+using testing::Program;
+
+constexpr DerivativeMethod kMethods[] = {DerivativeMethod::Spline,
+                                         DerivativeMethod::FiniteDifference};
+
+AxisProfileOptions withMethod(DerivativeMethod method) {
+    AxisProfileOptions options;
+    options.method = method;
+    return options;
+}
+
+// A straight line along a unit direction with random non-uniform spacing; s = distance.
+Program straightLine(const Vec3& direction, int count, double feed, double aPerMm = 0.0,
+                     double aPerMm2 = 0.0) {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> gap(0.05, 1.5);
+    Program program;
+    double u = 0.0;
+    for (int i = 0; i < count; ++i) {
+        program.add(direction * u, aPerMm * u + aPerMm2 * u * u, feed);
+        u += gap(rng);
+    }
+    return program;
+}
+
+TEST(AnalyseAxisMotion, StraightLineAtConstantFeedMovesEachAxisAtFeedTimesDirection) {
+    const Vec3 direction = Vec3(1.0, 2.0, -2.0) / 3.0;
+    const double feed = 50.0;
+    const Program program = straightLine(direction, 60, feed);
+    for (DerivativeMethod method : kMethods) {
+        const Result<AxisProfile> profile =
+            analyseAxisMotion(program.axes, program.records, withMethod(method));
+        ASSERT_TRUE(profile.has_value()) << profile.error().toString();
+        EXPECT_EQ(profile->feed, feed);
+        for (int j = 0; j < 3; ++j) {
+            const AxisSeries& axis = profile->axes[j];
+            for (std::size_t i = 0; i < axis.velocity.size(); ++i) {
+                EXPECT_NEAR(axis.velocity[i], feed * direction[j], 1e-9 * feed) << j << " " << i;
+                EXPECT_NEAR(axis.acceleration[i], 0.0, 1e-7) << j << " " << i;
+            }
+            EXPECT_NEAR(axis.peakVelocity, feed * std::abs(direction[j]), 1e-9 * feed);
+            EXPECT_NEAR(axis.p999Velocity, feed * std::abs(direction[j]), 1e-9 * feed);
+        }
+        EXPECT_EQ(profile->axis(AxisId::A).peakVelocity, 0.0);
+    }
+}
+
+TEST(AnalyseAxisMotion, TimeIsPathOverFeedAndPathIsTipArcLength) {
+    const Program program = straightLine(Vec3::UnitY(), 20, 25.0);
+    const Result<AxisProfile> profile =
+        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    ASSERT_TRUE(profile.has_value());
+    const double length = program.records.back().tip.y();
+    EXPECT_NEAR(profile->pathLength, length, 1e-12);
+    EXPECT_NEAR(profile->cycleTime, length / 25.0, 1e-12);
+    ASSERT_EQ(profile->time.size(), 20u);
+    for (std::size_t i = 0; i < 20; ++i) {
+        EXPECT_NEAR(profile->pathParameter[i], program.records[i].tip.y(), 1e-12);
+        EXPECT_DOUBLE_EQ(profile->time[i], profile->pathParameter[i] / 25.0);
+        EXPECT_EQ(profile->sampleRecord[i], i);
+    }
+}
+
+// Tip on a circle of radius r in the YZ plane with A = s / r (s = chord arc length as analysed):
+// Adot = F / r exactly, and the linear axes move at speed F with centripetal acceleration F^2/r.
+TEST(AnalyseAxisMotion, UniformCircleWithATiedToArcLengthTurnsAAtFeedOverRadius) {
+    const double r = 10.0;
+    const double feed = 100.0;
+    const int count = 400;
+    Program program;
+    double s = 0.0;
+    Vec3 previous = Vec3::Zero();
+    for (int i = 0; i < count; ++i) {
+        const double phi = 1.8 * units::kPi * i / count;
+        const Vec3 tip(0.0, r * std::cos(phi), r * std::sin(phi));
+        s += i == 0 ? 0.0 : (tip - previous).norm();
+        previous = tip;
+        program.add(tip, s / r, feed);
+    }
+    const Result<AxisProfile> profile =
+        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    ASSERT_TRUE(profile.has_value());
+    const AxisSeries& a = profile->axis(AxisId::A);
+    const AxisSeries& y = profile->axis(AxisId::Y);
+    const AxisSeries& z = profile->axis(AxisId::Z);
+    for (std::size_t i = 0; i < a.velocity.size(); ++i) {
+        EXPECT_NEAR(a.velocity[i], feed / r, 1e-9) << i;
+        EXPECT_NEAR(a.acceleration[i], 0.0, 1e-6) << i;
+        EXPECT_NEAR(std::hypot(y.velocity[i], z.velocity[i]), feed, 1e-4 * feed) << i;
+        EXPECT_NEAR(std::hypot(y.acceleration[i], z.acceleration[i]), feed * feed / r,
+                    1e-3 * feed * feed / r)
+            << i;
+    }
+    EXPECT_NEAR(a.peakVelocity, feed / r, 1e-9);
+    EXPECT_EQ(profile->aReversals.count, 0);
+    EXPECT_NEAR(profile->aReversals.travel, s / r, 1e-12);
+}
+
+TEST(AnalyseAxisMotion, ParabolicAGivesConstantAccelerationTwiceCTimesFeedSquared) {
+    const double c = 0.003; // rad/mm^2
+    const double feed = 40.0;
+    const Program program = straightLine(Vec3::UnitX(), 50, feed, 0.0, c);
+    for (DerivativeMethod method : kMethods) {
+        const Result<AxisProfile> profile =
+            analyseAxisMotion(program.axes, program.records, withMethod(method));
+        ASSERT_TRUE(profile.has_value());
+        const AxisSeries& a = profile->axis(AxisId::A);
+        for (std::size_t i = 0; i < a.acceleration.size(); ++i) {
+            const double s = profile->pathParameter[i];
+            EXPECT_NEAR(a.acceleration[i], 2 * c * feed * feed, 1e-7) << i;
+            EXPECT_NEAR(a.velocity[i], 2 * c * s * feed, 1e-8) << i;
+            EXPECT_NEAR(a.jerk[i], 0.0, 1e-4) << i;
+        }
+        EXPECT_NEAR(a.peakAcceleration, 2 * c * feed * feed, 1e-7);
+    }
+}
+
+TEST(AnalyseAxisMotion, MergesAndCountsDuplicatePoints) {
+    const Program line = straightLine(Vec3::UnitX(), 10, 30.0, 0.01);
+    Program program;
+    for (std::size_t i = 0; i < line.records.size(); ++i) {
+        program.records.push_back(line.records[i]);
+        program.axes.push_back(line.axes[i]);
+        if (i == 2 || i == 5) {
+            program.records.push_back(line.records[i]); // exact repeat
+            program.axes.push_back(line.axes[i]);
+        }
+        if (i == 7) { // 1e-10 mm away: below the 1e-9 mm merge distance
+            program.add(line.records[i].tip + Vec3(1e-10, 0, 0), line.axes[i].a, 30.0);
+        }
+    }
+    const Result<AxisProfile> merged =
+        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    const Result<AxisProfile> clean =
+        analyseAxisMotion(line.axes, line.records, AxisProfileOptions{});
+    ASSERT_TRUE(merged.has_value() && clean.has_value());
+    EXPECT_EQ(merged->mergedDuplicates, 3u);
+    EXPECT_EQ(merged->sampleRecord, (std::vector<std::size_t>{0, 1, 2, 4, 5, 6, 8, 9, 11, 12}));
+    EXPECT_EQ(merged->pathParameter, clean->pathParameter);
+    EXPECT_EQ(merged->axis(AxisId::A).velocity, clean->axis(AxisId::A).velocity);
+}
+
+TEST(AnalyseAxisMotion, NonFiniteInputIsAnErrorNamingTheLine) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const Program line = straightLine(Vec3::UnitX(), 5, 30.0);
+    Program badTip = line;
+    badTip.records[3].tip.y() = nan;
+    Program badAxis = line;
+    badAxis.axes[2].a = std::numeric_limits<double>::infinity();
+    Program badFeed = line;
+    badFeed.records[1].feed = nan;
+    for (const Program* program : {&badTip, &badAxis, &badFeed}) {
+        const Result<AxisProfile> profile =
+            analyseAxisMotion(program->axes, program->records, AxisProfileOptions{});
+        ASSERT_FALSE(profile.has_value());
+        EXPECT_EQ(profile.error().code, ErrorCode::Geometry);
+        EXPECT_NE(profile.error().message.find("line"), std::string::npos);
+    }
+}
+
+TEST(AnalyseAxisMotion, RejectsEmptyMismatchedAndFeedlessInput) {
+    const Program line = straightLine(Vec3::UnitX(), 5, 30.0);
+    EXPECT_EQ(analyseAxisMotion({}, {}, {}).error().code, ErrorCode::InvalidArgument);
+    const std::span<const kinematics::MachineAxes> fewer(line.axes.data(), 4);
+    EXPECT_EQ(analyseAxisMotion(fewer, line.records, {}).error().code, ErrorCode::InvalidArgument);
+    Program rapidOnly = line;
+    for (toolpath::ClRecord& record : rapidOnly.records) {
+        record.feed = 0.0;
+    }
+    EXPECT_FALSE(analyseAxisMotion(rapidOnly.axes, rapidOnly.records, {}).has_value());
+    AxisProfileOptions override;
+    override.feedOverride = 12.0;
+    const Result<AxisProfile> profile =
+        analyseAxisMotion(rapidOnly.axes, rapidOnly.records, override);
+    ASSERT_TRUE(profile.has_value());
+    EXPECT_EQ(profile->feed, 12.0);
+    override.feedOverride = -1.0;
+    EXPECT_FALSE(analyseAxisMotion(line.axes, line.records, override).has_value());
+}
+
+TEST(AnalyseAxisMotion, SinglePointOrAllDuplicatesGiveOneSampleAtRest) {
+    Program program;
+    for (int i = 0; i < 4; ++i) {
+        program.add(Vec3(1, 2, 3), 0.5, 10.0);
+    }
+    for (std::size_t n : {1u, 4u}) {
+        const Result<AxisProfile> profile =
+            analyseAxisMotion(std::span(program.axes).first(n), std::span(program.records).first(n),
+                              AxisProfileOptions{});
+        ASSERT_TRUE(profile.has_value());
+        EXPECT_EQ(profile->pathParameter.size(), 1u);
+        EXPECT_EQ(profile->mergedDuplicates, n - 1);
+        EXPECT_EQ(profile->cycleTime, 0.0);
+        EXPECT_EQ(profile->axis(AxisId::X).position, std::vector<double>{1.0});
+        EXPECT_EQ(profile->axis(AxisId::X).peakVelocity, 0.0);
+    }
+}
+
+TEST(AnalyseAxisMotion, VaryingProgrammedFeedsUseTheMedianOfPositiveFeeds) {
+    Program program = straightLine(Vec3::UnitX(), 5, 0.0);
+    const double feeds[] = {0.0, 10.0, 40.0, 20.0, 30.0}; // the rapid (0) is ignored
+    for (int i = 0; i < 5; ++i) {
+        program.records[i].feed = feeds[i];
+    }
+    EXPECT_DOUBLE_EQ(analyseAxisMotion(program.axes, program.records, {})->feed, 25.0);
+    program.records[0].feed = 35.0; // odd count: the middle value
+    EXPECT_DOUBLE_EQ(analyseAxisMotion(program.axes, program.records, {})->feed, 30.0);
+}
+
+// The tip stays put while the tool axis swings: with the tip as reference every point merges;
+// the cutter centre Q = O + R V moves on a circle of radius R.
+TEST(AnalyseAxisMotion, CentreReferenceMeasuresTheCutterCentrePath) {
+    const double radius = 5.0;
+    const double step = 0.01;
+    Program program;
+    for (int i = 0; i < 50; ++i) {
+        const double phi = step * i;
+        program.add(Vec3::Zero(), phi, 20.0, Vec3(0.0, std::sin(phi), std::cos(phi)));
+    }
+    const Result<AxisProfile> tip =
+        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    ASSERT_TRUE(tip.has_value());
+    EXPECT_EQ(tip->mergedDuplicates, 49u);
+    AxisProfileOptions centre;
+    centre.feedReference = FeedReference::Centre;
+    EXPECT_FALSE(analyseAxisMotion(program.axes, program.records, centre).has_value());
+    centre.toolRadius = radius;
+    const Result<AxisProfile> profile = analyseAxisMotion(program.axes, program.records, centre);
+    ASSERT_TRUE(profile.has_value());
+    EXPECT_EQ(profile->mergedDuplicates, 0u);
+    EXPECT_NEAR(profile->pathLength, 49 * 2 * radius * std::sin(step / 2), 1e-12);
+    EXPECT_EQ(profile->feedReference, FeedReference::Centre);
+}
+
+TEST(AnalyseAxisMotion, AuditsAReversalsOverAllRecords) {
+    Program program;
+    const double a[] = {0.0, 0.1, 0.2, 0.15, 0.3};
+    for (int i = 0; i < 5; ++i) {
+        program.add(Vec3(i, 0, 0), a[i], 10.0);
+    }
+    const Result<AxisProfile> profile =
+        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    ASSERT_TRUE(profile.has_value());
+    EXPECT_EQ(profile->aReversals.count, 2);
+    EXPECT_EQ(profile->aReversals.indices, (std::vector<std::size_t>{2, 3}));
+    EXPECT_NEAR(profile->aReversals.backwardTravel, 0.05, 1e-15);
+}
+
+} // namespace
+} // namespace bladeaxis::analysis

@@ -1,0 +1,133 @@
+#include "core/geometry/cubic_spline.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace bladeaxis::geometry {
+namespace {
+
+struct Cubic {
+    double c0, c1, c2, c3;
+    double value(double x) const { return c0 + x * (c1 + x * (c2 + x * c3)); }
+    double first(double x) const { return c1 + x * (2 * c2 + 3 * c3 * x); }
+    double second(double x) const { return 2 * c2 + 6 * c3 * x; }
+    double third() const { return 6 * c3; }
+};
+
+std::vector<double> randomKnots(std::mt19937& rng, int count) {
+    std::uniform_real_distribution<double> gap(0.05, 2.0);
+    std::vector<double> knots{-1.5};
+    for (int i = 1; i < count; ++i) {
+        knots.push_back(knots.back() + gap(rng));
+    }
+    return knots;
+}
+
+std::vector<double> sample(const Cubic& f, const std::vector<double>& knots) {
+    std::vector<double> values;
+    for (double x : knots) {
+        values.push_back(f.value(x));
+    }
+    return values;
+}
+
+// Checks value and all derivatives at the knots and at interior points of every interval.
+void expectReproduces(const Cubic& f, const std::vector<double>& knots, double tol) {
+    const std::vector<double> values = sample(f, knots);
+    const CubicSpline spline(knots, values);
+    ASSERT_TRUE(spline.isValid());
+    ASSERT_EQ(spline.size(), knots.size());
+    for (std::size_t i = 0; i < knots.size(); ++i) {
+        EXPECT_NEAR(spline.firstDerivativeAtKnot(i), f.first(knots[i]), tol) << i;
+        EXPECT_NEAR(spline.secondDerivativeAtKnot(i), f.second(knots[i]), tol) << i;
+        EXPECT_NEAR(spline.thirdDerivativeAtKnot(i), f.third(), tol) << i;
+    }
+    for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
+        for (double t : {0.0, 0.13, 0.5, 0.91, 1.0}) {
+            const double x = knots[i] + t * (knots[i + 1] - knots[i]);
+            EXPECT_NEAR(spline.value(i, x), f.value(x), tol) << i << " " << t;
+            EXPECT_NEAR(spline.firstDerivative(i, x), f.first(x), tol) << i << " " << t;
+            EXPECT_NEAR(spline.secondDerivative(i, x), f.second(x), tol) << i << " " << t;
+        }
+        EXPECT_NEAR(spline.thirdDerivative(i), f.third(), tol) << i;
+    }
+}
+
+TEST(CubicSpline, NotAKnotReproducesCubicsOnRandomNonUniformKnots) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> coefficient(-2.0, 2.0);
+    for (int count : {4, 5, 6, 10, 57}) {
+        for (int trial = 0; trial < 10; ++trial) {
+            const Cubic f{coefficient(rng), coefficient(rng), coefficient(rng), coefficient(rng)};
+            const std::vector<double> knots = randomKnots(rng, count);
+            // Values grow like x^3 (|x| up to ~100): scale the tolerance with the magnitudes.
+            const double scale = std::pow(std::max(1.0, std::abs(knots.back())), 3.0);
+            expectReproduces(f, knots, 1e-10 * scale);
+        }
+    }
+}
+
+TEST(CubicSpline, TwoKnotsGiveTheLine) {
+    const std::vector<double> knots{1.0, 3.0};
+    const std::vector<double> values{2.0, -2.0};
+    const CubicSpline spline(knots, values);
+    ASSERT_TRUE(spline.isValid());
+    EXPECT_DOUBLE_EQ(spline.value(0, 2.0), 0.0);
+    EXPECT_DOUBLE_EQ(spline.firstDerivativeAtKnot(0), -2.0);
+    EXPECT_DOUBLE_EQ(spline.firstDerivativeAtKnot(1), -2.0);
+    EXPECT_EQ(spline.secondDerivativeAtKnot(1), 0.0);
+    EXPECT_EQ(spline.thirdDerivativeAtKnot(0), 0.0);
+}
+
+TEST(CubicSpline, ThreeKnotsGiveTheParabola) {
+    const Cubic parabola{1.0, -0.5, 0.75, 0.0};
+    expectReproduces(parabola, {-1.0, 0.2, 3.0}, 1e-12);
+}
+
+TEST(CubicSpline, IsTwiceContinuousAndNotAKnotOnRandomData) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> value(-1.0, 1.0);
+    const std::vector<double> knots = randomKnots(rng, 30);
+    std::vector<double> values;
+    for (std::size_t i = 0; i < knots.size(); ++i) {
+        values.push_back(value(rng));
+    }
+    const CubicSpline spline(knots, values);
+    ASSERT_TRUE(spline.isValid());
+    for (std::size_t i = 1; i + 1 < knots.size(); ++i) {
+        const double x = knots[i];
+        EXPECT_NEAR(spline.value(i - 1, x), values[i], 1e-12);
+        EXPECT_NEAR(spline.value(i, x), values[i], 1e-12);
+        EXPECT_NEAR(spline.firstDerivative(i - 1, x), spline.firstDerivative(i, x), 1e-9);
+        EXPECT_NEAR(spline.secondDerivative(i - 1, x), spline.secondDerivative(i, x), 1e-9);
+    }
+    const std::size_t last = knots.size() - 2;
+    EXPECT_NEAR(spline.thirdDerivative(0), spline.thirdDerivative(1), 1e-8);
+    EXPECT_NEAR(spline.thirdDerivative(last), spline.thirdDerivative(last - 1), 1e-8);
+}
+
+TEST(CubicSpline, RejectsInvalidKnotsAndValues) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::vector<double> four{1.0, 2.0, 3.0, 4.0};
+    EXPECT_FALSE(CubicSpline(std::vector<double>{0.0, 1.0, 1.0, 2.0}, four).isValid());
+    EXPECT_FALSE(CubicSpline(std::vector<double>{0.0, 2.0, 1.0, 3.0}, four).isValid());
+    EXPECT_FALSE(CubicSpline(std::vector<double>{0.0, nan, 1.0, 3.0}, four).isValid());
+    EXPECT_FALSE(CubicSpline(std::vector<double>{0.0, 1.0, 2.0, inf}, four).isValid());
+    EXPECT_FALSE(CubicSpline(std::vector<double>{-inf, 1.0, 2.0, 3.0}, four).isValid());
+    EXPECT_FALSE(CubicSpline(std::vector<double>{0.0, 1.0, 2.0}, four).isValid());
+    EXPECT_FALSE(CubicSpline(std::vector<double>{0.0}, std::vector<double>{1.0}).isValid());
+    EXPECT_FALSE(CubicSpline(std::vector<double>{}, std::vector<double>{}).isValid());
+    EXPECT_FALSE(CubicSpline(four, std::vector<double>{1.0, nan, 2.0, 3.0}).isValid());
+    EXPECT_FALSE(CubicSpline(four, std::vector<double>{1.0, 2.0, 3.0, nan}).isValid());
+    EXPECT_FALSE(CubicSpline(four, std::vector<double>{1.0, 2.0, 3.0, inf}).isValid());
+    EXPECT_TRUE(CubicSpline(four, four).isValid());
+}
+
+} // namespace
+} // namespace bladeaxis::geometry

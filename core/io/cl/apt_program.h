@@ -1,0 +1,31 @@
+#pragma once
+// An APT / ISO 4343 CLDATA / Siemens NX CLSF program as read: the toolpath plus what the
+// rewriter needs to change only the GOTO numbers and keep every other byte.
+
+#include "core/toolpath/toolpath.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace bladeaxis::io::cl {
+
+// Where the GOTO of one record sits in the source text, and the modal state it was read in.
+// Kept small: the rewriter re-scans the statement from `textBegin` to find the numbers.
+struct AptRecordSource {
+    std::size_t textBegin = 0;     // start of the statement's first line in AptProgram::text
+    std::uint32_t multaxEpoch = 0; // number of MULTAX statements before this GOTO
+    std::uint8_t numberCount = 3;  // 3 (x,y,z) or 6 (x,y,z,i,j,k)
+    bool multaxOn = false;         // MULTAX was on when this GOTO was read
+    bool inches = false;           // UNITS/INCHES was in force (numbers are inches)
+};
+
+struct AptProgram {
+    toolpath::Toolpath path;             // format Apt; one record per GOTO
+    std::string text;                    // the original file, byte for byte
+    std::vector<AptRecordSource> source; // parallel to path.records
+    bool crlf = false;                   // the first line ends with CR LF
+};
+
+} // namespace bladeaxis::io::cl

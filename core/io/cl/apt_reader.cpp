@@ -1,0 +1,358 @@
+#include "core/io/cl/apt_reader.h"
+
+#include "core/base/file_io.h"
+#include "core/base/number_io.h"
+#include "core/base/tolerances.h"
+#include "core/base/units.h"
+#include "core/io/cl/detail/apt_statement.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+#include <string>
+
+namespace bladeaxis::io::cl {
+namespace {
+
+using detail::equalsIgnoreCase;
+using detail::Field;
+using detail::ParsedStatement;
+using detail::ScanStatus;
+using detail::Statement;
+using detail::StatementScanner;
+
+// A ball end's corner radius equals half its diameter within this (mm).
+constexpr double kBallRadiusTolMm = 1e-6;
+constexpr char kGotoNames[] = "xyzijk";
+
+bool looksNonFinite(std::string_view token) {
+    std::string lower(token);
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos;
+}
+
+// The modal state of the CL stream while reading.
+struct ModalState {
+    bool inches = false;
+    std::optional<double> feed; // mm/s
+    bool rapidNext = false;
+    Vec3 axis = Vec3::UnitZ();
+    bool multaxOn = false;
+    std::uint32_t multaxEpoch = 0;
+};
+
+class AptReader {
+  public:
+    AptReader(std::string_view text, std::string_view file) : m_text(text), m_file(file) {}
+
+    Result<AptProgram> run();
+
+  private:
+    void dispatch();
+    void readGoto();
+    void readFedrat();
+    void readUnits();
+    void readCutter();
+    void readTldata();
+    void readMultax();
+    void setTool(double diameter, std::optional<double> cornerRadius);
+
+    std::optional<double> number(const Field& field, std::string_view what);
+    void fail(std::size_t bodyPos, std::string message);
+    void warn(std::string message);
+    double lengthScale() const { return m_state.inches ? units::kMmPerInch : 1.0; }
+    Error collectErrors();
+
+    std::string_view m_text;
+    std::string_view m_file;
+    AptProgram m_program;
+    ModalState m_state;
+    Statement m_statement;
+    ParsedStatement m_parsed;
+    std::vector<Error> m_errors;
+    bool m_finished = false;
+};
+
+void AptReader::fail(std::size_t bodyPos, std::string message) {
+    if (m_errors.size() < static_cast<std::size_t>(kMaxReportedErrors)) {
+        m_errors.push_back(
+            Error{ErrorCode::Parse, std::move(message), m_statement.locate(bodyPos, m_file), {}});
+    }
+}
+
+void AptReader::warn(std::string message) {
+    m_program.path.warnings.push_back(std::string(m_file) + ":" +
+                                      std::to_string(m_statement.firstLine()) + ": " + message);
+}
+
+std::optional<double> AptReader::number(const Field& field, std::string_view what) {
+    std::optional<double> value = parseNumber(field.text);
+    if (!value) {
+        const std::string token(field.text);
+        fail(field.pos,
+             looksNonFinite(token)
+                 ? std::string(what) + " is not a finite number: '" + token + "'"
+                 : "expected a number for " + std::string(what) + ", got '" + token + "'");
+    }
+    return value;
+}
+
+void AptReader::dispatch() {
+    const std::string_view word = m_parsed.word;
+    if (equalsIgnoreCase(word, "GOTO")) {
+        readGoto();
+    } else if (equalsIgnoreCase(word, "FEDRAT")) {
+        readFedrat();
+    } else if (equalsIgnoreCase(word, "RAPID")) {
+        m_state.rapidNext = true;
+    } else if (equalsIgnoreCase(word, "MULTAX")) {
+        readMultax();
+    } else if (equalsIgnoreCase(word, "UNITS")) {
+        readUnits();
+    } else if (equalsIgnoreCase(word, "CUTTER")) {
+        readCutter();
+    } else if (equalsIgnoreCase(word, "TLDATA")) {
+        readTldata();
+    } else if (equalsIgnoreCase(word, "FINI")) {
+        m_finished = true;
+    }
+    // Everything else (PARTNO, PPRINT, LOADTL, SPINDL, COOLNT, MSYS, TOOL PATH, PAINT, CUTCOM,
+    // END, ...) does not move the tool: it stays in AptProgram::text and is otherwise ignored.
+}
+
+void AptReader::readGoto() {
+    const auto& fields = m_parsed.fields;
+    if (fields.size() != 3 && fields.size() != 6) {
+        fail(m_parsed.argsPos,
+             "expected 3 or 6 numbers after GOTO/, got " + std::to_string(fields.size()));
+        return;
+    }
+    double values[6] = {};
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        std::optional<double> value = number(fields[i], std::string("GOTO/ ") + kGotoNames[i]);
+        if (!value) {
+            return;
+        }
+        values[i] = *value;
+    }
+    toolpath::ClRecord record;
+    record.tip = Vec3(values[0], values[1], values[2]) * lengthScale();
+    if (!isFinite(record.tip)) {
+        fail(fields[0].pos, "GOTO/ coordinates out of range");
+        return;
+    }
+    if (fields.size() == 6) {
+        Vec3 axis(values[3], values[4], values[5]);
+        const double norm = axis.stableNorm();
+        if (!std::isfinite(norm) || norm <= tol::kZeroVector) {
+            fail(fields[3].pos, "tool axis (i,j,k) of GOTO/ has zero length");
+            return;
+        }
+        m_state.axis = axis / norm;
+    }
+    record.axis = m_state.axis;
+    record.line = m_statement.firstLine();
+    if (m_state.rapidNext) {
+        record.motion = toolpath::MotionKind::Rapid;
+    } else if (m_state.feed) {
+        record.feed = *m_state.feed;
+    } else {
+        fail(m_parsed.wordPos, "GOTO before any FEDRAT (a feed move needs a feed rate)");
+        return;
+    }
+    m_state.rapidNext = false; // RAPID applies to the next motion only
+    m_program.path.records.push_back(record);
+    m_program.source.push_back(AptRecordSource{m_statement.textBegin, m_state.multaxEpoch,
+                                               static_cast<std::uint8_t>(fields.size()),
+                                               m_state.multaxOn, m_state.inches});
+}
+
+void AptReader::readFedrat() {
+    std::optional<double> value;
+    double unitScale = lengthScale(); // a bare FEDRAT/f is per minute in the file's units
+    for (const Field& field : m_parsed.fields) {
+        if (equalsIgnoreCase(field.text, "MMPM")) {
+            unitScale = 1.0;
+        } else if (equalsIgnoreCase(field.text, "IPM")) {
+            unitScale = units::kMmPerInch;
+        } else if (equalsIgnoreCase(field.text, "MMPR") || equalsIgnoreCase(field.text, "IPR")) {
+            fail(field.pos, "feed per revolution (" + std::string(field.text) +
+                                ") is not supported; expected MMPM or IPM");
+            return;
+        } else if (value) {
+            fail(field.pos, "expected one feed value in FEDRAT/, got a second one");
+            return;
+        } else if (!(value = number(field, "the FEDRAT/ feed"))) {
+            return;
+        }
+    }
+    if (!value) {
+        fail(m_parsed.argsPos, "expected a feed value after FEDRAT/");
+        return;
+    }
+    if (*value <= 0.0) {
+        fail(m_parsed.argsPos, "feed must be positive, got " + formatShortest(*value));
+        return;
+    }
+    m_state.feed = units::perMinuteToPerSecond(*value * unitScale);
+}
+
+void AptReader::readUnits() {
+    const auto& fields = m_parsed.fields;
+    if (fields.size() == 1 && equalsIgnoreCase(fields[0].text, "MM")) {
+        m_state.inches = false;
+    } else if (fields.size() == 1 && (equalsIgnoreCase(fields[0].text, "INCHES") ||
+                                      equalsIgnoreCase(fields[0].text, "INCH"))) {
+        m_state.inches = true;
+    } else {
+        fail(m_parsed.argsPos, "expected MM or INCHES after UNITS/");
+    }
+}
+
+void AptReader::setTool(double diameter, std::optional<double> cornerRadius) {
+    const double half = 0.5 * diameter * lengthScale();
+    const std::optional<double> radius =
+        cornerRadius ? std::optional(*cornerRadius * lengthScale()) : std::nullopt;
+    if (radius && std::abs(*radius - half) > kBallRadiusTolMm) {
+        warn("the cutter is not a ball end (corner radius " + formatShortest(*radius) +
+             " mm, half diameter " + formatShortest(half) + " mm); using the half diameter");
+    }
+    m_program.path.toolRadius =
+        radius && std::abs(*radius - half) <= kBallRadiusTolMm ? *radius : half;
+}
+
+void AptReader::readCutter() {
+    const auto& fields = m_parsed.fields;
+    if (fields.empty()) {
+        fail(m_parsed.argsPos, "expected a diameter after CUTTER/");
+        return;
+    }
+    std::optional<double> diameter = number(fields[0], "the CUTTER/ diameter");
+    if (!diameter) {
+        return;
+    }
+    if (*diameter <= 0.0) {
+        fail(fields[0].pos, "cutter diameter must be positive, got " + formatShortest(*diameter));
+        return;
+    }
+    std::optional<double> radius;
+    if (fields.size() >= 2 && !(radius = number(fields[1], "the CUTTER/ corner radius"))) {
+        return;
+    }
+    setTool(*diameter, radius);
+}
+
+void AptReader::readTldata() {
+    const auto& fields = m_parsed.fields;
+    if (fields.empty() || !equalsIgnoreCase(fields[0].text, "MILL")) {
+        warn("TLDATA other than TLDATA/MILL ignored");
+        return;
+    }
+    if (fields.size() < 2) {
+        fail(m_parsed.argsPos, "expected MILL,diameter,lower radius after TLDATA/");
+        return;
+    }
+    std::optional<double> diameter = number(fields[1], "the TLDATA/ diameter");
+    if (!diameter) {
+        return;
+    }
+    if (*diameter <= 0.0) {
+        fail(fields[1].pos, "tool diameter must be positive, got " + formatShortest(*diameter));
+        return;
+    }
+    std::optional<double> radius;
+    if (fields.size() >= 3 && !(radius = number(fields[2], "the TLDATA/ lower radius"))) {
+        return;
+    }
+    setTool(*diameter, radius);
+}
+
+void AptReader::readMultax() {
+    const auto& fields = m_parsed.fields;
+    ++m_state.multaxEpoch;
+    if (fields.empty() || equalsIgnoreCase(fields[0].text, "ON")) {
+        m_state.multaxOn = true;
+    } else if (equalsIgnoreCase(fields[0].text, "OFF")) {
+        m_state.multaxOn = false;
+    } else {
+        fail(fields[0].pos,
+             "expected ON or OFF after MULTAX/, got '" + std::string(fields[0].text) + "'");
+    }
+}
+
+Error AptReader::collectErrors() {
+    Error first = std::move(m_errors.front());
+    first.more.assign(std::make_move_iterator(m_errors.begin() + 1),
+                      std::make_move_iterator(m_errors.end()));
+    return first;
+}
+
+SourceLocation locateOffset(std::string_view text, std::size_t offset, std::string_view file) {
+    const std::string_view before = text.substr(0, offset);
+    const auto line = std::count(before.begin(), before.end(), '\n') + 1;
+    const std::size_t lineStart = before.rfind('\n');
+    const std::size_t column =
+        lineStart == std::string_view::npos ? offset + 1 : offset - lineStart;
+    return SourceLocation{std::string(file), static_cast<int>(line), static_cast<int>(column)};
+}
+
+Result<AptProgram> AptReader::run() {
+    if (m_text.empty()) {
+        return makeError(ErrorCode::Parse, "empty file", SourceLocation{std::string(m_file), 1, 1});
+    }
+    if (std::size_t bad = detail::findBinaryByte(m_text); bad != std::string_view::npos) {
+        return makeError(ErrorCode::Parse,
+                         "binary data in a CL text file (byte " +
+                             std::to_string(static_cast<unsigned char>(m_text[bad])) + ")",
+                         locateOffset(m_text, bad, m_file));
+    }
+    m_program.path.sourceFile = std::string(m_file);
+    m_program.path.format = toolpath::SourceFormat::Apt;
+    m_program.text = std::string(m_text);
+    const std::size_t firstNewline = m_text.find('\n');
+    m_program.crlf = firstNewline != std::string_view::npos && firstNewline > 0 &&
+                     m_text[firstNewline - 1] == '\r';
+    StatementScanner scanner(m_text);
+    while (!m_finished && m_errors.size() < static_cast<std::size_t>(kMaxReportedErrors)) {
+        const ScanStatus status = scanner.next(m_statement);
+        if (status == ScanStatus::End) {
+            break;
+        }
+        if (status == ScanStatus::Unterminated) {
+            m_errors.push_back(Error{
+                ErrorCode::Parse,
+                "unterminated '$' continuation at the end of the file",
+                SourceLocation{std::string(m_file), scanner.errorLine(), scanner.errorColumn()},
+                {}});
+            break;
+        }
+        detail::parseStatement(m_statement.body, m_parsed);
+        dispatch();
+    }
+    if (!m_errors.empty()) {
+        return std::unexpected(collectErrors());
+    }
+    if (m_program.path.records.empty()) {
+        return makeError(ErrorCode::Parse, "no GOTO statement in the file",
+                         SourceLocation{std::string(m_file), 1, 1});
+    }
+    return std::move(m_program);
+}
+
+} // namespace
+
+Result<AptProgram> parseApt(std::string_view text, std::string_view fileName) {
+    return AptReader(text, fileName).run();
+}
+
+Result<AptProgram> readAptFile(const std::filesystem::path& path) {
+    Result<std::string> text = readTextFile(path);
+    if (!text) {
+        return std::unexpected(std::move(text.error()));
+    }
+    return parseApt(*text, path.string());
+}
+
+} // namespace bladeaxis::io::cl

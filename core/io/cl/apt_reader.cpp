@@ -24,7 +24,8 @@ using detail::StatementScanner;
 
 // A ball end's corner radius equals half its diameter within this (mm).
 constexpr double kBallRadiusTolMm = 1e-6;
-constexpr char kGotoNames[] = "xyzijk";
+constexpr std::string_view kGotoFieldNames[] = {"GOTO/ x", "GOTO/ y", "GOTO/ z",
+                                                "GOTO/ i", "GOTO/ j", "GOTO/ k"};
 
 bool looksNonFinite(std::string_view token) {
     std::string lower(token);
@@ -131,7 +132,7 @@ void AptReader::readGoto() {
     }
     double values[6] = {};
     for (std::size_t i = 0; i < fields.size(); ++i) {
-        std::optional<double> value = number(fields[i], std::string("GOTO/ ") + kGotoNames[i]);
+        std::optional<double> value = number(fields[i], kGotoFieldNames[i]);
         if (!value) {
             return;
         }
@@ -314,7 +315,9 @@ Result<AptProgram> AptReader::run() {
     const std::size_t firstNewline = m_text.find('\n');
     m_program.crlf = firstNewline != std::string_view::npos && firstNewline > 0 &&
                      m_text[firstNewline - 1] == '\r';
-    StatementScanner scanner(m_text);
+    // A UTF-8 byte order mark (some Windows editors add one) would hide the first major word.
+    const std::size_t bom = m_text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+    StatementScanner scanner(m_text, bom);
     while (!m_finished && m_errors.size() < static_cast<std::size_t>(kMaxReportedErrors)) {
         const ScanStatus status = scanner.next(m_statement);
         if (status == ScanStatus::End) {

@@ -114,6 +114,13 @@ TEST(ParseApt, IgnoresOtherMajorWordsAndStopsAtFini) {
     EXPECT_EQ(program.path.records.size(), 1u);
 }
 
+TEST(ParseApt, SkipsAUtf8ByteOrderMark) {
+    const AptProgram program = parseOk("\xEF\xBB\xBFRAPID\nGOTO/0,0,9\n");
+    ASSERT_EQ(program.path.records.size(), 1u);
+    EXPECT_EQ(program.path.records[0].motion, MotionKind::Rapid);
+    EXPECT_EQ(rewriteApt(program, program.path.records).value(), program.text);
+}
+
 TEST(ParseApt, CollectsUpToTwentyErrors) {
     std::string text = "FEDRAT/60\n";
     for (int i = 0; i < 30; ++i) {

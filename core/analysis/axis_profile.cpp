@@ -162,10 +162,17 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         profile.axes[static_cast<int>(id)] = std::move(*series);
         position = {};
     }
-    std::vector<double> a(axes.size());
-    std::transform(axes.begin(), axes.end(), a.begin(),
-                   [](const kinematics::MachineAxes& m) { return m.a; });
-    profile.aReversals = auditReversals(a);
+    // Without merged points the sampled A already is the whole program: no gather needed.
+    const std::vector<double>& sampledA =
+        profile.axes[static_cast<int>(kinematics::AxisId::A)].position;
+    if (profile.mergedDuplicates == 0) {
+        profile.aReversals = auditReversals(sampledA);
+    } else {
+        std::vector<double> a(axes.size());
+        std::transform(axes.begin(), axes.end(), a.begin(),
+                       [](const kinematics::MachineAxes& m) { return m.a; });
+        profile.aReversals = auditReversals(a);
+    }
     return profile;
 }
 

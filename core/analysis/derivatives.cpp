@@ -149,6 +149,17 @@ Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<doub
     AxisSeries series;
     series.position = std::move(position);
     double interiorPeak = 0.0;
+    const bool still = std::ranges::all_of(series.position,
+                                           [&](double q) { return q == series.position.front(); });
+    if (still) {
+        // A still axis (B in four-axis work) has exactly zero derivatives by either method:
+        // skip the fit, which is most of the cost per axis.
+        const std::size_t n = series.position.size();
+        series.velocity.assign(n, 0.0);
+        series.acceleration.assign(n, 0.0);
+        series.jerk.assign(n, 0.0);
+        return series;
+    }
     if (method == DerivativeMethod::Spline) {
         if (Status ok = splineDerivatives(s, feed, series, interiorPeak); !ok) {
             return std::unexpected(std::move(ok.error()));
@@ -172,19 +183,21 @@ double absPercentile(std::span<const double> values, double p) {
     if (values.empty() || !(p >= 0.0)) {
         return 0.0;
     }
-    std::vector<double> sorted(values.size());
-    std::transform(values.begin(), values.end(), sorted.begin(),
-                   // NaN would break the ordering nth_element relies on: rank it highest.
-                   [](double v) { return std::isnan(v) ? HUGE_VAL : std::abs(v); });
-    const double position = std::min(p, 1.0) * static_cast<double>(sorted.size() - 1);
+    const std::size_t n = values.size();
+    const double position = std::min(p, 1.0) * static_cast<double>(n - 1);
     const auto k = static_cast<std::size_t>(position);
     const double fraction = position - static_cast<double>(k);
-    std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
-    const double lower = sorted[k];
-    if (fraction == 0.0 || k + 1 >= sorted.size()) {
+    // Only the n - k largest magnitudes matter: for p = 0.999 that is 0.1 % of the samples, so
+    // a partial sort into a small buffer avoids copying (and page-faulting) the whole series.
+    // NaN would break the ordering: it ranks above every number.
+    const auto magnitude = [](double v) { return std::isnan(v) ? HUGE_VAL : std::abs(v); };
+    std::vector<double> top(n - k);
+    std::ranges::partial_sort_copy(values, top, std::ranges::greater{}, magnitude, magnitude);
+    const double lower = magnitude(top.back());
+    if (fraction == 0.0 || top.size() < 2) {
         return lower;
     }
-    const double upper = *std::min_element(sorted.begin() + k + 1, sorted.end());
+    const double upper = magnitude(top[top.size() - 2]);
     return lower + fraction * (upper - lower);
 }
 

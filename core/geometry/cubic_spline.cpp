@@ -1,6 +1,7 @@
 #include "core/geometry/cubic_spline.h"
 
 #include <cmath>
+#include <utility>
 
 namespace bladeaxis::geometry {
 
@@ -54,7 +55,9 @@ std::vector<double> notAKnotMoments(const std::vector<double>& x, const std::vec
         // three points, handled by the caller.
         return {};
     }
-    const std::vector<double> inner = solveTridiagonal(sub, diag, super, rhs);
+    // Moved, not copied: four n-vectors per fit matter at a million samples (benchmarked).
+    const std::vector<double> inner =
+        solveTridiagonal(std::move(sub), std::move(diag), std::move(super), std::move(rhs));
     std::vector<double> moments(n);
     for (std::size_t row = 0; row < m; ++row) {
         moments[row + 1] = inner[row];

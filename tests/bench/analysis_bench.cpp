@@ -11,8 +11,9 @@ namespace {
 
 using namespace bladeaxis;
 
-// A helix about X (the A axis): the tip advances 0.01 mm per record along X while the table
-// turns, so A = phi grows continuously as in a blade finishing spiral.
+// A spiral about X (the A axis) over a wavy section r(phi) = 40 + 5 sin(7 phi): the tip advances
+// 0.01 mm per record along X while the table turns, so A = phi grows continuously as in a blade
+// finishing spiral and the Y and Z slides follow the section (B is fixed, as in four-axis work).
 struct HelixProgram {
     std::vector<toolpath::ClRecord> records;
     std::vector<kinematics::MachineAxes> axes;
@@ -20,14 +21,14 @@ struct HelixProgram {
     explicit HelixProgram(std::size_t count) {
         records.resize(count);
         axes.resize(count);
-        const double radius = 40.0;
         for (std::size_t i = 0; i < count; ++i) {
             const double phi = 0.002 * static_cast<double>(i);
             const double x = 0.01 * static_cast<double>(i);
+            const double radius = 40.0 + 5.0 * std::sin(7.0 * phi);
             records[i].tip = Vec3(x, radius * std::cos(phi), radius * std::sin(phi));
             records[i].axis = Vec3(0.0, std::cos(phi), std::sin(phi));
             records[i].feed = 50.0;
-            axes[i] = {x, 0.0, radius, phi, 0.0};
+            axes[i] = {x, 5.0 * std::cos(7.0 * phi), radius, phi, 0.0};
         }
     }
 };

@@ -1,0 +1,129 @@
+#include "core/scheduling/channel.h"
+
+#include "core/base/units.h"
+#include "core/geometry/angles.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace bladeaxis::scheduling {
+
+RawChannel buildRawChannel(const TangentField& tangents, std::span<const ConcaveRun> runs,
+                           double inwardRad) {
+    const std::size_t n = tangents.forwardAngle.size();
+    RawChannel channel;
+    channel.thetaMax.resize(n);
+    channel.thetaMin.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        // E12: forward limit along e+, backward limit along -e-; width pi + tau - 2 inward.
+        channel.thetaMax[i] = tangents.forwardAngle[i] - inwardRad;
+        channel.thetaMin[i] =
+            channel.thetaMax[i] - units::kPi - tangents.turning[i] + 2.0 * inwardRad;
+    }
+    const std::vector<double> convexMax = channel.thetaMax;
+    const std::vector<double> convexMin = channel.thetaMin;
+    for (const ConcaveRun& run : runs) {
+        // [A] A run without an exit (it reaches the path end) keeps its last sample's limit.
+        const std::size_t exit = std::min(run.exit, n - 1);
+        for (std::size_t j = run.entry; j < std::min(run.exit, n); ++j) {
+            channel.thetaMax[j] = convexMax[exit];
+            channel.thetaMin[j] = convexMin[run.entry];
+        }
+    }
+    return channel;
+}
+
+void clipGlobalVisibility(RawChannel& channel, std::span<const Vec2> points, std::size_t reach) {
+    const std::size_t n = points.size();
+    const RawChannel local = channel;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = i + 1; j < std::min(n, i + reach + 1); ++j) {
+            const Vec2 d = points[j] - points[i];
+            const double rel = geometry::wrapAngle(std::atan2(d.y(), d.x()) - local.thetaMax[i]);
+            channel.thetaMax[i] = std::min(channel.thetaMax[i], local.thetaMax[i] + rel);
+        }
+        for (std::size_t j = i > reach ? i - reach : 0; j < i; ++j) {
+            const Vec2 d = points[j] - points[i];
+            const double rel = geometry::wrapAngle(std::atan2(d.y(), d.x()) - local.thetaMin[i]);
+            channel.thetaMin[i] = std::max(channel.thetaMin[i], local.thetaMin[i] + rel);
+        }
+    }
+}
+
+namespace {
+
+double median7(std::span<const double> values, std::size_t centre) {
+    std::array<double, 7> window{};
+    for (std::size_t k = 0; k < 7; ++k) {
+        window[k] = values[centre + k - 3];
+    }
+    std::nth_element(window.begin(), window.begin() + 3, window.end());
+    return window[3];
+}
+
+std::size_t despikeOne(std::vector<double>& values, bool downward) {
+    const std::vector<double> original = values;
+    std::size_t changed = 0;
+    for (std::size_t i = 3; i + 3 < original.size(); ++i) {
+        const double median = median7(original, i);
+        if (downward ? original[i] < median : original[i] > median) {
+            values[i] = median;
+            ++changed;
+        }
+    }
+    return changed;
+}
+
+} // namespace
+
+std::size_t despikeChannel(RawChannel& channel) {
+    return despikeOne(channel.thetaMax, true) + despikeOne(channel.thetaMin, false);
+}
+
+MonotoneHull monotoneHull(std::span<const double> thetaMin, std::span<const double> thetaMax,
+                          double margin) {
+    const std::size_t n = std::min(thetaMin.size(), thetaMax.size());
+    MonotoneHull hull;
+    if (n == 0) {
+        return hull;
+    }
+    hull.lo0.resize(n);
+    hull.hi0.resize(n);
+    hull.lo0[0] = thetaMin[0];
+    for (std::size_t i = 1; i < n; ++i) {
+        hull.lo0[i] = std::max(hull.lo0[i - 1], thetaMin[i]);
+    }
+    hull.hi0[n - 1] = thetaMax[n - 1];
+    for (std::size_t i = n - 1; i-- > 0;) {
+        hull.hi0[i] = std::min(hull.hi0[i + 1], thetaMax[i]);
+    }
+    hull.marginLo.resize(n);
+    hull.marginHi.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        hull.infeasible = hull.infeasible || hull.lo0[i] > hull.hi0[i];
+        // [A] Local relief (§2.5): a_k = HI0_k - min_k bounds every later thetaMax minus
+        // thetaMin_k, b_l = max_l - LO0_l every earlier pair; half of each keeps all pairs
+        // k <= l compatible, and equals the full margin wherever no pair is tight.
+        hull.marginLo[i] = std::clamp(0.5 * (hull.hi0[i] - thetaMin[i]), 0.0, margin);
+        hull.marginHi[i] = std::clamp(0.5 * (thetaMax[i] - hull.lo0[i]), 0.0, margin);
+        hull.pinched = hull.pinched || hull.marginLo[i] < margin || hull.marginHi[i] < margin;
+    }
+    hull.lo.resize(n);
+    hull.hi.resize(n);
+    hull.lo[0] = thetaMin[0] + hull.marginLo[0];
+    for (std::size_t i = 1; i < n; ++i) {
+        hull.lo[i] = std::max(hull.lo[i - 1], thetaMin[i] + hull.marginLo[i]);
+    }
+    hull.hi[n - 1] = thetaMax[n - 1] - hull.marginHi[n - 1];
+    for (std::size_t i = n - 1; i-- > 0;) {
+        hull.hi[i] = std::min(hull.hi[i + 1], thetaMax[i] - hull.marginHi[i]);
+    }
+    hull.minWidth = hull.hi[0] - hull.lo[0];
+    for (std::size_t i = 0; i < n; ++i) {
+        hull.minWidth = std::min(hull.minWidth, hull.hi[i] - hull.lo[i]);
+    }
+    return hull;
+}
+
+} // namespace bladeaxis::scheduling

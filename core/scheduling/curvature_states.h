@@ -1,0 +1,43 @@
+#pragma once
+// Spec §1.6: smoothed curvature, convex/concave states with hysteresis, concave runs (merged
+// over short gaps, short runs dropped) and the concave-convex altered points.
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace bladeaxis::scheduling {
+
+enum class CurvatureState : unsigned char { Convex, Concave };
+
+struct ConcaveRun {
+    std::size_t entry = 0;      // first concave sample A_r (convex -> concave altered point)
+    std::size_t exit = 0;       // first convex sample after the run B_r; == sample count if none
+    double lengthMm = 0.0;      // arc length from entry to exit (or to the path end)
+    double absTurningRad = 0.0; // sum of |tau| over the run (tie-break of the main run, §1.7)
+};
+
+struct CurvatureSettings {
+    double windowMm = 2.0;         // w
+    double hysteresisPerMm = 1e-4; // kappa_h
+    double mergeGapMm = 16.0;      // L_gap
+    double minRunMm = 16.0;        // L_min
+};
+
+struct CurvatureAnalysis {
+    std::vector<double> smoothedCurvature;  // kappa-bar_i, 1/mm
+    std::vector<CurvatureState> hysteresis; // raw hysteresis states (before merge/drop)
+    std::vector<CurvatureState> state;      // states after merging and dropping runs
+    std::vector<ConcaveRun> runs;           // kept runs in feed order
+};
+
+// `curvature` is the per-sample estimate of TangentField; `turning` the per-sample tau.
+CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
+                                   std::span<const double> curvature,
+                                   std::span<const double> turning,
+                                   const CurvatureSettings& settings);
+
+// Indices where the state differs from the predecessor's, in feed order (the altered points).
+std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states);
+
+} // namespace bladeaxis::scheduling

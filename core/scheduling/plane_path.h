@@ -1,0 +1,38 @@
+#pragma once
+// Spec §1.2-1.4: cutter centres merged and projected onto the layer plane, in a plane frame
+// oriented so that the feed goes counter-clockwise (angles grow in the feed sense), 3-D arc
+// length S, the original in-plane axis angles and the fixed tilt B0.
+
+#include "core/base/error.h"
+#include "core/geometry/vec.h"
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace bladeaxis::scheduling {
+
+struct PlanePath {
+    std::vector<Vec3> centres;              // distinct Q_i in W, mm
+    std::vector<Vec2> points;               // q_i in the plane frame (r = +z, p = w x r), mm
+    std::vector<double> arcLength;          // S from the path start, 3-D, strictly increasing, mm
+    std::vector<double> originalAngle;      // ang(P_perp V_i), wrapped to (-pi, pi], rad
+    std::vector<std::size_t> firstInput;    // input index of each distinct sample
+    std::vector<std::size_t> sampleOfInput; // distinct sample index of each input sample
+    double tiltB0 = 0.0;                    // asin(V . a), rad
+    int traversalSign = 1;                  // w . a (+1: feed turns about +x), spec §1.3
+    std::vector<std::string> warnings;
+};
+
+// Fails (Geometry / InvalidArgument) on empty or mismatched input, non-finite values, zero
+// axes, axes along the rotary axis, or fewer than 3 distinct centres.
+Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes);
+
+// ang(P_perp v) of spec §1.3 for a traversal sign w . a: atan2(v . p, v . r), r = +z.
+double planeAngle(const Vec3& v, int traversalSign);
+
+// Unit tool axis whose in-plane angle is `angle` and whose axial component is sin(tiltB0)
+// (spec §6.1: V = (sin B0, sin A cos B0, cos A cos B0) with A = -traversalSign * angle).
+Vec3 axisFromPlaneAngle(double angle, double tiltB0, int traversalSign);
+
+} // namespace bladeaxis::scheduling

@@ -1,0 +1,56 @@
+#include "core/scheduling/reconstruction.h"
+
+#include "core/base/tolerances.h"
+#include "core/scheduling/plane_path.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bladeaxis::scheduling {
+
+ReconstructedPath reconstructAxes(std::span<const Vec3> centres, std::span<const double> thetaAbs,
+                                  double tiltB0, int traversalSign, double toolRadius) {
+    ReconstructedPath path;
+    const std::size_t n = std::min(centres.size(), thetaAbs.size());
+    path.axes.reserve(n);
+    path.tips.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 axis = axisFromPlaneAngle(thetaAbs[i], tiltB0, traversalSign);
+        path.axes.push_back(axis);
+        path.tips.push_back(centres[i] - toolRadius * axis);
+    }
+    return path;
+}
+
+std::size_t countReversals(std::span<const double> angles, double step) {
+    std::size_t reversals = 0;
+    int lastSign = 0;
+    for (std::size_t i = 1; i < angles.size(); ++i) {
+        const double d = angles[i] - angles[i - 1];
+        if (std::abs(d) <= step) {
+            continue;
+        }
+        const int sign = d > 0.0 ? 1 : -1;
+        reversals += lastSign != 0 && sign != lastSign ? 1 : 0;
+        lastSign = sign;
+    }
+    return reversals;
+}
+
+ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
+                                        const ReconstructedPath& path,
+                                        std::span<const double> thetaAbs, double tiltB0,
+                                        double toolRadius) {
+    ReconstructionCheck check;
+    for (std::size_t i = 0; i < path.axes.size() && i < centres.size(); ++i) {
+        const Vec3& v = path.axes[i];
+        check.maxCentreErrorMm =
+            std::max(check.maxCentreErrorMm, (path.tips[i] + toolRadius * v - centres[i]).norm());
+        check.maxUnitError = std::max(check.maxUnitError, std::abs(v.norm() - 1.0));
+        check.maxTiltError = std::max(check.maxTiltError, std::abs(v.x() - std::sin(tiltB0)));
+    }
+    check.reversals = countReversals(thetaAbs, tol::kReversalStepRad);
+    return check;
+}
+
+} // namespace bladeaxis::scheduling

@@ -1,0 +1,39 @@
+#pragma once
+// Spec §6.1, §6.2, §6.5: new tool axes from the absolute in-plane angle and B0, new tips
+// O = Q - R V, and the cheap reconstruction checks.
+
+#include "core/geometry/vec.h"
+
+#include <span>
+#include <vector>
+
+namespace bladeaxis::scheduling {
+
+struct ReconstructedPath {
+    std::vector<Vec3> axes; // unit V_i with V . a = sin B0
+    std::vector<Vec3> tips; // O_i = Q_i - R V_i, mm
+};
+
+ReconstructedPath reconstructAxes(std::span<const Vec3> centres, std::span<const double> thetaAbs,
+                                  double tiltB0, int traversalSign, double toolRadius);
+
+struct ReconstructionCheck {
+    double maxCentreErrorMm = 0.0; // max |O + R V - Q|
+    double maxUnitError = 0.0;     // max ||V| - 1|
+    double maxTiltError = 0.0;     // max |V . a - sin B0|
+    std::size_t reversals = 0;     // sign changes of dtheta beyond tol::kReversalStepRad (§6.4)
+
+    bool passes() const {
+        return maxCentreErrorMm < 1e-9 && maxUnitError < 1e-12 && maxTiltError < 1e-12;
+    }
+};
+
+ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
+                                        const ReconstructedPath& path,
+                                        std::span<const double> thetaAbs, double tiltB0,
+                                        double toolRadius);
+
+// Direction reversals of an angle sequence: sign changes among steps larger than `step`.
+std::size_t countReversals(std::span<const double> angles, double step);
+
+} // namespace bladeaxis::scheduling

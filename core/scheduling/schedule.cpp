@@ -1,0 +1,228 @@
+#include "core/scheduling/schedule.h"
+
+#include "core/base/tolerances.h"
+#include "core/base/units.h"
+#include "core/scheduling/channel.h"
+#include "core/scheduling/curvature_states.h"
+#include "core/scheduling/layer_problem.h"
+#include "core/scheduling/layer_scheduler.h"
+#include "core/scheduling/layers.h"
+#include "core/scheduling/plane_path.h"
+#include "core/scheduling/tangents.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+namespace bladeaxis::scheduling {
+
+const char* toString(LayerStatus status) {
+    switch (status) {
+    case LayerStatus::Ok:
+        return "ok";
+    case LayerStatus::Pinched:
+        return "pinched";
+    case LayerStatus::MonotoneInfeasible:
+        return "monotone infeasible";
+    case LayerStatus::NoConcaveRun:
+        return "no concave run";
+    case LayerStatus::ShortLayer:
+        return "short layer";
+    }
+    return "unknown";
+}
+
+namespace {
+
+// Channel stage (§1.5-§2): everything before the layers become independent.
+struct ChannelStage {
+    TangentField tangents;
+    CurvatureAnalysis curvature;
+    LayerSplit split;
+    RawChannel channel;
+};
+
+CurvatureSettings curvatureSettings(const ScheduleParameters& p, const PlanePath& path,
+                                    const TangentField& tangents, double radius) {
+    // [A] "Layer length" in the §1.6 defaults is not known before the layers exist: the mean
+    // arc length per revolution (total length / (total turning / 2 pi)) stands in for it.
+    const double turning = tangents.forwardAngle.back() - tangents.forwardAngle.front();
+    const double revolution =
+        path.arcLength.back() * units::kTwoPi / std::max(std::abs(turning), units::kPi);
+    CurvatureSettings settings;
+    settings.windowMm =
+        std::max(p.curvatureWindowMinMm, p.curvatureWindowRevolutionFraction * revolution);
+    settings.hysteresisPerMm = p.curvatureHysteresisPerMm;
+    settings.mergeGapMm = p.concaveGapToolRadii * radius;
+    settings.minRunMm =
+        std::max(p.concaveMinRunToolRadii * radius, p.concaveMinRunRevolutionFraction * revolution);
+    return settings;
+}
+
+Result<ChannelStage> buildChannelStage(const PlanePath& path, const ScheduleParameters& p,
+                                       double radius, std::vector<std::string>& warnings) {
+    ChannelStage stage;
+    auto tangents = computeTangents(path.points, p.tangentChordMinMm, p.tangentChordMedianFactor);
+    if (!tangents) {
+        return std::unexpected(tangents.error());
+    }
+    stage.tangents = std::move(*tangents);
+    const CurvatureSettings settings = curvatureSettings(p, path, stage.tangents, radius);
+    stage.curvature = analyseCurvature(path.arcLength, stage.tangents.curvature,
+                                       stage.tangents.turning, settings);
+    stage.split = splitLayers(stage.tangents.forwardAngle, stage.curvature.smoothedCurvature,
+                              stage.curvature.runs, p.basePoint);
+    stage.channel = buildRawChannel(stage.tangents, stage.curvature.runs,
+                                    p.taperHalfAngleRad + p.safetyAngleRad);
+    if (p.visibility == Visibility::Global) {
+        const double turns = std::max(1.0, std::abs(stage.tangents.forwardAngle.back() -
+                                                    stage.tangents.forwardAngle.front()) /
+                                               units::kTwoPi);
+        const auto reach = static_cast<std::size_t>(
+            std::ceil(0.5 * static_cast<double>(path.points.size()) / turns));
+        clipGlobalVisibility(stage.channel, path.points, reach);
+    }
+    if (p.despike) {
+        if (const std::size_t changed = despikeChannel(stage.channel); changed > 0) {
+            warnings.push_back("despiking changed " + std::to_string(changed) +
+                               " channel samples (non-conservative)");
+        }
+    }
+    return stage;
+}
+
+// Runs every layer; a parallel run writes each result into its own slot, so it is identical
+// to the serial run.
+std::vector<LayerOutcome> runLayers(const std::vector<LayerProblem>& problems,
+                                    const PlanePath& path, const ScheduleParameters& p,
+                                    const CancelToken* cancel) {
+    std::vector<LayerOutcome> outcomes(problems.size());
+    std::atomic<std::size_t> next{0};
+    auto worker = [&]() {
+        for (std::size_t k = next++; k < problems.size(); k = next++) {
+            if (cancel != nullptr && cancel->isCancelled()) {
+                return;
+            }
+            std::vector<std::size_t> inputs;
+            for (std::size_t i = problems[k].span.first; i <= problems[k].span.last; ++i) {
+                inputs.push_back(path.firstInput[i]);
+            }
+            outcomes[k] = scheduleLayer(problems[k], p, std::move(inputs), k);
+        }
+    };
+    unsigned threads =
+        p.threads != 0 ? p.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, problems.size()));
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) {
+        pool.emplace_back(worker);
+    }
+    worker();
+    for (std::thread& thread : pool) {
+        thread.join();
+    }
+    return outcomes;
+}
+
+void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput& input,
+              std::vector<LayerOutcome>& outcomes) {
+    std::vector<double> sampleTheta(path.centres.size(), 0.0);
+    std::vector<double> sampleOriginal(path.centres.size(), 0.0);
+    std::vector<bool> keepOriginal(path.centres.size(), false);
+    for (LayerOutcome& outcome : outcomes) {
+        LayerResult& layer = outcome.result;
+        const bool original = std::find(layer.flags.begin(), layer.flags.end(),
+                                        LayerStatus::MonotoneInfeasible) != layer.flags.end();
+        for (std::size_t j = 0; j < layer.theta.size(); ++j) {
+            const std::size_t sample = path.sampleOfInput[layer.inputIndex[j]];
+            sampleTheta[sample] = layer.junctionAngle + layer.theta[j];
+            sampleOriginal[sample] = layer.junctionAngle + layer.thetaOriginal[j];
+            keepOriginal[sample] = original;
+        }
+        result.warnings.insert(result.warnings.end(), outcome.warnings.begin(),
+                               outcome.warnings.end());
+        result.layers.push_back(std::move(layer));
+    }
+    const std::size_t n = input.centres.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t sample = path.sampleOfInput[i];
+        result.thetaAbsolute.push_back(sampleTheta[sample]);
+        result.thetaOriginalAbsolute.push_back(sampleOriginal[sample]);
+    }
+    ReconstructedPath rebuilt = reconstructAxes(input.centres, result.thetaAbsolute, path.tiltB0,
+                                                path.traversalSign, input.toolRadius);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (keepOriginal[path.sampleOfInput[i]]) { // MONOTONE_INFEASIBLE: the input is kept
+            rebuilt.axes[i] = input.axes[i].normalized();
+            rebuilt.tips[i] = input.centres[i] - input.toolRadius * rebuilt.axes[i];
+        }
+    }
+    result.check = checkReconstruction(input.centres, rebuilt, result.thetaAbsolute, path.tiltB0,
+                                       input.toolRadius);
+    result.originalReversals = countReversals(result.thetaOriginalAbsolute, tol::kReversalStepRad);
+    result.newAxes = std::move(rebuilt.axes);
+    result.newTips = std::move(rebuilt.tips);
+}
+
+void addCheckWarnings(ScheduleResult& result) {
+    if (!result.check.passes()) {
+        result.warnings.push_back("reconstruction check failed: centre error " +
+                                  std::to_string(result.check.maxCentreErrorMm) + " mm, tilt " +
+                                  std::to_string(result.check.maxTiltError));
+    }
+    if (result.check.reversals > 0) {
+        result.warnings.push_back("the rotary axis reverses " +
+                                  std::to_string(result.check.reversals) + " time(s)");
+    }
+    for (std::size_t k = 0; k < result.layers.size(); ++k) {
+        if (result.layers[k].minClearance < -1e-9) {
+            result.warnings.push_back("layer " + std::to_string(k) + " leaves the raw channel by " +
+                                      std::to_string(-result.layers[k].minClearance) + " rad");
+        }
+    }
+}
+
+} // namespace
+
+Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
+                                const CancelToken* cancel) {
+    if (auto status = validateParameters(parameters); !status) {
+        return std::unexpected(status.error());
+    }
+    if (!std::isfinite(input.toolRadius) || input.toolRadius <= 0.0) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "tool radius " + std::to_string(input.toolRadius) + " mm is not > 0");
+    }
+    auto path = preparePlanePath(input.centres, input.axes);
+    if (!path) {
+        return std::unexpected(path.error());
+    }
+    ScheduleResult result;
+    result.warnings = path->warnings;
+    result.tiltB0 = path->tiltB0;
+    result.traversalSign = path->traversalSign;
+    auto stage = buildChannelStage(*path, parameters, input.toolRadius, result.warnings);
+    if (!stage) {
+        return std::unexpected(stage.error());
+    }
+    for (std::size_t b : stage->split.basePoints) {
+        result.basePoints.push_back(path->firstInput[b]);
+    }
+    const std::vector<LayerProblem> problems =
+        buildLayerProblems(*path, stage->channel, stage->split, parameters.marginRad,
+                           4.0 * stage->tangents.chordLengthMm);
+    for (const LayerProblem& problem : problems) {
+        result.warnings.insert(result.warnings.end(), problem.warnings.begin(),
+                               problem.warnings.end());
+    }
+    std::vector<LayerOutcome> outcomes = runLayers(problems, *path, parameters, cancel);
+    if (cancel != nullptr && cancel->isCancelled()) {
+        return makeError(ErrorCode::Cancelled, "scheduling cancelled");
+    }
+    assemble(result, *path, input, outcomes);
+    addCheckWarnings(result);
+    return result;
+}
+
+} // namespace bladeaxis::scheduling

@@ -1,0 +1,77 @@
+#pragma once
+// The scheduling engine (spec §1-§6): re-schedules the tool orientation of a four-axis helical
+// toolpath in the S-theta plane so that the rotary axis turns monotonically and smoothly inside
+// the feasible channel, keeping every ball centre Q_i. Pure numerics on arrays, no I/O.
+//
+// Pipeline: preparePlanePath (§1.2-1.4) -> computeTangents (§1.5) -> analyseCurvature (§1.6)
+// -> splitLayers (§1.7) -> buildRawChannel / monotoneHull (§2) -> buildLayerProblems (§3.1,
+// §3.3) -> scheduleLayer per layer, in parallel (§3.4, §4, §5) -> reconstructAxes (§6).
+
+#include "core/base/error.h"
+#include "core/base/progress.h"
+#include "core/geometry/vec.h"
+#include "core/scheduling/reconstruction.h"
+#include "core/scheduling/schedule_parameters.h"
+
+#include <string>
+#include <vector>
+
+namespace bladeaxis::scheduling {
+
+struct ScheduleInput {
+    std::vector<Vec3> centres; // Q_i ball centres in W (x = rotary axis), feed order, mm
+    std::vector<Vec3> axes;    // V_i original tool axes in W (normalised on input)
+    double toolRadius = 0.0;   // R, mm
+};
+
+enum class LayerStatus {
+    Ok,
+    Pinched,            // the margin was reduced locally (§2.5)
+    MonotoneInfeasible, // no monotone path in the channel: the original orientation is kept
+    NoConcaveRun,       // a base point of the layer is a fallback (§1.7)
+    ShortLayer,         // S_e < 4 l_t or < 4 samples: no lead segments, end slope not forced
+};
+
+const char* toString(LayerStatus status);
+
+struct LayerResult {
+    // Input-index range (inclusive); the end sample is shared with the next layer.
+    std::size_t first = 0, last = 0;
+    std::vector<std::size_t> inputIndex; // input index of every layer sample (duplicates merged)
+    // Per layer sample, relative to the layer reference angle junctionAngle, rad; s in mm.
+    std::vector<double> s, thetaOriginal, thetaMin, thetaMax, lo, hi;
+    std::vector<Vec2> keyPoints, polyline; // (S, theta)
+    struct Corner {
+        double s = 0.0, epsilon = 0.0;
+        enum class Bound { Geometry, Channel, None } limitedBy = Bound::None;
+    };
+    std::vector<Corner> corners;
+    std::vector<double> theta, dTheta, ddTheta; // final theta(S), theta', theta'' (analytic)
+    std::vector<LayerStatus> flags;
+    double minClearance = 0.0;  // min over samples of the distance to the raw channel, rad
+    double junctionAngle = 0.0; // absolute in-plane angle of theta = 0 (J_k for layers k >= 1)
+    double leadFraction = 0.0;  // rho used (§3.4)
+    double peakSecondDerivative = 0.0; // peak |theta''| of the smoothed curve, rad/mm^2
+    double seconds = 0.0;              // wall time of the per-layer stage
+};
+
+struct ScheduleResult {
+    std::vector<LayerResult> layers;
+    std::vector<Vec3> newAxes, newTips;        // per input sample
+    std::vector<double> thetaAbsolute;         // absolute unwrapped in-plane angle per input sample
+    std::vector<double> thetaOriginalAbsolute; // the same for the input orientation
+    double tiltB0 = 0.0;                       // rad
+    int traversalSign = 1;                     // w . a of §1.3; the machine sigma = -traversalSign
+    std::vector<std::size_t> basePoints;       // input indices of the base points
+    ReconstructionCheck check;                 // §6.5 on the output
+    std::size_t originalReversals = 0;         // A reversals of the input orientation (§6.4)
+    std::vector<std::string> warnings;
+};
+
+// Errors: InvalidArgument (parameters, radius, sizes), Geometry (NaN, degenerate path),
+// Cancelled. Infeasible layers are not errors: they keep the original orientation and are
+// flagged MonotoneInfeasible with a warning.
+Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
+                                const CancelToken* cancel = nullptr);
+
+} // namespace bladeaxis::scheduling

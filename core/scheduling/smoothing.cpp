@@ -1,0 +1,204 @@
+#include "core/scheduling/smoothing.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bladeaxis::scheduling {
+
+namespace {
+
+struct CornerFrame {
+    Vec2 p2;
+    double k1, k2;   // slopes in rad/mm
+    double dS1, dS2; // horizontal segment lengths, mm
+    double f1, f2;   // share of each segment this corner may use (§5.4)
+};
+
+BezierPair pairFor(const CornerFrame& c, double epsilon, CornerForm form) {
+    if (form == CornerForm::GraphLimit) {
+        return graphLimitCornerPair(c.p2, c.k1, c.k2, epsilon);
+    }
+    return euclideanCornerPair(c.p2, std::atan(c.k1), std::atan(c.k2), epsilon);
+}
+
+double geometricLimit(const CornerFrame& c, CornerForm form) {
+    if (form == CornerForm::GraphLimit) {
+        return graphLimitEpsilonLimit(c.k1, c.k2, c.dS1, c.dS2, c.f1, c.f2);
+    }
+    return euclideanEpsilonLimit(std::atan(c.k1), std::atan(c.k2), std::hypot(c.dS1, c.k1 * c.dS1),
+                                 std::hypot(c.dS2, c.k2 * c.dS2), c.f1, c.f2);
+}
+
+// Channel bounds at any S: linear interpolation between samples (s sorted).
+struct ChannelView {
+    std::span<const double> s, rawMin, rawMax;
+    double clearance;
+
+    std::pair<double, double> at(double x) const {
+        auto it = std::upper_bound(s.begin(), s.end(), x);
+        const std::size_t j = static_cast<std::size_t>(
+            std::clamp<long>(it - s.begin(), 1, static_cast<long>(s.size()) - 1));
+        const double w = std::clamp((x - s[j - 1]) / (s[j] - s[j - 1]), 0.0, 1.0);
+        return {rawMin[j - 1] + w * (rawMin[j] - rawMin[j - 1]) + clearance,
+                rawMax[j - 1] + w * (rawMax[j] - rawMax[j - 1]) - clearance};
+    }
+};
+
+// Exact rule check: the pair within the channel at every sample in its span and at
+// `checks` parameter values per cubic.
+bool pairFeasible(const BezierPair& pair, const ChannelView& channel, int checks) {
+    constexpr double kTolerance = 1e-12;
+    const auto first = std::lower_bound(channel.s.begin(), channel.s.end(), pair.sBegin());
+    const auto last = std::upper_bound(channel.s.begin(), channel.s.end(), pair.sEnd());
+    for (auto it = first; it != last; ++it) {
+        const std::size_t j = static_cast<std::size_t>(it - channel.s.begin());
+        const double value = evaluatePair(pair, *it).value;
+        if (value < channel.rawMin[j] + channel.clearance - kTolerance ||
+            value > channel.rawMax[j] - channel.clearance + kTolerance) {
+            return false;
+        }
+    }
+    for (const CubicBezier* cubic : {&pair.first, &pair.second}) {
+        for (int k = 0; k <= checks; ++k) {
+            const Vec2 p = cubic->point(static_cast<double>(k) / checks);
+            const auto [low, high] = channel.at(p.x());
+            if (p.y() < low - kTolerance || p.y() > high + kTolerance) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+// Paper epsilon0 (W1): the least vertical room between polyline and the boundary on the
+// corner's side, over the span from mid-point to mid-point (whole segment at layer ends).
+double paperRoom(const CornerFrame& c, const ChannelView& channel) {
+    double room = std::numeric_limits<double>::infinity();
+    const double from = c.p2.x() - c.f1 * c.dS1;
+    const double to = c.p2.x() + c.f2 * c.dS2;
+    for (std::size_t j = 0; j < channel.s.size(); ++j) {
+        const double x = channel.s[j];
+        if (x < from || x > to) {
+            continue;
+        }
+        const double poly = c.p2.y() + (x < c.p2.x() ? c.k1 : c.k2) * (x - c.p2.x());
+        room = std::min(room, c.k2 > c.k1 ? channel.rawMax[j] - poly : poly - channel.rawMin[j]);
+    }
+    return room;
+}
+
+SmoothedCorner smoothOne(const CornerFrame& c, const ChannelView& channel,
+                         const SmoothingSettings& settings) {
+    SmoothedCorner corner;
+    corner.s = c.p2.x();
+    const double sign = c.k2 > c.k1 ? 1.0 : -1.0;
+    const double geometric = geometricLimit(c, settings.form);
+    double magnitude = geometric;
+    if (settings.rule == EpsilonRule::Paper) {
+        magnitude = std::min(geometric, paperRoom(c, channel) - settings.finalClearanceRad);
+    } else if (!pairFeasible(pairFor(c, sign * geometric, settings.form), channel,
+                             settings.checksPerCubic)) {
+        double low = 0.0; // feasibility is monotone in |epsilon| (homothety, §5.3)
+        double high = geometric;
+        for (int step = 0; step < settings.bisectionSteps; ++step) {
+            const double mid = 0.5 * (low + high);
+            const bool ok = pairFeasible(pairFor(c, sign * mid, settings.form), channel,
+                                         settings.checksPerCubic);
+            (ok ? low : high) = mid;
+        }
+        magnitude = low;
+    }
+    if (!(magnitude > 0.0)) {
+        return corner; // unsmoothed corner, flagged by limitedBy = None
+    }
+    corner.epsilon = sign * magnitude;
+    corner.limitedBy = magnitude >= geometric ? CornerLimit::Geometry : CornerLimit::Channel;
+    corner.curve = pairFor(c, corner.epsilon, settings.form);
+    return corner;
+}
+
+} // namespace
+
+SmoothedPath smoothCorners(std::span<const PolyVertex> vertices, std::span<const double> s,
+                           std::span<const double> rawMin, std::span<const double> rawMax,
+                           const SmoothingSettings& settings) {
+    SmoothedPath path;
+    path.vertices.assign(vertices.begin(), vertices.end());
+    const ChannelView channel{s, rawMin, rawMax, settings.finalClearanceRad};
+    for (std::size_t k = 1; k + 1 < vertices.size(); ++k) {
+        const PolyVertex& a = vertices[k - 1];
+        const PolyVertex& b = vertices[k];
+        const PolyVertex& c = vertices[k + 1];
+        CornerFrame frame{{b.s, b.theta},
+                          (b.theta - a.theta) / (b.s - a.s),
+                          (c.theta - b.theta) / (c.s - b.s),
+                          b.s - a.s,
+                          c.s - b.s,
+                          // [A] f = 1 towards a layer end (no corner there), else 1/2.
+                          k == 1 ? 1.0 : 0.5,
+                          k + 2 == vertices.size() ? 1.0 : 0.5};
+        if (std::abs(std::atan(frame.k2) - std::atan(frame.k1)) < 1e-12) {
+            continue; // no corner (§5.4)
+        }
+        SmoothedCorner corner = smoothOne(frame, channel, settings);
+        corner.vertex = k;
+        path.corners.push_back(corner);
+    }
+    return path;
+}
+
+PathSamples evaluateSmoothedPath(const SmoothedPath& path, std::span<const double> s) {
+    PathSamples out;
+    out.theta.resize(s.size());
+    out.dTheta.resize(s.size());
+    out.ddTheta.resize(s.size());
+    const std::vector<PolyVertex>& v = path.vertices;
+    std::size_t segment = 0;
+    std::size_t corner = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        while (corner < path.corners.size() &&
+               (path.corners[corner].limitedBy == CornerLimit::None ||
+                path.corners[corner].curve.sEnd() < s[i])) {
+            ++corner;
+        }
+        if (corner < path.corners.size() && path.corners[corner].curve.sBegin() <= s[i]) {
+            const GraphPoint p = evaluatePair(path.corners[corner].curve, s[i]);
+            out.theta[i] = p.value;
+            out.dTheta[i] = p.first;
+            out.ddTheta[i] = p.second;
+            continue;
+        }
+        while (segment + 2 < v.size() && v[segment + 1].s < s[i]) {
+            ++segment;
+        }
+        if (v.size() < 2) {
+            out.theta[i] = v.empty() ? 0.0 : v.front().theta;
+            continue;
+        }
+        const PolyVertex& a = v[segment];
+        const PolyVertex& b = v[segment + 1];
+        out.dTheta[i] = (b.theta - a.theta) / (b.s - a.s);
+        out.theta[i] = a.theta + out.dTheta[i] * (s[i] - a.s);
+        out.ddTheta[i] = 0.0;
+    }
+    return out;
+}
+
+double peakSecondDerivative(const SmoothedPath& path) {
+    constexpr int kSamplesPerCubic = 64;
+    double peak = 0.0;
+    for (const SmoothedCorner& corner : path.corners) {
+        if (corner.limitedBy == CornerLimit::None) {
+            continue;
+        }
+        for (const CubicBezier* cubic : {&corner.curve.first, &corner.curve.second}) {
+            for (int k = 0; k <= kSamplesPerCubic; ++k) {
+                const double t = static_cast<double>(k) / kSamplesPerCubic;
+                peak = std::max(peak, std::abs(secondDerivativeAt(*cubic, t)));
+            }
+        }
+    }
+    return peak;
+}
+
+} // namespace bladeaxis::scheduling

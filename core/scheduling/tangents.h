@@ -1,0 +1,26 @@
+#pragma once
+// Spec §1.5: robust discrete tangents over a minimum chord length, and the signed turning.
+// Points are in the feed-oriented plane frame (feed counter-clockwise), so tau > 0 = convex.
+
+#include "core/base/error.h"
+#include "core/geometry/vec.h"
+
+#include <span>
+#include <vector>
+
+namespace bladeaxis::scheduling {
+
+struct TangentField {
+    double chordLengthMm = 0.0;       // l_t actually used
+    std::vector<double> forwardAngle; // ang(e+_i), unwrapped along the whole path, rad
+    std::vector<double> turning;      // tau_i = wrap(ang(e+) - ang(e-)), rad, > 0 convex
+    std::vector<double> curvature;    // 2 tau_i / (|e+| + |e-|), 1/mm
+};
+
+// l_t = max(minChordMm, medianFactor * median chord). Where no chord of length l_t exists
+// (path ends), the farthest point is used, and at the very ends the other-side chord.
+// Fails (Geometry) when all points coincide in projection.
+Result<TangentField> computeTangents(std::span<const Vec2> points, double minChordMm,
+                                     double medianFactor);
+
+} // namespace bladeaxis::scheduling

@@ -1,0 +1,177 @@
+#include "app/batch/batch_options.h"
+
+#include "core/base/number_io.h"
+#include "core/base/units.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <optional>
+
+namespace bladeaxis::app {
+
+namespace {
+
+constexpr const char* kExitCodeHelp = R"(
+Exit codes:
+  0  success
+  1  internal error (a bug: please report it with the input)
+  2  bad command line
+  3  input program missing, unreadable or malformed (the message names file:line:column)
+  4  machine file missing or invalid
+  5  geometry the method cannot handle (NaN, unreachable pose, infeasible channel)
+  6  an output could not be written (inputs are never overwritten)
+  7  cancelled)";
+
+// Numbers are parsed with the project's locale-independent parser, not CLI11's.
+struct NumberOption {
+    std::string text;
+    const char* name;
+    bool positive;
+};
+
+Result<std::optional<double>> readNumber(const NumberOption& option) {
+    if (option.text.empty()) {
+        return std::optional<double>{};
+    }
+    const auto value = parseNumber(option.text);
+    if (!value || (option.positive && !(*value > 0.0))) {
+        return makeError(ErrorCode::InvalidArgument, std::string(option.name) + ": expected a " +
+                                                         (option.positive ? "positive " : "") +
+                                                         "number, got '" + option.text + "'");
+    }
+    return std::optional<double>{*value};
+}
+
+struct RawOptions {
+    std::string program, machine, out, generate, feedReference = "tip", derivatives = "spline";
+    std::string profile = "naca-high-camber", format = "gcode";
+    NumberOption toolRadius{"", "--tool-radius", true};
+    NumberOption feed{"", "--feed", true};
+    NumberOption revolutions{"", "--revolutions", true};
+    NumberOption lead{"", "--lead-deg", false};
+    NumberOption tilt{"", "--tilt-deg", false};
+    NumberOption tolerance{"", "--tolerance", true};
+    std::uint64_t seed = 1;
+    bool batch = false, demo = false, json = false, quiet = false, version = false;
+};
+
+void defineOptions(CLI::App& cli, RawOptions& raw) {
+    cli.add_flag("--batch", raw.batch, "Run headless: no window, no display needed");
+    cli.add_option("program", raw.program, "NC program (G-code) or CL data (APT/CLSF) to analyse");
+    cli.add_flag("--demo", raw.demo, "Use the built-in demo blade program");
+    cli.add_option("--machine", raw.machine,
+                   "Machine file (JSON); default: built-in blade machine");
+    cli.add_option("--tool-radius", raw.toolRadius.text,
+                   "Ball radius R in mm (overrides the file)");
+    cli.add_option("-o,--out", raw.out, "Output folder for report.json and axes.csv");
+    cli.add_option("--feed", raw.feed.text, "Evaluate at this constant feed, mm/min");
+    cli.add_option("--feed-reference", raw.feedReference, "Path parameter: tip or centre")
+        ->check(CLI::IsMember({"tip", "centre"}));
+    cli.add_option("--derivatives", raw.derivatives, "spline (default) or fd (finite differences)")
+        ->check(CLI::IsMember({"spline", "fd"}));
+    cli.add_flag("--json", raw.json, "Print report.json to standard output instead of the summary");
+    cli.add_flag("-q,--quiet", raw.quiet, "Print nothing but errors");
+    cli.add_flag("--version", raw.version, "Print the version and exit");
+    auto* generate = cli.add_option_group("Generation", "Write a synthetic blade program");
+    generate->add_option("--generate", raw.generate,
+                         "Write a generated helical blade program here");
+    generate
+        ->add_option("--profile", raw.profile, "naca-high-camber, naca-weak, symmetric, turbine")
+        ->check(CLI::IsMember({"naca-high-camber", "naca-weak", "symmetric", "turbine"}));
+    generate->add_option("--format", raw.format, "gcode or apt")
+        ->check(CLI::IsMember({"gcode", "apt"}));
+    generate->add_option("--revolutions", raw.revolutions.text, "Number of revolutions");
+    generate->add_option("--lead-deg", raw.lead.text, "Lead angle of the original CAM orientation");
+    generate->add_option("--tilt-deg", raw.tilt.text, "Fixed B tilt");
+    generate->add_option("--tolerance", raw.tolerance.text,
+                         "Chordal tolerance on the ball centre, mm");
+    generate->add_option("--seed", raw.seed, "Random seed (lead-angle noise, family members)");
+}
+
+Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
+    auto toolRadius = readNumber(raw.toolRadius);
+    auto feed = readNumber(raw.feed);
+    auto revolutions = readNumber(raw.revolutions);
+    auto lead = readNumber(raw.lead);
+    auto tilt = readNumber(raw.tilt);
+    auto tolerance = readNumber(raw.tolerance);
+    for (const auto* value : {&toolRadius, &feed, &revolutions, &lead, &tilt, &tolerance}) {
+        if (!value->has_value()) {
+            return std::unexpected(value->error());
+        }
+    }
+    options.job.toolRadius = **toolRadius;
+    if (**feed) {
+        options.job.analysis.feedOverride = units::perMinuteToPerSecond(***feed);
+    }
+    options.generate.toolRadius = **toolRadius;
+    options.generate.revolutions = **revolutions;
+    options.generate.leadDeg = **lead;
+    options.generate.tiltDeg = **tilt;
+    options.generate.chordalTolerance = **tolerance;
+    return {};
+}
+
+Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
+    BatchOptions options;
+    options.helpText = std::move(helpText);
+    if (raw.version) {
+        options.mode = BatchOptions::Mode::Version;
+        return options;
+    }
+    if (auto status = applyNumbers(raw, options); !status) {
+        return std::unexpected(status.error());
+    }
+    options.job.program = raw.program;
+    options.job.demo = raw.demo;
+    options.job.machineFile = raw.machine;
+    options.job.outputDir = raw.out;
+    options.job.analysis.feedReference = raw.feedReference == "centre"
+                                             ? analysis::FeedReference::Centre
+                                             : analysis::FeedReference::Tip;
+    options.job.analysis.method = raw.derivatives == "fd"
+                                      ? analysis::DerivativeMethod::FiniteDifference
+                                      : analysis::DerivativeMethod::Spline;
+    options.printJson = raw.json;
+    options.quiet = raw.quiet;
+    options.generate.profile = raw.profile;
+    options.generate.format = raw.format;
+    options.generate.seed = raw.seed;
+    if (!raw.generate.empty()) {
+        options.mode = BatchOptions::Mode::Generate;
+        options.generateOutput = raw.generate;
+        return options;
+    }
+    if (raw.demo == !raw.program.empty()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         raw.demo
+                             ? "give either a program or --demo, not both"
+                             : "expected a program to analyse, --demo or --generate (see --help)");
+    }
+    return options;
+}
+
+} // namespace
+
+Result<BatchOptions> parseBatchOptions(const std::vector<std::string>& arguments) {
+    CLI::App cli{"BladeAxis: monotone, smooth A-axis re-scheduling of four-axis blade programs",
+                 "bladeaxis"};
+    cli.footer(kExitCodeHelp);
+    RawOptions raw;
+    defineOptions(cli, raw);
+    std::vector<std::string> reversed(arguments.rbegin(), arguments.rend() - 1);
+    try {
+        cli.parse(reversed);
+    } catch (const CLI::CallForHelp&) {
+        BatchOptions options;
+        options.mode = BatchOptions::Mode::Help;
+        options.helpText = cli.help();
+        return options;
+    } catch (const CLI::ParseError& error) {
+        return makeError(ErrorCode::InvalidArgument, error.what());
+    }
+    return interpret(raw, cli.help());
+}
+
+} // namespace bladeaxis::app

@@ -1,0 +1,30 @@
+#pragma once
+// Command line of the headless front end. Parsing only: everything it does goes through the
+// core job API (core/job/job.h) and the demo generator (core/job/demo_program.h).
+
+#include "core/base/error.h"
+#include "core/job/demo_program.h"
+#include "core/job/job.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace bladeaxis::app {
+
+struct BatchOptions {
+    enum class Mode { Analyse, Generate, Help, Version };
+    Mode mode = Mode::Analyse;
+    job::JobSpec job;
+    // --generate OUT: write a synthetic blade program instead of analysing one.
+    std::filesystem::path generateOutput;
+    job::GenerateRequest generate;
+    bool printJson = false; // print report.json to stdout instead of the summary
+    bool quiet = false;
+    std::string helpText;
+};
+
+// Parses argv (argv[0] included). Errors are InvalidArgument with a message for the user.
+Result<BatchOptions> parseBatchOptions(const std::vector<std::string>& arguments);
+
+} // namespace bladeaxis::app

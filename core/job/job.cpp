@@ -1,0 +1,184 @@
+#include "core/job/job.h"
+
+#include "core/analysis/axis_profile.h"
+#include "core/base/file_io.h"
+#include "core/geometry/angles.h"
+#include "core/job/demo_program.h"
+#include "core/kinematics/kinematics.h"
+#include "core/kinematics/machine_file.h"
+
+#include <chrono>
+
+namespace bladeaxis::job {
+
+namespace {
+
+using toolpath::ClRecord;
+using toolpath::MotionKind;
+
+} // namespace
+
+Result<kinematics::MachineModel> loadMachine(const JobSpec& spec) {
+    if (spec.machineFile.empty()) {
+        return kinematics::defaultBladeMachine();
+    }
+    auto machine = kinematics::loadMachineFile(spec.machineFile);
+    if (!machine && (machine.error().code == ErrorCode::FileNotFound ||
+                     machine.error().code == ErrorCode::FileUnreadable)) {
+        // A missing machine file is a machine-file problem for the user (exit code 4).
+        Error error = machine.error();
+        error.code = ErrorCode::MachineFile;
+        error.message = "cannot read the machine file: " + error.message;
+        return std::unexpected(error);
+    }
+    return machine;
+}
+
+namespace {
+
+CuttingPass longestFeedRun(const std::vector<ClRecord>& records) {
+    CuttingPass best;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i <= records.size(); ++i) {
+        const bool feed = i < records.size() && records[i].motion == MotionKind::Feed;
+        if (feed) {
+            continue;
+        }
+        if (i - start > best.count) {
+            best = {start, i - start};
+        }
+        start = i + 1;
+    }
+    return best;
+}
+
+// Machine axes of the pass with A continuous: G-code gives them (modulo A is unwrapped),
+// CL data goes through the inverse kinematics with A unwrapped record to record.
+Result<std::vector<kinematics::MachineAxes>> passAxes(std::span<const ClRecord> pass,
+                                                      const kinematics::MachineModel& machine,
+                                                      const std::string& file) {
+    std::vector<kinematics::MachineAxes> axes;
+    axes.reserve(pass.size());
+    double previousA = 0.0;
+    for (const ClRecord& record : pass) {
+        if (record.axes) {
+            kinematics::MachineAxes value = *record.axes;
+            if (!axes.empty() && machine.aMode == kinematics::RotaryMode::Modulo) {
+                value.a = geometry::unwrapNear(value.a, previousA);
+            }
+            axes.push_back(value);
+        } else {
+            auto value =
+                kinematics::inverseKinematics(machine.chain, {record.tip, record.axis}, previousA);
+            if (!value) {
+                Error error = value.error();
+                error.where = {file, record.line, 0};
+                return std::unexpected(error);
+            }
+            axes.push_back(*value);
+        }
+        previousA = axes.back().a;
+    }
+    return axes;
+}
+
+Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::MachineModel& machine,
+                                    std::string& text, std::optional<double>& toolRadius) {
+    if (spec.demo) {
+        auto demo = demoProgram(machine);
+        if (!demo) {
+            return std::unexpected(demo.error());
+        }
+        text = std::move(demo->text);
+        toolRadius = demo->toolRadius;
+        return io::parseProgram(text, kDemoProgramName, io::ProgramFormat::Gcode, machine);
+    }
+    if (spec.program.empty()) {
+        return makeError(ErrorCode::InvalidArgument, "no input program given (or use --demo)");
+    }
+    auto content = readTextFile(spec.program);
+    if (!content) {
+        return std::unexpected(content.error());
+    }
+    text = std::move(*content);
+    return io::parseProgram(text, spec.program.string(), io::probeFormat(spec.program, text),
+                            machine);
+}
+
+Status checkCancelled(const CancelToken& cancel) {
+    if (cancel.isCancelled()) {
+        return makeError(ErrorCode::Cancelled, "the job was cancelled");
+    }
+    return {};
+}
+
+Status analyse(JobResult& result, const JobSpec& spec) {
+    const auto& records = result.program.path().records;
+    result.pass = longestFeedRun(records);
+    if (result.pass.count < 2) {
+        return makeError(ErrorCode::Parse,
+                         "expected at least two consecutive feed moves, found " +
+                             std::to_string(result.pass.count),
+                         {result.program.path().sourceFile});
+    }
+    const std::span<const ClRecord> pass(records.data() + result.pass.first, result.pass.count);
+    auto axes = passAxes(pass, result.machine, result.program.path().sourceFile);
+    if (!axes) {
+        return std::unexpected(axes.error());
+    }
+    result.axes = std::move(*axes);
+    analysis::AxisProfileOptions options = spec.analysis;
+    if (result.toolRadius) {
+        options.toolRadius = *result.toolRadius;
+    }
+    auto profile = analysis::analyseAxisMotion(result.axes, pass, options);
+    if (!profile) {
+        return std::unexpected(profile.error());
+    }
+    result.original = std::move(*profile);
+    result.constantFeed = analysis::constantFeedTime(result.original, result.machine, false);
+    return {};
+}
+
+} // namespace
+
+Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel) {
+    const auto start = std::chrono::steady_clock::now();
+    progress.progress(0.0, "loading the machine");
+    auto machine = loadMachine(spec);
+    if (!machine) {
+        return std::unexpected(machine.error());
+    }
+    progress.progress(0.05,
+                      spec.demo ? "generating the demo blade program" : "reading the program");
+    std::string text;
+    std::optional<double> generatedRadius;
+    auto program = loadInput(spec, *machine, text, generatedRadius);
+    if (!program) {
+        return std::unexpected(program.error());
+    }
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
+    JobResult result{*machine, std::move(*program), std::move(text)};
+    result.toolRadius = spec.toolRadius   ? spec.toolRadius
+                        : generatedRadius ? generatedRadius
+                                          : result.program.path().toolRadius;
+    result.warnings = result.program.path().warnings;
+    for (const std::string& warning : result.warnings) {
+        progress.warning(warning);
+    }
+    progress.progress(0.5, "analysing the axis motion");
+    if (auto status = analyse(result, spec); !status) {
+        return std::unexpected(status.error());
+    }
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    progress.progress(1.0, "done");
+    return result;
+}
+
+} // namespace bladeaxis::job

@@ -1,0 +1,65 @@
+#pragma once
+// The one entry point of BladeAxis: the GUI and `--batch` both build a JobSpec, call runJob
+// and present the JobResult, so they give identical results (style guide §2).
+
+#include "core/analysis/axis_profile.h"
+#include "core/base/error.h"
+#include "core/base/progress.h"
+#include "core/io/program.h"
+#include "core/kinematics/machine_model.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace bladeaxis::job {
+
+struct JobSpec {
+    std::filesystem::path program;     // input NC or CL file; ignored when demo is set
+    bool demo = false;                 // run on the built-in demo blade program instead
+    std::filesystem::path machineFile; // empty: the built-in default blade machine
+    std::optional<double> toolRadius;  // mm; overrides the radius stated in a CL file
+    analysis::AxisProfileOptions analysis;
+    std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none
+};
+
+// The part of the program that is analysed: the longest run of consecutive feed records (the
+// helical cutting pass); rapids and short feed moves around it are counted but not analysed.
+struct CuttingPass {
+    std::size_t first = 0;
+    std::size_t count = 0;
+};
+
+struct JobResult {
+    kinematics::MachineModel machine;
+    io::LoadedProgram program;
+    std::string programText;          // the input text (the demo program when generated)
+    std::optional<double> toolRadius; // mm, from the spec or the file
+    CuttingPass pass;
+    std::vector<kinematics::MachineAxes> axes; // per record of the pass, A continuous
+    analysis::AxisProfile original;
+    analysis::ConstantFeedTime constantFeed;
+    std::vector<std::string> warnings;
+    double seconds = 0.0; // wall time of runJob
+};
+
+// The spec's machine file, or the built-in default blade machine. A missing or invalid file is
+// ErrorCode::MachineFile.
+Result<kinematics::MachineModel> loadMachine(const JobSpec& spec);
+
+// Errors carry file:line diagnostics of the input; see app/batch/exit_codes.h for their mapping
+// to process exit codes.
+Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel);
+
+// Writes report.json and axes.csv (and demo_blade.nc for a demo job) into spec.outputDir,
+// each atomically; refuses to overwrite the input program.
+Status writeJobOutputs(const JobSpec& spec, const JobResult& result);
+
+// The content of report.json (also printed by `--batch --json`).
+std::string reportJsonText(const JobResult& result);
+
+// The readable summary the batch front end prints.
+std::string formatSummary(const JobResult& result);
+
+} // namespace bladeaxis::job

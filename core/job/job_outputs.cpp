@@ -1,0 +1,115 @@
+#include "core/base/file_io.h"
+#include "core/base/number_io.h"
+#include "core/base/units.h"
+#include "core/job/demo_program.h"
+#include "core/job/job.h"
+#include "core/report/analysis_report.h"
+
+#include <nlohmann/json.hpp>
+
+namespace bladeaxis::job {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json inputJson(const JobResult& result) {
+    const toolpath::Toolpath& path = result.program.path();
+    nlohmann::json json;
+    json["file"] = fs::path(path.sourceFile).filename().string();
+    json["format"] = io::toString(result.program.format());
+    json["records"] = path.records.size();
+    json["analysed_records"] = result.pass.count;
+    if (result.pass.count > 0) {
+        json["first_line"] = path.records[result.pass.first].line;
+        json["last_line"] = path.records[result.pass.first + result.pass.count - 1].line;
+    }
+    return json;
+}
+
+nlohmann::json reportJson(const JobResult& result) {
+    nlohmann::json json;
+    json["bladeaxis_version"] = BLADEAXIS_VERSION;
+    json["input"] = inputJson(result);
+    json["machine"] = {
+        {"name", result.machine.name},
+        {"file", result.machine.sourceFile.empty() ? "(built-in)" : result.machine.sourceFile}};
+    if (result.toolRadius) {
+        json["tool_radius_mm"] = *result.toolRadius;
+    }
+    json["original"] = report::analysisJson(result.original, result.constantFeed);
+    json["warnings"] = result.warnings;
+    json["timing"] = {{"job_s", result.seconds}};
+    return json;
+}
+
+} // namespace
+
+Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
+    if (spec.outputDir.empty()) {
+        return {};
+    }
+    std::error_code ec;
+    fs::create_directories(spec.outputDir, ec);
+    if (ec) {
+        return makeError(ErrorCode::WriteFailed, "cannot create the output folder: " + ec.message(),
+                         {spec.outputDir.string()});
+    }
+    const std::vector<fs::path> inputs =
+        spec.demo ? std::vector<fs::path>{} : std::vector<fs::path>{spec.program};
+    if (spec.demo) {
+        if (auto status =
+                writeFileAtomically(spec.outputDir / kDemoProgramName, result.programText);
+            !status) {
+            return status;
+        }
+    }
+    const auto records =
+        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
+    if (auto status = writeFileAtomically(spec.outputDir / "axes.csv",
+                                          report::axesCsv(result.original, records), inputs);
+        !status) {
+        return status;
+    }
+    return writeFileAtomically(spec.outputDir / "report.json", reportJsonText(result), inputs);
+}
+
+std::string reportJsonText(const JobResult& result) {
+    return reportJson(result).dump(2) + "\n";
+}
+
+std::string formatSummary(const JobResult& result) {
+    const analysis::AxisProfile& profile = result.original;
+    auto number = [](double value, int decimals) { return formatFixed(value, decimals); };
+    using kinematics::AxisId;
+    const auto& a = profile.axes[static_cast<int>(AxisId::A)];
+    std::string text;
+    text += "program      " + result.program.path().sourceFile + " (" +
+            io::toString(result.program.format()) + ", " +
+            std::to_string(result.program.path().records.size()) + " records, " +
+            std::to_string(result.pass.count) + " in the cutting pass)\n";
+    text += "machine      " + result.machine.name + "\n";
+    text += "path         " + number(profile.pathLength, 1) + " mm at " +
+            number(units::perSecondToPerMinute(profile.feed), 0) + " mm/min, " +
+            number(profile.cycleTime, 1) + " s\n";
+    text += "A axis       " + std::to_string(profile.aReversals.count) + " reversals, travel " +
+            number(units::radToDeg(profile.aReversals.travel), 1) + " deg (" +
+            number(units::radToDeg(profile.aReversals.backwardTravel), 1) + " deg backwards)\n";
+    text += "A peaks      velocity " + number(units::radToDeg(a.peakVelocity), 1) +
+            " deg/s, acceleration " + number(units::radToDeg(a.peakAcceleration), 0) + " deg/s^2\n";
+    for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z}) {
+        const auto& series = profile.axes[static_cast<int>(axis)];
+        text += std::string(kinematics::axisName(axis)) + " peaks      velocity " +
+                number(series.peakVelocity, 1) + " mm/s, acceleration " +
+                number(series.peakAcceleration, 0) + " mm/s^2\n";
+    }
+    text += "T1           " + number(result.constantFeed.time, 1) + " s at an achievable feed of " +
+            number(units::perSecondToPerMinute(result.constantFeed.achievableFeed), 0) +
+            " mm/min (bound by " + kinematics::axisName(result.constantFeed.bindingAxis) + ")\n";
+    for (const std::string& warning : result.warnings) {
+        text += "warning      " + warning + "\n";
+    }
+    return text;
+}
+
+} // namespace bladeaxis::job

@@ -1,0 +1,114 @@
+#include "core/base/file_io.h"
+#include "core/job/demo_program.h"
+#include "core/job/job.h"
+
+#include <gtest/gtest.h>
+
+#include <clocale>
+#include <filesystem>
+
+namespace bladeaxis::job {
+namespace {
+
+namespace fs = std::filesystem;
+
+Result<JobResult> runDemo() {
+    JobSpec spec;
+    spec.demo = true;
+    NullProgressSink progress;
+    CancelToken cancel;
+    return runJob(spec, progress, cancel);
+}
+
+TEST(DemoJob, OriginalProgramReversesTheAAxis) {
+    auto result = runDemo();
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    EXPECT_GT(result->original.aReversals.count, 0);
+    EXPECT_GT(result->original.aReversals.backwardTravel, 0.0);
+    EXPECT_GT(result->pass.count, 1000u);
+}
+
+TEST(DemoJob, ATurnsAboutOnceAroundPerRevolution) {
+    auto result = runDemo();
+    ASSERT_TRUE(result.has_value());
+    const auto& a = result->original.axis(kinematics::AxisId::A).position;
+    const double turns = std::abs(a.back() - a.front()) / (2.0 * 3.141592653589793);
+    EXPECT_GT(turns, 3.0);
+}
+
+TEST(DemoJob, IsDeterministic) {
+    auto first = runDemo();
+    auto second = runDemo();
+    ASSERT_TRUE(first && second);
+    EXPECT_EQ(first->programText, second->programText);
+    EXPECT_EQ(reportJsonText(*first).size(), reportJsonText(*second).size());
+}
+
+TEST(Job, CancelledJobStopsWithCancelled) {
+    JobSpec spec;
+    spec.demo = true;
+    NullProgressSink progress;
+    CancelToken cancel;
+    cancel.requestCancel();
+    auto result = runJob(spec, progress, cancel);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
+}
+
+TEST(Job, MissingProgramIsFileNotFound) {
+    JobSpec spec;
+    spec.program = "/nonexistent/blade.nc";
+    NullProgressSink progress;
+    CancelToken cancel;
+    auto result = runJob(spec, progress, cancel);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::FileNotFound);
+}
+
+TEST(Job, GeneratedAptProgramAnalysesLikeItsGcodeTwin) {
+    const auto machine = kinematics::defaultBladeMachine();
+    GenerateRequest request;
+    request.revolutions = 2.0;
+    auto gcode = generateProgram(request, machine);
+    request.format = "apt";
+    auto apt = generateProgram(request, machine);
+    ASSERT_TRUE(gcode && apt);
+    const fs::path dir = fs::temp_directory_path() / "bladeaxis_job_twin";
+    fs::create_directories(dir);
+    ASSERT_TRUE(writeFileAtomically(dir / "twin.nc", gcode->text));
+    ASSERT_TRUE(writeFileAtomically(dir / "twin.cls", apt->text));
+    NullProgressSink progress;
+    CancelToken cancel;
+    JobSpec spec;
+    spec.program = dir / "twin.nc";
+    auto fromGcode = runJob(spec, progress, cancel);
+    spec.program = dir / "twin.cls";
+    auto fromApt = runJob(spec, progress, cancel);
+    fs::remove_all(dir);
+    ASSERT_TRUE(fromGcode.has_value()) << fromGcode.error().toString();
+    ASSERT_TRUE(fromApt.has_value()) << fromApt.error().toString();
+    EXPECT_EQ(fromGcode->original.aReversals.count, fromApt->original.aReversals.count);
+    EXPECT_NEAR(fromGcode->original.pathLength, fromApt->original.pathLength,
+                1e-3 * fromGcode->original.pathLength);
+}
+
+TEST(DemoJob, OutputsDoNotDependOnADecimalCommaLocale) {
+    auto reference = runDemo();
+    ASSERT_TRUE(reference.has_value());
+    const std::string inC = reportJsonText(*reference);
+    const std::string saved = std::setlocale(LC_ALL, nullptr);
+    if (std::setlocale(LC_ALL, "de_DE.UTF-8") == nullptr) {
+        GTEST_SKIP() << "de_DE.UTF-8 not installed";
+    }
+    auto localised = runDemo();
+    std::setlocale(LC_ALL, saved.c_str());
+    ASSERT_TRUE(localised.has_value());
+    EXPECT_EQ(localised->programText, reference->programText);
+    // Only the timing differs between two runs; compare everything before it.
+    const std::string inGerman = reportJsonText(*localised);
+    EXPECT_EQ(inGerman.substr(0, inGerman.find("\"timing\"")),
+              inC.substr(0, inC.find("\"timing\"")));
+}
+
+} // namespace
+} // namespace bladeaxis::job

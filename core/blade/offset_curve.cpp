@@ -71,6 +71,14 @@ Result<OffsetCurve> OffsetCurve::create(std::span<const Vec2> section, double ra
     if (section.size() < 3) {
         return makeError(ErrorCode::Geometry, "offset curve: the section has fewer than 3 points");
     }
+    for (std::size_t k = 0; k < section.size(); ++k) {
+        const double edge = (section[(k + 1) % section.size()] - section[k]).norm();
+        if (!(edge > 1e-12)) { // also catches NaN points
+            return makeError(ErrorCode::Geometry, "offset curve: section edge " +
+                                                      std::to_string(k) +
+                                                      " has zero length or is not finite");
+        }
+    }
     const double concave = minConcaveRadius(section);
     if (!(radius < concave)) {
         return makeError(ErrorCode::Geometry,

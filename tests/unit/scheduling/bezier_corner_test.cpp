@@ -1,0 +1,160 @@
+// Spec §10.1 row "Bezier pair": the §5.7 numbers, the printed Eq. 9 breaking G1, homothety,
+// the graph-limit 4/3 peak, maximum deviation |epsilon| at S2, monotone deviation in epsilon.
+#include "core/scheduling/bezier_corner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace bladeaxis::scheduling {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+double directionOf(const Vec2& v) {
+    return std::atan2(v.y(), v.x());
+}
+
+// Vertical distance of the curve from the polyline through P2 with angles alpha, beta.
+double deviationAt(const BezierPair& pair, const Vec2& p2, double alpha, double beta, double s) {
+    if (s <= pair.sBegin() || s >= pair.sEnd()) {
+        return 0.0; // outside the span the smoothed path is the polyline
+    }
+    const double line = p2.y() + std::tan(s < p2.x() ? alpha : beta) * (s - p2.x());
+    return evaluatePair(pair, s).value - line;
+}
+
+TEST(BezierCorner, CorrectedEquation9MatchesTheSpecNumbers) {
+    const double alpha = 10.0 * kDeg;
+    const double beta = 50.0 * kDeg;
+    const BezierPair pair = euclideanCornerPair(Vec2::Zero(), alpha, beta, 0.5);
+    EXPECT_NEAR(pair.first.control[0].x(), -2.6646, 5e-5);
+    EXPECT_NEAR(pair.first.control[0].y(), -0.4698, 5e-5);
+    EXPECT_NEAR(pair.second.control[1].x(), 0.8138, 5e-5);
+    EXPECT_NEAR(pair.second.control[1].y(), 0.9698, 5e-5);
+    EXPECT_NEAR(pair.first.control[0].norm(), 2.7057, 5e-5); // d1 (E9)
+    // Closed forms of §5.2 at 1e-9: B_i1 and B_j1 as line intersections, equal legs.
+    const double gamma = 30.0 * kDeg;
+    const Vec2 bi1(0.5 / (std::tan(alpha) - std::tan(gamma)),
+                   0.5 * std::tan(alpha) / (std::tan(alpha) - std::tan(gamma)));
+    const Vec2 bj1(0.5 / (std::tan(beta) - std::tan(gamma)),
+                   0.5 * std::tan(beta) / (std::tan(beta) - std::tan(gamma)));
+    EXPECT_NEAR((pair.first.control[1] - bi1).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((pair.second.control[1] - bj1).norm(), 0.0, 1e-9);
+    EXPECT_EQ(pair.first.control[1], pair.first.control[2]); // double inner points (E2)
+    EXPECT_EQ(pair.second.control[1], pair.second.control[2]);
+    EXPECT_NEAR((pair.first.control[1] - pair.first.control[0]).norm(),
+                (pair.first.control[3] - pair.first.control[1]).norm(), 1e-12);
+    EXPECT_NEAR((pair.second.control[1] - pair.second.control[0]).norm(),
+                (pair.second.control[3] - pair.second.control[1]).norm(), 1e-12);
+    // G1 at the three joints and G2 (zero curvature) at all four.
+    EXPECT_NEAR(directionOf(pair.first.firstDerivative(0.0)), alpha, 1e-12);
+    EXPECT_NEAR(directionOf(pair.first.firstDerivative(1.0)), gamma, 1e-12);
+    EXPECT_NEAR(directionOf(pair.second.firstDerivative(0.0)), gamma, 1e-12);
+    EXPECT_NEAR(directionOf(pair.second.firstDerivative(1.0)), beta, 1e-12);
+    for (const CubicBezier* c : {&pair.first, &pair.second}) {
+        EXPECT_NEAR(secondDerivativeAt(*c, 0.0), 0.0, 1e-9);
+        EXPECT_NEAR(secondDerivativeAt(*c, 1.0), 0.0, 1e-9);
+    }
+}
+
+// Documented erratum E5-E8: the printed Eq. 9 (with the printed tan(beta) and gamma factors)
+// gives the printed numbers of §5.7 and a first cubic ending at 50 deg while the second starts
+// at -130 deg: G1 is broken. The test keeps the printed formulas to show why they are wrong.
+TEST(BezierCorner, PrintedEquation9BreaksG1) {
+    const double a = 10.0 * kDeg, b = 50.0 * kDeg, g = 30.0 * kDeg, e = 0.5;
+    const double k = std::cos(a) + std::cos(b);
+    const Vec2 bi0(e * std::cos(a) * k / std::sin(b - a), e * std::sin(a) * k / std::sin(b - a));
+    const Vec2 bi1(e / (std::tan(a) - std::tan(b)), e * std::tan(a) / (std::tan(a) - std::tan(b)));
+    const Vec2 bi3(0.0, e);
+    const Vec2 bj1(e / (std::tan(g) - std::tan(b)), e * std::tan(g) / (std::tan(g) - std::tan(b)));
+    EXPECT_NEAR(bi0.x(), 1.2468, 5e-5);
+    EXPECT_NEAR(bi0.y(), 0.2198, 5e-5);
+    EXPECT_NEAR(bj1.x(), -0.8138, 5e-5);
+    EXPECT_NEAR(bj1.y(), -0.4698, 5e-5);
+    const double printedD1 = e * k / std::sin(b - a); // Eq. 11 as printed (E9)
+    EXPECT_NEAR(printedD1, 1.2660, 5e-5);             // = |P2 B_i1| of the corrected points
+    EXPECT_LT(printedD1, 2.7057);                     // the true d1 = |P2 B_i0|
+    const CubicBezier first{{bi0, bi1, bi1, bi3}};
+    const CubicBezier second{{bi3, bj1, bj1, Vec2(1.9102, 1.1029)}};
+    EXPECT_NEAR(directionOf(first.firstDerivative(1.0)), 50.0 * kDeg, 1e-9);
+    EXPECT_NEAR(directionOf(second.firstDerivative(0.0)), -130.0 * kDeg, 1e-9);
+}
+
+TEST(BezierCorner, MaximumDeviationIsEpsilonReachedAtTheCorner) {
+    const Vec2 p2(3.0, 1.0);
+    for (const auto& [alpha, beta, eps] :
+         {std::tuple{0.1, 0.6, 0.2}, std::tuple{0.9, 0.2, -0.15}}) {
+        const BezierPair pair = euclideanCornerPair(p2, alpha, beta, eps);
+        EXPECT_NEAR(deviationAt(pair, p2, alpha, beta, p2.x()), eps, 1e-12);
+        double worst = 0.0;
+        for (int k = 0; k <= 1000; ++k) {
+            const double s = pair.sBegin() + (pair.sEnd() - pair.sBegin()) * k / 1000.0;
+            const double d = deviationAt(pair, p2, alpha, beta, s);
+            EXPECT_GE(d * eps, -1e-15); // on the corner's side
+            worst = std::max(worst, std::abs(d));
+        }
+        EXPECT_LE(worst, std::abs(eps) + 1e-12);
+        EXPECT_GT(worst, 0.99 * std::abs(eps));
+    }
+}
+
+TEST(BezierCorner, DeviationGrowsWithEpsilonSoBisectionIsValid) {
+    const Vec2 p2(0.0, 0.0);
+    const double alpha = 0.05, beta = 0.4;
+    for (double s = -1.5; s <= 1.5; s += 0.1) {
+        double previous = 0.0;
+        for (double eps = 0.01; eps <= 0.2; eps += 0.01) {
+            const double d =
+                deviationAt(euclideanCornerPair(p2, alpha, beta, eps), p2, alpha, beta, s);
+            EXPECT_GE(d, previous - 1e-13) << s << " " << eps;
+            previous = d;
+        }
+    }
+}
+
+TEST(BezierCorner, PeakCurvatureTimesEpsilonIsConstantUnderHomothety) {
+    double reference = 0.0;
+    for (double eps : {0.01, 0.05, 0.2}) {
+        const BezierPair pair = euclideanCornerPair(Vec2(1.0, 2.0), 0.1, 0.7, eps);
+        double peak = 0.0;
+        for (int k = 0; k <= 2000; ++k) {
+            peak = std::max(peak, std::abs(secondDerivativeAt(pair.first, k / 2000.0)));
+        }
+        reference = reference == 0.0 ? peak * eps : reference;
+        EXPECT_NEAR(peak * eps, reference, 1e-9 * reference);
+    }
+}
+
+TEST(BezierCorner, GraphLimitPeakIsFourThirdsOfTheSlopeChangeOverTheHalfSpan) {
+    const double k1 = 0.01, k2 = 0.05, eps = 0.02;
+    const BezierPair pair = graphLimitCornerPair(Vec2(5.0, 1.0), k1, k2, eps);
+    const double h = 2.0 * eps / (k2 - k1);
+    EXPECT_NEAR(pair.sEnd() - pair.sBegin(), 4.0 * h, 1e-12);
+    // t = 1/2 is the peak of theta'' = (2 eps / 3 h^2) t(1-t) / (1 - 2t + 2t^2)^3.
+    const double peak = std::abs(secondDerivativeAt(pair.first, 0.5));
+    EXPECT_NEAR(peak, 4.0 * eps / (3.0 * h * h), 1e-12);
+    EXPECT_NEAR(peak * (2.0 * h) / (k2 - k1), 4.0 / 3.0, 1e-12);
+    EXPECT_GE(peak, std::abs(secondDerivativeAt(pair.first, 0.45)));
+    // The Euclidean form in the rad/mm plane approaches the graph limit for small slopes.
+    const BezierPair euclid =
+        euclideanCornerPair(Vec2(5.0, 1.0), std::atan(k1), std::atan(k2), eps);
+    double euclidPeak = 0.0;
+    for (int k = 0; k <= 2000; ++k) {
+        euclidPeak = std::max(euclidPeak, std::abs(secondDerivativeAt(euclid.first, k / 2000.0)));
+    }
+    EXPECT_NEAR(euclidPeak / peak, 1.0, 0.005);
+}
+
+TEST(BezierCorner, GeometricLimitUsesTheCorrectedLegs) {
+    const double alpha = 10.0 * kDeg, beta = 50.0 * kDeg;
+    const double limit = euclideanEpsilonLimit(alpha, beta, 4.0, 10.0, 0.5, 0.5);
+    const BezierPair pair = euclideanCornerPair(Vec2::Zero(), alpha, beta, limit);
+    EXPECT_NEAR(pair.first.control[0].norm(), 2.0, 1e-12); // d1 = l1 / 2 binds
+    EXPECT_LE(pair.second.control[3].norm(), 5.0 + 1e-12);
+    EXPECT_NEAR(graphLimitEpsilonLimit(0.0, 0.04, 10.0, 20.0, 0.5, 1.0), 0.5 * 2.5 * 0.04, 1e-15);
+}
+
+} // namespace
+} // namespace bladeaxis::scheduling

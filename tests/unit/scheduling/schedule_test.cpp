@@ -1,0 +1,97 @@
+// Spec §10.2 pipeline invariants and §10.3 degenerate cases on synthetic helical paths.
+#include "core/scheduling/schedule.h"
+#include "tests/unit/scheduling/synthetic_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace bladeaxis::scheduling {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+bool hasFlag(const LayerResult& layer, LayerStatus status) {
+    return std::find(layer.flags.begin(), layer.flags.end(), status) != layer.flags.end();
+}
+
+ScheduleInput appendixBHelix(double revolutions = 3.0) {
+    testing::HelixOptions options;
+    options.revolutions = revolutions;
+    return testing::helicalPath(testing::appendixBCurve(), options);
+}
+
+TEST(Schedule, AppendixBHelixIsMonotoneInsideTheChannelWithFlatEnds) {
+    const ScheduleInput input = appendixBHelix();
+    for (const ScheduleParameters& parameters : {bestPreset(), faithfulPreset()}) {
+        auto result = schedule(input, parameters);
+        ASSERT_TRUE(result.has_value()) << result.error().toString();
+        ASSERT_EQ(result->layers.size(), 4u); // 3 revolutions: 3 base points, 2 partial ends
+        EXPECT_EQ(result->check.reversals, 0u);
+        EXPECT_GT(result->originalReversals, 0u);
+        for (std::size_t k = 0; k < result->layers.size(); ++k) {
+            const LayerResult& layer = result->layers[k];
+            EXPECT_FALSE(hasFlag(layer, LayerStatus::MonotoneInfeasible)) << k;
+            EXPECT_GE(layer.minClearance, -1e-12) << k;
+            for (std::size_t i = 1; i < layer.theta.size(); ++i) {
+                ASSERT_GE(layer.theta[i] - layer.theta[i - 1], -1e-12) << k << " " << i;
+                ASSERT_GE(layer.dTheta[i], -1e-12);
+            }
+            const bool intermediate = k > 0 && k + 1 < result->layers.size();
+            if (k > 0) { // flat start (fixed junction)
+                EXPECT_NEAR(layer.dTheta.front(), 0.0, 1e-9);
+                EXPECT_NEAR(layer.ddTheta.front(), 0.0, 1e-9);
+            }
+            if (k + 1 < result->layers.size()) {
+                EXPECT_NEAR(layer.dTheta.back(), 0.0, 1e-9);
+                EXPECT_NEAR(layer.ddTheta.back(), 0.0, 1e-9);
+            }
+            if (intermediate) {
+                EXPECT_NEAR(layer.theta.back(), 2.0 * kPi, 0.2); // about one turn, no twist
+            }
+        }
+        EXPECT_TRUE(result->check.passes());
+    }
+}
+
+TEST(Schedule, ReconstructionKeepsEveryBallCentre) {
+    const ScheduleInput input = appendixBHelix(2.5);
+    auto result = schedule(input, bestPreset());
+    ASSERT_TRUE(result.has_value());
+    ASSERT_EQ(result->newAxes.size(), input.centres.size());
+    for (std::size_t i = 0; i < input.centres.size(); ++i) {
+        const Vec3& v = result->newAxes[i];
+        EXPECT_NEAR((result->newTips[i] + input.toolRadius * v - input.centres[i]).norm(), 0.0,
+                    1e-9);
+        EXPECT_NEAR(v.norm(), 1.0, 1e-12);
+        EXPECT_NEAR(v.x(), std::sin(result->tiltB0), 1e-12);
+    }
+    EXPECT_NEAR(result->tiltB0, 5.0 * kPi / 180.0, 1e-12);
+    // Junction continuity: consecutive samples differ by a small step only.
+    for (std::size_t i = 1; i < input.centres.size(); ++i) {
+        ASSERT_LT((result->newAxes[i] - result->newAxes[i - 1]).norm(), 0.1) << i;
+    }
+}
+
+TEST(Schedule, ParallelRunEqualsSerialRun) {
+    const ScheduleInput input = appendixBHelix(4.0);
+    ScheduleParameters serial = bestPreset();
+    serial.threads = 1;
+    ScheduleParameters parallel = bestPreset();
+    parallel.threads = 4;
+    auto a = schedule(input, serial);
+    auto b = schedule(input, parallel);
+    ASSERT_TRUE(a.has_value() && b.has_value());
+    ASSERT_EQ(a->layers.size(), b->layers.size());
+    EXPECT_EQ(a->thetaAbsolute, b->thetaAbsolute); // bit-identical
+    for (std::size_t k = 0; k < a->layers.size(); ++k) {
+        EXPECT_EQ(a->layers[k].ddTheta, b->layers[k].ddTheta);
+        EXPECT_EQ(a->layers[k].polyline, b->layers[k].polyline);
+    }
+}
+
+} // namespace
+} // namespace bladeaxis::scheduling

@@ -21,6 +21,10 @@ struct NacaProfile {
 // between the inlet and outlet camber tangents), a smooth thickness distribution with maximum
 // `maxThickness` at mid-camber, closed by a leading-edge and a trailing-edge circle centred on
 // the camber line ends. Thickness and radii are fractions of the chord.
+// Known limitation: the thickness blend has zero slope at both ends (so the sides meet the edge
+// circles tangentially), which makes short, weakly concave zones on the suction side next to
+// the edge circles (about 2 % of the chord at the trailing edge). They add small extra backward
+// runs of the fixed-lead orientation; the main concave run is still the pressure side.
 struct TurbineProfile {
     double turning = 1.6; // rad (about 92 deg)
     double maxThickness = 0.15;

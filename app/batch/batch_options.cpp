@@ -2,10 +2,14 @@
 
 #include "core/base/number_io.h"
 #include "core/base/units.h"
+#include "core/job/job_file.h"
+#include "core/job/parameter_schema.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 
 namespace bladeaxis::app {
@@ -52,9 +56,50 @@ struct RawOptions {
     NumberOption lead{"", "--lead-deg", false};
     NumberOption tilt{"", "--tilt-deg", false};
     NumberOption tolerance{"", "--tolerance", true};
+    std::string outputProgram, preset, jobFile;
+    std::map<std::string, std::string> parameters; // schema key -> text, when given
     std::uint64_t seed = 1;
     bool batch = false, demo = false, json = false, quiet = false, version = false;
+    bool analyseOnly = false;
 };
+
+std::string optionName(const std::string& key) {
+    std::string name = "--" + key;
+    std::replace(name.begin(), name.end(), '_', '-');
+    return name;
+}
+
+// One command-line option per entry of the parameter schema (style guide §14).
+void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
+    auto* group = cli.add_option_group("Scheduling",
+                                       "Parameters of the S-theta re-scheduling (spec Appendix A)");
+    group->add_option("-o,--output", raw.outputProgram, "Write the re-scheduled program here");
+    group->add_option("--preset", raw.preset, "faithful (the paper's rules) or best (default)")
+        ->check(CLI::IsMember({"faithful", "best"}));
+    group->add_option("--job", raw.jobFile,
+                      "Job file (JSON, docs/job-file.md); options given here win");
+    group->add_flag("--analyse-only", raw.analyseOnly,
+                    "Analyse the program without re-scheduling it");
+    for (const job::ParameterInfo& info : job::scheduleParameterSchema()) {
+        std::string help = info.help;
+        if (!info.unit.empty()) {
+            help += " [" + info.unit + "]";
+        }
+        if (!info.choices.empty()) {
+            help += " {";
+            for (const std::string& choice : info.choices) {
+                help += (help.back() == '{' ? "" : ",") + choice;
+            }
+            help += "}";
+        }
+        help += " (best: " + info.get(scheduling::bestPreset()) +
+                ", faithful: " + info.get(scheduling::faithfulPreset()) + ")";
+        group->add_option_function<std::string>(
+            optionName(info.key),
+            [&raw, key = info.key](const std::string& value) { raw.parameters[key] = value; },
+            help);
+    }
+}
 
 void defineOptions(CLI::App& cli, RawOptions& raw) {
     cli.add_flag("--batch", raw.batch, "Run headless: no window, no display needed");
@@ -87,6 +132,40 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     generate->add_option("--tolerance", raw.tolerance.text,
                          "Chordal tolerance on the ball centre, mm");
     generate->add_option("--seed", raw.seed, "Random seed (lead-angle noise, family members)");
+    defineScheduleOptions(cli, raw);
+}
+
+// Job file first, then the preset, then single parameters: the most specific wins.
+Status applySchedule(const RawOptions& raw, BatchOptions& options) {
+    if (!raw.jobFile.empty()) {
+        if (auto status = job::readJobFile(raw.jobFile, options.job); !status) {
+            return status;
+        }
+    }
+    if (!raw.preset.empty()) {
+        auto preset = job::presetParameters(raw.preset);
+        if (!preset) {
+            return std::unexpected(preset.error());
+        }
+        options.job.parameters = *preset;
+        options.job.presetName = raw.preset;
+    }
+    for (const auto& [key, text] : raw.parameters) {
+        if (auto status = job::findParameter(key)->set(options.job.parameters, text); !status) {
+            Error error = status.error();
+            error.message = optionName(key) + error.message.substr(key.size());
+            return std::unexpected(error);
+        }
+    }
+    if (!raw.outputProgram.empty()) {
+        options.job.outputProgram = raw.outputProgram;
+    }
+    options.job.reschedule = !raw.analyseOnly;
+    if (raw.analyseOnly && !options.job.outputProgram.empty()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "--analyse-only and --output exclude each other");
+    }
+    return {};
 }
 
 Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
@@ -101,7 +180,9 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
             return std::unexpected(value->error());
         }
     }
-    options.job.toolRadius = **toolRadius;
+    if (**toolRadius) {
+        options.job.toolRadius = **toolRadius;
+    }
     if (**feed) {
         options.job.analysis.feedOverride = units::perMinuteToPerSecond(***feed);
     }
@@ -120,13 +201,22 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
         options.mode = BatchOptions::Mode::Version;
         return options;
     }
+    if (auto status = applySchedule(raw, options); !status) {
+        return std::unexpected(status.error());
+    }
     if (auto status = applyNumbers(raw, options); !status) {
         return std::unexpected(status.error());
     }
-    options.job.program = raw.program;
+    if (!raw.program.empty()) {
+        options.job.program = raw.program;
+    }
     options.job.demo = raw.demo;
-    options.job.machineFile = raw.machine;
-    options.job.outputDir = raw.out;
+    if (!raw.machine.empty()) {
+        options.job.machineFile = raw.machine;
+    }
+    if (!raw.out.empty()) {
+        options.job.outputDir = raw.out;
+    }
     options.job.analysis.feedReference = raw.feedReference == "centre"
                                              ? analysis::FeedReference::Centre
                                              : analysis::FeedReference::Tip;

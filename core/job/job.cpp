@@ -140,6 +140,25 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     return {};
 }
 
+Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
+    RescheduleInput input;
+    input.program = &result.program;
+    input.machine = &result.machine;
+    input.passFirst = result.pass.first;
+    input.passCount = result.pass.count;
+    input.originalAxes = &result.axes;
+    input.toolRadius = result.toolRadius.value_or(0.0);
+    input.parameters = spec.parameters;
+    input.analysis = spec.analysis;
+    input.analysis.toolRadius = input.toolRadius;
+    auto outcome = reschedule(input, cancel);
+    if (!outcome) {
+        return std::unexpected(outcome.error());
+    }
+    result.rescheduled = std::move(*outcome);
+    return {};
+}
+
 } // namespace
 
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel) {
@@ -168,12 +187,22 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     for (const std::string& warning : result.warnings) {
         progress.warning(warning);
     }
-    progress.progress(0.5, "analysing the axis motion");
+    progress.progress(0.3, "analysing the original axis motion");
     if (auto status = analyse(result, spec); !status) {
         return std::unexpected(status.error());
     }
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
+    }
+    if (spec.reschedule) {
+        progress.progress(0.5, "re-scheduling the tool orientation");
+        if (auto status = rescheduleInto(result, spec, cancel); !status) {
+            return std::unexpected(status.error());
+        }
+        for (const std::string& warning : result.rescheduled->schedule.warnings) {
+            progress.warning(warning);
+            result.warnings.push_back(warning);
+        }
     }
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,11 +2,13 @@
 // The one entry point of BladeAxis: the GUI and `--batch` both build a JobSpec, call runJob
 // and present the JobResult, so they give identical results (style guide §2).
 
-#include "core/analysis/axis_profile.h"
+#include "core/analysis/analysis.h"
 #include "core/base/error.h"
 #include "core/base/progress.h"
 #include "core/io/program.h"
+#include "core/job/reschedule.h"
 #include "core/kinematics/machine_model.h"
+#include "core/scheduling/schedule_parameters.h"
 
 #include <filesystem>
 #include <optional>
@@ -40,6 +42,7 @@ struct JobResult {
     std::vector<kinematics::MachineAxes> axes; // per record of the pass, A continuous
     analysis::AxisProfile original;
     analysis::ConstantFeedTime constantFeed;
+    std::optional<RescheduleOutcome> rescheduled; // when spec.reschedule
     std::vector<std::string> warnings;
     double seconds = 0.0; // wall time of runJob
 };
@@ -52,12 +55,13 @@ Result<kinematics::MachineModel> loadMachine(const JobSpec& spec);
 // to process exit codes.
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel);
 
-// Writes report.json and axes.csv (and demo_blade.nc for a demo job) into spec.outputDir,
-// each atomically; refuses to overwrite the input program.
+// Writes the re-scheduled program to spec.outputProgram, and report.json, axes.csv and
+// layers.csv (and demo_blade.nc for a demo job) into spec.outputDir, each atomically; refuses to
+// overwrite the input program.
 Status writeJobOutputs(const JobSpec& spec, const JobResult& result);
 
 // The content of report.json (also printed by `--batch --json`).
-std::string reportJsonText(const JobResult& result);
+std::string reportJsonText(const JobResult& result, const JobSpec* spec = nullptr);
 
 // The readable summary the batch front end prints.
 std::string formatSummary(const JobResult& result);

@@ -4,6 +4,7 @@
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
 #include "core/report/analysis_report.h"
+#include "core/report/schedule_report.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,7 +28,39 @@ nlohmann::json inputJson(const JobResult& result) {
     return json;
 }
 
-nlohmann::json reportJson(const JobResult& result) {
+std::vector<int> passLines(const JobResult& result) {
+    std::vector<int> lines;
+    const auto& records = result.program.path().records;
+    for (std::size_t i = 0; i < result.pass.count; ++i) {
+        lines.push_back(records[result.pass.first + i].line);
+    }
+    return lines;
+}
+
+nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
+    const RescheduleOutcome& outcome = *result.rescheduled;
+    nlohmann::json json;
+    if (spec != nullptr) {
+        json["preset"] = spec->presetName;
+    }
+    json["analysis"] = report::analysisJson(outcome.profile, outcome.constantFeed);
+    json["reductions"] = report::reductionsJson(result.original, outcome.profile);
+    const double before = result.constantFeed.time;
+    const double after = outcome.constantFeed.time;
+    json["t1_reduction"] = before > 0.0 ? (before - after) / before : 0.0;
+    json["checks"] = {
+        {"max_centre_deviation_mm", outcome.maxCentreDeviationMm},
+        {"max_reconstruction_error_mm", outcome.schedule.check.maxCentreErrorMm},
+        {"min_channel_clearance_deg", units::radToDeg(outcome.minChannelClearanceRad)},
+        {"layers_kept_original", outcome.layersKeptOriginal},
+    };
+    const std::vector<int> lines = passLines(result);
+    report::BeforeAfter data{&result.original, &outcome.profile, result.axes, outcome.axes, lines};
+    json["layers"] = report::layersJson(outcome.schedule, data);
+    return json;
+}
+
+nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
     nlohmann::json json;
     json["bladeaxis_version"] = BLADEAXIS_VERSION;
     json["input"] = inputJson(result);
@@ -38,6 +71,9 @@ nlohmann::json reportJson(const JobResult& result) {
         json["tool_radius_mm"] = *result.toolRadius;
     }
     json["original"] = report::analysisJson(result.original, result.constantFeed);
+    if (result.rescheduled) {
+        json["rescheduled"] = rescheduledJson(result, spec);
+    }
     json["warnings"] = result.warnings;
     json["timing"] = {{"job_s", result.seconds}};
     return json;
@@ -78,6 +114,49 @@ std::string reportJsonText(const JobResult& result) {
     return reportJson(result).dump(2) + "\n";
 }
 
+namespace {
+
+std::string percent(double before, double after) {
+    if (!(before > 0.0)) {
+        return "n/a";
+    }
+    return formatFixed(100.0 * (before - after) / before, 1) + "%";
+}
+
+std::string rescheduledSummary(const JobResult& result) {
+    using kinematics::AxisId;
+    const RescheduleOutcome& outcome = *result.rescheduled;
+    const auto& before = result.original;
+    const auto& after = outcome.profile;
+    const auto& a0 = before.axis(AxisId::A);
+    const auto& a1 = after.axis(AxisId::A);
+    std::size_t flagged = 0;
+    for (const auto& layer : outcome.schedule.layers) {
+        flagged += layer.flags.empty() ? 0 : 1;
+    }
+    std::string text = "re-scheduled " + std::to_string(outcome.schedule.layers.size()) +
+                       " layers (" + std::to_string(flagged) + " flagged, " +
+                       std::to_string(outcome.layersKeptOriginal) + " kept original)\n";
+    text += "A reversals  " + std::to_string(before.aReversals.count) + " -> " +
+            std::to_string(after.aReversals.count) + "\n";
+    text += "A peak vel.  " + formatFixed(units::radToDeg(a0.peakVelocity), 1) + " -> " +
+            formatFixed(units::radToDeg(a1.peakVelocity), 1) + " deg/s (" +
+            percent(a0.peakVelocity, a1.peakVelocity) + " lower)\n";
+    text += "A peak acc.  " + formatFixed(units::radToDeg(a0.peakAcceleration), 0) + " -> " +
+            formatFixed(units::radToDeg(a1.peakAcceleration), 0) + " deg/s^2 (" +
+            percent(a0.peakAcceleration, a1.peakAcceleration) + " lower)\n";
+    text += "T1           " + formatFixed(result.constantFeed.time, 1) + " -> " +
+            formatFixed(outcome.constantFeed.time, 1) + " s (" +
+            percent(result.constantFeed.time, outcome.constantFeed.time) + " shorter)\n";
+    text += "checks       ball centres kept within " +
+            formatFixed(outcome.maxCentreDeviationMm * 1000.0, 2) +
+            " um after re-reading; channel clearance >= " +
+            formatFixed(units::radToDeg(outcome.minChannelClearanceRad), 3) + " deg\n";
+    return text;
+}
+
+} // namespace
+
 std::string formatSummary(const JobResult& result) {
     const analysis::AxisProfile& profile = result.original;
     auto number = [](double value, int decimals) { return formatFixed(value, decimals); };
@@ -106,6 +185,9 @@ std::string formatSummary(const JobResult& result) {
     text += "T1           " + number(result.constantFeed.time, 1) + " s at an achievable feed of " +
             number(units::perSecondToPerMinute(result.constantFeed.achievableFeed), 0) +
             " mm/min (bound by " + kinematics::axisName(result.constantFeed.bindingAxis) + ")\n";
+    if (result.rescheduled) {
+        text += rescheduledSummary(result);
+    }
     for (const std::string& warning : result.warnings) {
         text += "warning      " + warning + "\n";
     }

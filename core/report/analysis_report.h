@@ -3,7 +3,7 @@
 // per-CL-point axes.csv. Rotary values are written in degrees (files are for people and
 // shops); the unit is part of every key and column name.
 
-#include "core/analysis/axis_profile.h"
+#include "core/analysis/analysis.h"
 #include "core/toolpath/toolpath.h"
 
 #include <nlohmann/json.hpp>

@@ -1,0 +1,208 @@
+#include "core/job/job_file.h"
+
+#include "core/base/file_io.h"
+#include "core/base/number_io.h"
+#include "core/base/units.h"
+#include "core/job/parameter_schema.h"
+
+#include <nlohmann/json.hpp>
+
+namespace bladeaxis::job {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+constexpr const char* kSchema = "bladeaxis-job/1";
+
+int lineOfKey(std::string_view text, std::string_view key) {
+    const std::size_t at = text.find("\"" + std::string(key) + "\"");
+    if (at == std::string_view::npos) {
+        return 0;
+    }
+    return 1 +
+           static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
+
+class JobReader {
+  public:
+    JobReader(std::string_view text, const fs::path& path) : m_text(text), m_path(path) {}
+
+    Status read(const Json& root, JobSpec& spec) const;
+
+  private:
+    std::unexpected<Error> fail(std::string_view key, const std::string& what) const {
+        return makeError(ErrorCode::InvalidArgument, std::string(key) + ": " + what,
+                         {m_path.string(), lineOfKey(m_text, key), 0});
+    }
+    Result<fs::path> pathValue(const Json& root, const char* key) const;
+    Result<double> positiveNumber(const Json& root, const char* key) const;
+    Status parameters(const Json& object, JobSpec& spec) const;
+    Status analysisOptions(const Json& root, JobSpec& spec) const;
+
+    std::string_view m_text;
+    fs::path m_path;
+};
+
+Result<fs::path> JobReader::pathValue(const Json& root, const char* key) const {
+    const Json& value = root.at(key);
+    if (!value.is_string() || value.get<std::string>().empty()) {
+        return fail(key, "expected a file path as a string");
+    }
+    const fs::path path = value.get<std::string>();
+    return path.is_absolute() ? path : m_path.parent_path() / path;
+}
+
+Result<double> JobReader::positiveNumber(const Json& root, const char* key) const {
+    const Json& value = root.at(key);
+    if (!value.is_number() || !(value.get<double>() > 0.0)) {
+        return fail(key, "expected a positive number, got " + value.dump());
+    }
+    return value.get<double>();
+}
+
+Status JobReader::parameters(const Json& object, JobSpec& spec) const {
+    if (!object.is_object()) {
+        return fail("parameters", "expected an object of scheduling parameters");
+    }
+    for (const auto& [key, value] : object.items()) {
+        const ParameterInfo* info = findParameter(key);
+        if (info == nullptr) {
+            return fail(key, "unknown scheduling parameter (see docs/job-file.md)");
+        }
+        std::string text;
+        if (value.is_string()) {
+            text = value.get<std::string>();
+        } else if (value.is_boolean()) {
+            text = value.get<bool>() ? "true" : "false";
+        } else if (value.is_number()) {
+            text = formatShortest(value.get<double>());
+        } else {
+            return fail(key, "expected a number, a string or true/false");
+        }
+        if (auto status = info->set(spec.parameters, text); !status) {
+            return fail(key, status.error().message.substr(key.size() + 2));
+        }
+    }
+    return {};
+}
+
+Status JobReader::analysisOptions(const Json& root, JobSpec& spec) const {
+    if (root.contains("feed_reference")) {
+        const std::string value = root.at("feed_reference").is_string()
+                                      ? root.at("feed_reference").get<std::string>()
+                                      : "";
+        if (value != "tip" && value != "centre") {
+            return fail("feed_reference", "expected \"tip\" or \"centre\"");
+        }
+        spec.analysis.feedReference =
+            value == "tip" ? analysis::FeedReference::Tip : analysis::FeedReference::Centre;
+    }
+    if (root.contains("feed_mm_min")) {
+        auto feed = positiveNumber(root, "feed_mm_min");
+        if (!feed) {
+            return std::unexpected(feed.error());
+        }
+        spec.analysis.feedOverride = units::perMinuteToPerSecond(*feed);
+    }
+    return {};
+}
+
+Status JobReader::read(const Json& root, JobSpec& spec) const {
+    if (!root.is_object() || root.value("schema", "") != kSchema) {
+        return fail("schema", std::string("expected \"schema\": \"") + kSchema + "\"");
+    }
+    for (const auto& [key, target] :
+         {std::pair{"program", &spec.program}, std::pair{"machine", &spec.machineFile},
+          std::pair{"output_program", &spec.outputProgram},
+          std::pair{"output_dir", &spec.outputDir}}) {
+        if (root.contains(key)) {
+            auto path = pathValue(root, key);
+            if (!path) {
+                return std::unexpected(path.error());
+            }
+            *target = *path;
+        }
+    }
+    if (root.contains("tool_radius_mm")) {
+        auto radius = positiveNumber(root, "tool_radius_mm");
+        if (!radius) {
+            return std::unexpected(radius.error());
+        }
+        spec.toolRadius = *radius;
+    }
+    if (root.contains("preset")) {
+        auto preset = presetParameters(
+            root.at("preset").is_string() ? root.at("preset").get<std::string>() : "");
+        if (!preset) {
+            return fail("preset", "expected \"faithful\" or \"best\"");
+        }
+        spec.parameters = *preset;
+        spec.presetName = root.at("preset").get<std::string>();
+    }
+    if (root.contains("parameters")) {
+        if (auto status = parameters(root.at("parameters"), spec); !status) {
+            return status;
+        }
+    }
+    return analysisOptions(root, spec);
+}
+
+} // namespace
+
+Status parseJobJson(std::string_view text, const fs::path& path, JobSpec& spec) {
+    const Json root = Json::parse(text, nullptr, false);
+    if (root.is_discarded()) {
+        return makeError(ErrorCode::InvalidArgument, "invalid JSON in the job file",
+                         {path.string()});
+    }
+    return JobReader(text, path).read(root, spec);
+}
+
+Status readJobFile(const fs::path& path, JobSpec& spec) {
+    auto text = readTextFile(path);
+    if (!text) {
+        return std::unexpected(text.error());
+    }
+    return parseJobJson(*text, path, spec);
+}
+
+std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
+    Json json;
+    json["schema"] = kSchema;
+    auto relative = [&](const fs::path& path) {
+        return path.lexically_proximate(relativeTo).generic_string();
+    };
+    if (!spec.program.empty()) {
+        json["program"] = relative(spec.program);
+    }
+    if (!spec.machineFile.empty()) {
+        json["machine"] = relative(spec.machineFile);
+    }
+    if (spec.toolRadius) {
+        json["tool_radius_mm"] = *spec.toolRadius;
+    }
+    json["preset"] = spec.presetName;
+    Json parameters = Json::object();
+    for (const ParameterInfo& info : scheduleParameterSchema()) {
+        const std::string text = info.get(spec.parameters);
+        if (info.kind == ParameterInfo::Kind::Number || info.kind == ParameterInfo::Kind::Integer) {
+            parameters[info.key] = parseNumber(text).value_or(0.0);
+        } else if (info.kind == ParameterInfo::Kind::Flag) {
+            parameters[info.key] = text == "true";
+        } else {
+            parameters[info.key] = text;
+        }
+    }
+    json["parameters"] = parameters;
+    if (!spec.outputProgram.empty()) {
+        json["output_program"] = relative(spec.outputProgram);
+    }
+    if (!spec.outputDir.empty()) {
+        json["output_dir"] = relative(spec.outputDir);
+    }
+    return json.dump(2) + "\n";
+}
+
+} // namespace bladeaxis::job

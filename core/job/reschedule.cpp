@@ -1,0 +1,192 @@
+#include "core/job/reschedule.h"
+
+#include "core/base/number_io.h"
+#include "core/io/cl/apt.h"
+#include "core/io/nc/gcode.h"
+#include "core/kinematics/kinematics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bladeaxis::job {
+
+namespace {
+
+using toolpath::ClRecord;
+
+std::span<const ClRecord> passOf(const RescheduleInput& input) {
+    return std::span(input.program->path().records).subspan(input.passFirst, input.passCount);
+}
+
+Vec3 centreOf(const ClRecord& record, double radius) {
+    return record.tip + radius * record.axis.normalized();
+}
+
+scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
+    scheduling::ScheduleInput schedule;
+    schedule.toolRadius = input.toolRadius;
+    for (const ClRecord& record : passOf(input)) {
+        schedule.centres.push_back(centreOf(record, input.toolRadius));
+        schedule.axes.push_back(record.axis);
+    }
+    return schedule;
+}
+
+// IK of the new poses with A unwrapped from the original A of the first record, so the new
+// program starts where the old one did and A stays continuous.
+Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInput& input,
+                                                            std::span<const ClRecord> records) {
+    std::vector<kinematics::MachineAxes> axes;
+    axes.reserve(records.size());
+    double reference = input.originalAxes->front().a;
+    const auto pass = passOf(input);
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        auto value = kinematics::inverseKinematics(input.machine->chain,
+                                                   {records[i].tip, records[i].axis}, reference);
+        if (!value) {
+            Error error = value.error();
+            error.where = {input.program->path().sourceFile, pass[i].line, 0};
+            return std::unexpected(error);
+        }
+        axes.push_back(*value);
+        reference = value->a;
+    }
+    return axes;
+}
+
+Result<std::string> rewriteProgram(const RescheduleInput& input,
+                                   std::span<const ClRecord> passRecords,
+                                   std::span<const kinematics::MachineAxes> passAxes) {
+    const auto& all = input.program->path().records;
+    if (const auto* gcode = std::get_if<io::nc::GcodeProgram>(&input.program->document)) {
+        std::vector<kinematics::MachineAxes> axes;
+        axes.reserve(all.size());
+        for (const ClRecord& record : all) {
+            axes.push_back(record.axes.value_or(kinematics::MachineAxes{}));
+        }
+        std::copy(passAxes.begin(), passAxes.end(), axes.begin() + input.passFirst);
+        return io::nc::rewriteGcode(*gcode, axes, *input.machine);
+    }
+    const auto& apt = std::get<io::cl::AptProgram>(input.program->document);
+    std::vector<ClRecord> records = all;
+    std::copy(passRecords.begin(), passRecords.end(), records.begin() + input.passFirst);
+    return io::cl::rewriteApt(apt, records);
+}
+
+// Reads the written text back and measures how far its ball centres are from the input's.
+Result<double> verifyCentres(const RescheduleInput& input, const std::string& text) {
+    const toolpath::Toolpath& original = input.program->path();
+    auto reread = io::parseProgram(text, original.sourceFile + " (re-scheduled)",
+                                   input.program->format(), *input.machine);
+    if (!reread) {
+        Error error = reread.error();
+        error.code = ErrorCode::Internal;
+        error.message = "the re-scheduled program does not read back: " + error.message;
+        return std::unexpected(error);
+    }
+    const auto& records = reread->path().records;
+    if (records.size() != original.records.size()) {
+        return makeError(ErrorCode::Internal,
+                         "the re-scheduled program has " + std::to_string(records.size()) +
+                             " records, the input " + std::to_string(original.records.size()));
+    }
+    double deviation = 0.0;
+    for (std::size_t i = input.passFirst; i < input.passFirst + input.passCount; ++i) {
+        deviation = std::max(deviation, (centreOf(records[i], input.toolRadius) -
+                                         centreOf(original.records[i], input.toolRadius))
+                                            .norm());
+    }
+    return deviation;
+}
+
+RescheduleOutcome outcomeFrom(scheduling::ScheduleResult schedule, std::span<const ClRecord> pass) {
+    RescheduleOutcome outcome;
+    outcome.records.assign(pass.begin(), pass.end());
+    for (std::size_t i = 0; i < outcome.records.size(); ++i) {
+        outcome.records[i].tip = schedule.newTips[i];
+        outcome.records[i].axis = schedule.newAxes[i];
+        outcome.records[i].axes.reset();
+    }
+    outcome.minChannelClearanceRad = std::numeric_limits<double>::infinity();
+    for (const auto& layer : schedule.layers) {
+        const bool kept =
+            std::find(layer.flags.begin(), layer.flags.end(),
+                      scheduling::LayerStatus::MonotoneInfeasible) != layer.flags.end();
+        outcome.layersKeptOriginal += kept ? 1 : 0;
+        if (!kept) {
+            outcome.minChannelClearanceRad =
+                std::min(outcome.minChannelClearanceRad, layer.minClearance);
+        }
+    }
+    outcome.schedule = std::move(schedule);
+    return outcome;
+}
+
+Status checkOutcome(const RescheduleOutcome& outcome, const std::string& file) {
+    if (!outcome.schedule.check.passes()) {
+        return makeError(ErrorCode::CheckFailed,
+                         "reconstruction check failed (ball centre error " +
+                             formatShortest(outcome.schedule.check.maxCentreErrorMm) + " mm)",
+                         {file});
+    }
+    if (outcome.minChannelClearanceRad < -1e-9) {
+        return makeError(ErrorCode::CheckFailed,
+                         "the new tool orientation leaves the feasible channel by " +
+                             formatShortest(-outcome.minChannelClearanceRad) + " rad",
+                         {file});
+    }
+    if (outcome.maxCentreDeviationMm > kCentreDeviationLimitMm) {
+        return makeError(ErrorCode::CheckFailed,
+                         "ball centres of the written program deviate by " +
+                             formatFixed(outcome.maxCentreDeviationMm, 6) + " mm (limit " +
+                             formatShortest(kCentreDeviationLimitMm) + " mm)",
+                         {file});
+    }
+    return {};
+}
+
+} // namespace
+
+Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel) {
+    if (!(input.toolRadius > 0.0)) {
+        return makeError(
+            ErrorCode::InvalidArgument,
+            "the ball radius is not known: give --tool-radius (G-code does not state it)");
+    }
+    auto schedule = scheduling::schedule(scheduleInputOf(input), input.parameters, &cancel);
+    if (!schedule) {
+        Error error = schedule.error();
+        if (error.where.empty()) {
+            error.where = {input.program->path().sourceFile};
+        }
+        return std::unexpected(error);
+    }
+    RescheduleOutcome outcome = outcomeFrom(std::move(*schedule), passOf(input));
+    auto axes = newMachineAxes(input, outcome.records);
+    if (!axes) {
+        return std::unexpected(axes.error());
+    }
+    outcome.axes = std::move(*axes);
+    auto text = rewriteProgram(input, outcome.records, outcome.axes);
+    if (!text) {
+        return std::unexpected(text.error());
+    }
+    outcome.programText = std::move(*text);
+    auto deviation = verifyCentres(input, outcome.programText);
+    if (!deviation) {
+        return std::unexpected(deviation.error());
+    }
+    outcome.maxCentreDeviationMm = *deviation;
+    if (auto status = checkOutcome(outcome, input.program->path().sourceFile); !status) {
+        return std::unexpected(status.error());
+    }
+    auto profile = analysis::analyseAxisMotion(outcome.axes, outcome.records, input.analysis);
+    if (!profile) {
+        return std::unexpected(profile.error());
+    }
+    outcome.profile = std::move(*profile);
+    outcome.constantFeed = analysis::constantFeedTime(outcome.profile, *input.machine, false);
+    return outcome;
+}
+
+} // namespace bladeaxis::job

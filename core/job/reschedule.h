@@ -1,0 +1,51 @@
+#pragma once
+// The re-scheduling stage of a job: cutter centres of the cutting pass -> S-theta schedule ->
+// new tips and axes -> machine axes (A continuous) -> rewritten program -> verification by
+// re-reading it -> axis analysis of the new motion.
+
+#include "core/analysis/axis_profile.h"
+#include "core/analysis/constant_feed.h"
+#include "core/base/error.h"
+#include "core/base/progress.h"
+#include "core/io/program.h"
+#include "core/scheduling/schedule.h"
+
+#include <string>
+#include <vector>
+
+namespace bladeaxis::job {
+
+struct CuttingPass;
+
+struct RescheduleOutcome {
+    scheduling::ScheduleResult schedule;
+    std::vector<toolpath::ClRecord> records;   // the pass with new tips and axes
+    std::vector<kinematics::MachineAxes> axes; // per pass record, A continuous
+    analysis::AxisProfile profile;             // axis motion of the new program
+    analysis::ConstantFeedTime constantFeed;
+    std::string programText; // the whole rewritten program
+    // Verification (spec §6.5 and the acceptance): ball centres of the re-read output
+    // against the input's, and the smallest distance of the new orientation to the raw channel.
+    double maxCentreDeviationMm = 0.0;
+    double minChannelClearanceRad = 0.0;
+    std::size_t layersKeptOriginal = 0; // MonotoneInfeasible layers
+};
+
+struct RescheduleInput {
+    const io::LoadedProgram* program = nullptr;
+    const kinematics::MachineModel* machine = nullptr;
+    std::size_t passFirst = 0;
+    std::size_t passCount = 0;
+    const std::vector<kinematics::MachineAxes>* originalAxes = nullptr; // per pass record
+    double toolRadius = 0.0;
+    scheduling::ScheduleParameters parameters;
+    analysis::AxisProfileOptions analysis;
+};
+
+// Largest ball-centre deviation accepted when the written program is read back: the program's
+// own number precision (4 decimals) moves centres by well under this.
+constexpr double kCentreDeviationLimitMm = 5e-3;
+
+Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel);
+
+} // namespace bladeaxis::job

@@ -1,0 +1,136 @@
+#include "core/report/schedule_report.h"
+
+#include "core/analysis/reversals.h"
+#include "core/base/number_io.h"
+#include "core/base/units.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bladeaxis::report {
+
+namespace {
+
+using kinematics::AxisId;
+using units::radToDeg;
+
+void appendCell(std::string& row, double value) {
+    row += ',';
+    row += formatShortest(value);
+}
+
+struct Peaks {
+    double velocity = 0.0;
+    double acceleration = 0.0;
+};
+
+// Peak |A'| and |A''| over the samples of a profile whose records fall in [first, last].
+Peaks aPeaksWithin(const analysis::AxisProfile& profile, std::size_t first, std::size_t last) {
+    Peaks peaks;
+    const analysis::AxisSeries& a = profile.axis(AxisId::A);
+    const auto begin =
+        std::lower_bound(profile.sampleRecord.begin(), profile.sampleRecord.end(), first);
+    for (auto it = begin; it != profile.sampleRecord.end() && *it <= last; ++it) {
+        const auto i = static_cast<std::size_t>(it - profile.sampleRecord.begin());
+        peaks.velocity = std::max(peaks.velocity, std::abs(a.velocity[i]));
+        peaks.acceleration = std::max(peaks.acceleration, std::abs(a.acceleration[i]));
+    }
+    return peaks;
+}
+
+int reversalsWithin(std::span<const kinematics::MachineAxes> axes, std::size_t first,
+                    std::size_t last) {
+    std::vector<double> a;
+    for (std::size_t i = first; i <= last && i < axes.size(); ++i) {
+        a.push_back(axes[i].a);
+    }
+    return analysis::auditReversals(a).count;
+}
+
+nlohmann::json statusesJson(const scheduling::LayerResult& layer) {
+    nlohmann::json flags = nlohmann::json::array();
+    for (scheduling::LayerStatus status : layer.flags) {
+        flags.push_back(scheduling::toString(status));
+    }
+    if (flags.empty()) {
+        flags.push_back(scheduling::toString(scheduling::LayerStatus::Ok));
+    }
+    return flags;
+}
+
+double reduction(double before, double after) {
+    return before > 0.0 ? (before - after) / before : 0.0;
+}
+
+} // namespace
+
+std::string layersCsv(const scheduling::ScheduleResult& schedule) {
+    std::string csv =
+        "record,layer,s_mm,theta_original_deg,theta_min_deg,theta_max_deg,lo_deg,hi_deg,"
+        "theta_deg,dtheta_deg_mm,ddtheta_deg_mm2\n";
+    std::string row;
+    for (std::size_t k = 0; k < schedule.layers.size(); ++k) {
+        const scheduling::LayerResult& layer = schedule.layers[k];
+        // The end sample is shared with the next layer; it is written once, by the next layer.
+        const bool lastLayer = k + 1 == schedule.layers.size();
+        const std::size_t count = layer.s.size() - (lastLayer ? 0 : 1);
+        for (std::size_t i = 0; i < count; ++i) {
+            row = std::to_string(layer.inputIndex[i]) + ',' + std::to_string(k);
+            appendCell(row, layer.s[i]);
+            for (const auto* series :
+                 {&layer.thetaOriginal, &layer.thetaMin, &layer.thetaMax, &layer.lo, &layer.hi,
+                  &layer.theta, &layer.dTheta, &layer.ddTheta}) {
+                appendCell(row, radToDeg((*series)[i]));
+            }
+            csv += row + '\n';
+        }
+    }
+    return csv;
+}
+
+nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const BeforeAfter& data) {
+    nlohmann::json layers = nlohmann::json::array();
+    for (std::size_t k = 0; k < schedule.layers.size(); ++k) {
+        const scheduling::LayerResult& layer = schedule.layers[k];
+        const Peaks before = aPeaksWithin(*data.before, layer.first, layer.last);
+        const Peaks after = aPeaksWithin(*data.after, layer.first, layer.last);
+        nlohmann::json json;
+        json["index"] = k;
+        json["status"] = statusesJson(layer);
+        json["first_line"] =
+            layer.first < data.sourceLines.size() ? data.sourceLines[layer.first] : 0;
+        json["last_line"] = layer.last < data.sourceLines.size() ? data.sourceLines[layer.last] : 0;
+        json["samples"] = layer.s.size();
+        json["length_mm"] = layer.s.empty() ? 0.0 : layer.s.back();
+        json["a_reversals_before"] = reversalsWithin(data.axesBefore, layer.first, layer.last);
+        json["a_reversals_after"] = reversalsWithin(data.axesAfter, layer.first, layer.last);
+        json["peak_a_velocity_deg_s_before"] = radToDeg(before.velocity);
+        json["peak_a_velocity_deg_s_after"] = radToDeg(after.velocity);
+        json["peak_a_acceleration_deg_s2_before"] = radToDeg(before.acceleration);
+        json["peak_a_acceleration_deg_s2_after"] = radToDeg(after.acceleration);
+        json["min_channel_clearance_deg"] = radToDeg(layer.minClearance);
+        json["lead_fraction"] = layer.leadFraction;
+        json["key_points"] = layer.keyPoints.size();
+        json["corners"] = layer.corners.size();
+        json["peak_theta_dd_deg_mm2"] = radToDeg(layer.peakSecondDerivative);
+        json["timing"] = {{"seconds", layer.seconds}};
+        layers.push_back(json);
+    }
+    return layers;
+}
+
+nlohmann::json reductionsJson(const analysis::AxisProfile& before,
+                              const analysis::AxisProfile& after) {
+    nlohmann::json json;
+    for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z, AxisId::A}) {
+        const auto& b = before.axis(axis);
+        const auto& a = after.axis(axis);
+        json[kinematics::axisName(axis)] = {
+            {"peak_velocity", reduction(b.peakVelocity, a.peakVelocity)},
+            {"peak_acceleration", reduction(b.peakAcceleration, a.peakAcceleration)},
+        };
+    }
+    return json;
+}
+
+} // namespace bladeaxis::report

@@ -1,0 +1,36 @@
+#pragma once
+// Reports of a re-scheduling: layers.csv (one row per CL point of the cutting pass) and the
+// per-layer and overall before/after figures of report.json. Angles are written in degrees.
+
+#include "core/analysis/axis_profile.h"
+#include "core/kinematics/machine_model.h"
+#include "core/scheduling/schedule.h"
+
+#include <nlohmann/json.hpp>
+
+#include <span>
+#include <string>
+
+namespace bladeaxis::report {
+
+// Columns: record, layer, s_mm, theta_original_deg, theta_min_deg, theta_max_deg, lo_deg,
+// hi_deg, theta_deg, dtheta_deg_mm, ddtheta_deg_mm2 (theta relative to the layer's start).
+std::string layersCsv(const scheduling::ScheduleResult& schedule);
+
+struct BeforeAfter {
+    const analysis::AxisProfile* before = nullptr;
+    const analysis::AxisProfile* after = nullptr;
+    std::span<const kinematics::MachineAxes> axesBefore; // per pass record
+    std::span<const kinematics::MachineAxes> axesAfter;
+    std::span<const int> sourceLines; // per pass record
+};
+
+// One object per layer: statuses, source lines, reversals and peak A velocity/acceleration
+// before and after, channel clearance, lead fraction, corners, peak theta'', compute time.
+nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const BeforeAfter& data);
+
+// Relative reductions (before - after) / before of the headline figures.
+nlohmann::json reductionsJson(const analysis::AxisProfile& before,
+                              const analysis::AxisProfile& after);
+
+} // namespace bladeaxis::report

@@ -1,0 +1,100 @@
+#include "core/job/job_file.h"
+#include "core/job/parameter_schema.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+namespace bladeaxis::job {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(ParameterSchema, KeysAreUniqueAndEveryValueRoundTrips) {
+    std::set<std::string> keys;
+    for (const ParameterInfo& info : scheduleParameterSchema()) {
+        EXPECT_TRUE(keys.insert(info.key).second) << "duplicate key " << info.key;
+        for (const auto& preset : {scheduling::bestPreset(), scheduling::faithfulPreset()}) {
+            scheduling::ScheduleParameters copy = scheduling::bestPreset();
+            const std::string text = info.get(preset);
+            ASSERT_TRUE(info.set(copy, text).has_value()) << info.key << " = " << text;
+            EXPECT_EQ(info.get(copy), text) << info.key;
+        }
+    }
+    EXPECT_GE(keys.size(), 25u);
+}
+
+TEST(ParameterSchema, MarginIsGivenInDegreesAndStoredInRadians) {
+    scheduling::ScheduleParameters parameters;
+    ASSERT_TRUE(findParameter("margin_deg")->set(parameters, "6"));
+    EXPECT_NEAR(parameters.marginRad, 6.0 * 3.141592653589793 / 180.0, 1e-15);
+    EXPECT_EQ(findParameter("margin_deg")->get(parameters), "6");
+}
+
+TEST(ParameterSchema, ValuesOutsideTheirDomainAreRejectedWithTheKey) {
+    scheduling::ScheduleParameters parameters;
+    const auto margin = findParameter("margin_deg")->set(parameters, "-1");
+    ASSERT_FALSE(margin.has_value());
+    EXPECT_NE(margin.error().message.find("margin_deg: expected a number from 0 to 45, got '-1'"),
+              std::string::npos);
+    EXPECT_FALSE(findParameter("eps_rule")->set(parameters, "fast").has_value());
+    EXPECT_FALSE(findParameter("threads")->set(parameters, "1.5").has_value());
+    EXPECT_FALSE(findParameter("despike")->set(parameters, "yes").has_value());
+    EXPECT_FALSE(findParameter("lead_fraction")->set(parameters, "nan").has_value());
+}
+
+TEST(ParameterSchema, PresetsDifferInTheirEpsilonRule) {
+    EXPECT_EQ(findParameter("eps_rule")->get(*presetParameters("faithful")), "paper");
+    EXPECT_EQ(findParameter("eps_rule")->get(*presetParameters("best")), "exact");
+    EXPECT_FALSE(presetParameters("fastest").has_value());
+}
+
+TEST(JobFile, WrittenJobReadsBackToTheSameSpec) {
+    const fs::path dir = fs::temp_directory_path() / "bladeaxis_job_file";
+    JobSpec spec;
+    spec.program = dir / "blade.nc";
+    spec.machineFile = dir / "machines" / "m.json";
+    spec.toolRadius = 6.0;
+    spec.parameters = scheduling::faithfulPreset();
+    spec.presetName = "faithful";
+    ASSERT_TRUE(findParameter("margin_deg")->set(spec.parameters, "4.5"));
+    spec.outputProgram = dir / "out.nc";
+    const std::string text = jobJsonText(spec, dir);
+    JobSpec back;
+    ASSERT_TRUE(parseJobJson(text, dir / "job.json", back).has_value()) << text;
+    EXPECT_EQ(back.program.lexically_normal(), spec.program.lexically_normal());
+    EXPECT_EQ(back.machineFile.lexically_normal(), spec.machineFile.lexically_normal());
+    EXPECT_EQ(back.outputProgram.lexically_normal(), spec.outputProgram.lexically_normal());
+    EXPECT_EQ(back.toolRadius, 6.0);
+    EXPECT_EQ(back.presetName, "faithful");
+    for (const ParameterInfo& info : scheduleParameterSchema()) {
+        EXPECT_EQ(info.get(back.parameters), info.get(spec.parameters)) << info.key;
+    }
+}
+
+TEST(JobFile, UnknownParameterNamesTheKeyAndLine) {
+    const std::string text =
+        "{\n \"schema\": \"bladeaxis-job/1\",\n \"parameters\": {\n  \"margn_deg\": 3\n }\n}";
+    JobSpec spec;
+    const auto status = parseJobJson(text, "job.json", spec);
+    ASSERT_FALSE(status.has_value());
+    EXPECT_EQ(status.error().toString(), "job.json:4: invalid argument: margn_deg: unknown "
+                                         "scheduling parameter (see docs/job-file.md)");
+}
+
+TEST(JobFile, BadValuesAreRejected) {
+    JobSpec spec;
+    EXPECT_FALSE(parseJobJson("{}", "j.json", spec).has_value());
+    EXPECT_FALSE(
+        parseJobJson("{\"schema\": \"bladeaxis-job/1\", \"tool_radius_mm\": -2}", "j.json", spec));
+    EXPECT_FALSE(
+        parseJobJson("{\"schema\": \"bladeaxis-job/1\", \"preset\": \"quick\"}", "j.json", spec));
+    EXPECT_FALSE(
+        parseJobJson("{\"schema\": \"bladeaxis-job/1\", \"parameters\": {\"margin_deg\": \"x\"}}",
+                     "j.json", spec));
+    EXPECT_FALSE(parseJobJson("not json", "j.json", spec).has_value());
+}
+
+} // namespace
+} // namespace bladeaxis::job

@@ -1,0 +1,102 @@
+#include "core/io/nc/detail/g_codes.h"
+
+#include <array>
+#include <cmath>
+
+namespace bladeaxis::io::nc::detail {
+
+namespace {
+
+// Modal or one-shot codes that change nothing a four-axis tip/axis reading depends on.
+constexpr std::array<int, 31> kNoOpCodes{50,  51,  80,  90,  150, 170, 180, 190, 400, 430, 434,
+                                         435, 490, 500, 501, 540, 541, 550, 560, 570, 580, 590,
+                                         610, 611, 620, 640, 670, 690, 800, 980, 990};
+
+struct Rejected {
+    int code;
+    const char* reason;
+};
+
+constexpr std::array<Rejected, 13> kRejectedCodes{{
+    {20, "circular interpolation G2/G3 is not supported in four-axis programs: post the program "
+         "with linear moves"},
+    {30, "circular interpolation G2/G3 is not supported in four-axis programs: post the program "
+         "with linear moves"},
+    {71, "cylindrical interpolation G7.1 is not supported: post the program with linear moves"},
+    {100, "data setting G10 is not supported: set offsets on the machine, not in the program"},
+    {160, "polar coordinates G16 are not supported: post Cartesian X Y Z"},
+    {410, "cutter radius compensation G41/G42 is not supported: post tool tip positions"},
+    {420, "cutter radius compensation G41/G42 is not supported: post tool tip positions"},
+    {510, "scaling G51 is not supported: post unscaled positions"},
+    {520, "local coordinate system G52 is not supported: post positions in one work offset"},
+    {680, "coordinate rotation G68 is not supported: post unrotated positions"},
+    {920, "coordinate system setting G92 is not supported: use a work offset G54..G59"},
+    {950, "feed per revolution G95 is not supported: expected G94 (mm/min) or G93 (inverse time)"},
+    {1120, "polar coordinate interpolation G112 is not supported"},
+}};
+
+} // namespace
+
+std::optional<int> gCodeTimesTen(double value) {
+    const double scaled = value * 10.0;
+    const double rounded = std::round(scaled);
+    if (value < 0.0 || value >= 10000.0 || std::abs(scaled - rounded) > 1e-6) {
+        return std::nullopt;
+    }
+    return static_cast<int>(rounded);
+}
+
+GCodeInfo classifyGCode(int code) {
+    switch (code) {
+    case 0:
+        return {GKind::Rapid};
+    case 10:
+        return {GKind::Linear};
+    case 40:
+        return {GKind::Dwell};
+    case 280:
+    case 300:
+        return {GKind::ReferenceReturn};
+    case 530:
+        return {GKind::MachineCoordinates};
+    case 200:
+        return {GKind::Inch};
+    case 210:
+        return {GKind::Metric};
+    case 900:
+        return {GKind::Absolute};
+    case 910:
+        return {GKind::Incremental};
+    case 930:
+        return {GKind::InverseTime};
+    case 940:
+        return {GKind::PerMinute};
+    default:
+        break;
+    }
+    for (int noOp : kNoOpCodes) {
+        if (noOp == code) {
+            return {GKind::NoOp};
+        }
+    }
+    for (const Rejected& rejected : kRejectedCodes) {
+        if (rejected.code == code) {
+            return {GKind::Unsupported, rejected.reason};
+        }
+    }
+    if (code >= 810 && code <= 890) {
+        return {GKind::Unsupported, "canned cycles G81..G89 are not supported in four-axis "
+                                    "programs: post the program with linear moves"};
+    }
+    return {GKind::Unsupported, nullptr};
+}
+
+std::string gCodeName(int code) {
+    std::string name = "G" + std::to_string(code / 10);
+    if (code % 10 != 0) {
+        name += "." + std::to_string(code % 10);
+    }
+    return name;
+}
+
+} // namespace bladeaxis::io::nc::detail

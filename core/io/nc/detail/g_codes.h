@@ -1,0 +1,39 @@
+#pragma once
+// What each G code means to a four-axis reader. Codes are held as ten times their number, so
+// that G1 = 10, G43.4 = 434 and G54.1 = 541.
+
+#include <optional>
+#include <string>
+
+namespace bladeaxis::io::nc::detail {
+
+enum class GKind {
+    Rapid,              // G0
+    Linear,             // G1
+    Dwell,              // G4: its X/P word is a time
+    ReferenceReturn,    // G28/G30: axes named become unknown
+    MachineCoordinates, // G53: axes named are machine coordinates, unknown in W
+    Inch,               // G20
+    Metric,             // G21
+    Absolute,           // G90
+    Incremental,        // G91
+    InverseTime,        // G93
+    PerMinute,          // G94
+    NoOp,               // plane, compensation cancel, work offsets, look-ahead...: no effect here
+    Unsupported,        // rejected with a reason
+};
+
+struct GCodeInfo {
+    GKind kind = GKind::Unsupported;
+    const char* reason = nullptr; // for Unsupported: why, and what to do instead
+};
+
+// nullopt when the value is not a G number at all (negative, or more than one decimal).
+std::optional<int> gCodeTimesTen(double value);
+
+GCodeInfo classifyGCode(int codeTimesTen);
+
+// "G43.4" for 434.
+std::string gCodeName(int codeTimesTen);
+
+} // namespace bladeaxis::io::nc::detail

@@ -1,0 +1,313 @@
+#include "core/io/nc/detail/modal_interpreter.h"
+
+#include "core/base/number_io.h"
+#include "core/base/units.h"
+#include "core/io/nc/detail/number_style.h"
+#include "core/kinematics/kinematics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bladeaxis::io::nc::detail {
+
+namespace {
+
+constexpr std::array<char, 5> kAxisLetters{'X', 'Y', 'Z', 'A', 'B'};
+constexpr std::uint8_t kBBit = 1u << 4;
+constexpr std::uint8_t kRequiredAxes = 0x0F; // X Y Z A; B may default to 0
+// Letters that have no meaning in a four-axis Fanuc program (arc centres, extra axes...).
+constexpr std::string_view kUnsupportedLetters = "EIJKUVW";
+
+bool isRotaryIndex(std::size_t axis) {
+    return axis >= 3;
+}
+
+} // namespace
+
+bool ModalInterpreter::fail(const Context& at, std::uint32_t offset, std::string message) {
+    m_errors.add(at.lineNumber, static_cast<int>(offset) + 1, std::move(message));
+    return false;
+}
+
+void ModalInterpreter::apply(const ScannedBlock& block, std::string_view line,
+                             std::uint32_t lineBegin, int lineNumber) {
+    if (!block.hasWords) {
+        return;
+    }
+    const Context at{block, line, lineBegin, lineNumber};
+    BlockCodes codes;
+    if (!readGCodes(at, codes) || !checkLetters(at) || !applyFeedWord(at) || !applyCWord(at)) {
+        return;
+    }
+    std::uint8_t axisWords = 0;
+    for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
+        if (block.has(kAxisLetters[axis])) {
+            axisWords = static_cast<std::uint8_t>(axisWords | (1u << axis));
+        }
+    }
+    if (codes.motion) {
+        m_motion = codes.motion;
+    }
+    if (codes.oneShot) {
+        applyOneShot(at, *codes.oneShot, axisWords);
+        return;
+    }
+    if (axisWords == 0) {
+        return;
+    }
+    if (!m_motion) {
+        fail(at, firstAxisOffset(at, axisWords), "expected G0 or G1 before the first axis move");
+        return;
+    }
+    if (!applyAxisWords(at, axisWords)) {
+        return;
+    }
+    if (!allAxesKnown()) {
+        if (m_motion == GKind::Linear) {
+            fail(at, firstAxisOffset(at, axisWords),
+                 "expected X, Y, Z and A to be programmed before the first feed move");
+            return;
+        }
+        m_outside = static_cast<std::uint8_t>(m_outside | axisWords);
+        return;
+    }
+    if (m_motion == GKind::Linear && !checkFeedAvailable(at)) {
+        return;
+    }
+    addRecord(at, axisWords);
+}
+
+bool ModalInterpreter::readGCodes(const Context& at, BlockCodes& codes) {
+    for (int i = 0; i < at.block.gCount; ++i) {
+        if (!applyGCode(at, at.block.gCodes[static_cast<std::size_t>(i)], codes)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool ModalInterpreter::applyGCode(const Context& at, const WordSpan& word, BlockCodes& codes) {
+    const std::optional<int> code = gCodeTimesTen(word.value);
+    if (!code) {
+        return fail(at, word.valueBegin,
+                    "expected a G code number, found 'G" + std::string(word.text(at.line)) + "'");
+    }
+    const GCodeInfo info = classifyGCode(*code);
+    switch (info.kind) {
+    case GKind::Rapid:
+    case GKind::Linear:
+        if (codes.motion && *codes.motion != info.kind) {
+            return fail(at, word.letter, "two motion codes (G0 and G1) in one block");
+        }
+        codes.motion = info.kind;
+        return true;
+    case GKind::Dwell:
+    case GKind::ReferenceReturn:
+    case GKind::MachineCoordinates:
+        codes.oneShot = info.kind;
+        return true;
+    case GKind::Inch:
+    case GKind::Metric:
+        m_inch = info.kind == GKind::Inch;
+        return true;
+    case GKind::Absolute:
+    case GKind::Incremental:
+        m_incremental = info.kind == GKind::Incremental;
+        return true;
+    case GKind::InverseTime:
+    case GKind::PerMinute:
+        m_inverseTime = info.kind == GKind::InverseTime;
+        return true;
+    case GKind::NoOp:
+        return true;
+    case GKind::Unsupported:
+        break;
+    }
+    const std::string name = gCodeName(*code);
+    return fail(at, word.letter,
+                info.reason != nullptr
+                    ? std::string(info.reason)
+                    : "unsupported G code " + name + ": expected G0, G1 and modal settings only");
+}
+
+bool ModalInterpreter::checkLetters(const Context& at) {
+    for (char letter : kUnsupportedLetters) {
+        if (at.block.has(letter)) {
+            return fail(at, at.block.word(letter).letter,
+                        std::string("unsupported word '") + letter +
+                            "': expected G, X, Y, Z, A, B, C, F, N, M, S, T, D, H, O, P, Q, R "
+                            "or L words");
+        }
+    }
+    return true;
+}
+
+bool ModalInterpreter::applyFeedWord(const Context& at) {
+    m_blockInverseTime.reset();
+    if (!at.block.has('F')) {
+        return true;
+    }
+    const WordSpan& word = at.block.word('F');
+    if (!(word.value > 0.0)) {
+        return fail(at, word.valueBegin,
+                    "expected a positive feed, found 'F" + std::string(word.text(at.line)) + "'");
+    }
+    if (m_inverseTime) {
+        m_blockInverseTime = word.value;
+    } else {
+        m_feedPerMinuteMm = m_inch ? units::inchToMm(word.value) : word.value;
+    }
+    return true;
+}
+
+bool ModalInterpreter::applyCWord(const Context& at) {
+    if (!at.block.has('C')) {
+        return true;
+    }
+    const WordSpan& word = at.block.word('C');
+    const double c = m_incremental ? m_c.value_or(0.0) + word.value : word.value;
+    if (m_c && *m_c != c) {
+        return fail(at, word.letter,
+                    "C changes from " + formatTrimmed(*m_c, 6) + " to " + formatTrimmed(c, 6) +
+                        ": expected a constant C (four-axis programs do not move C)");
+    }
+    m_c = c;
+    return true;
+}
+
+void ModalInterpreter::applyOneShot(const Context& at, GKind kind, std::uint8_t axisWords) {
+    if (kind == GKind::Dwell) {
+        if ((axisWords & ~1u) != 0) {
+            fail(at, firstAxisOffset(at, static_cast<std::uint8_t>(axisWords & ~1u)),
+                 "expected only X or P (the dwell time) in a G4 block");
+        }
+        return;
+    }
+    // G28/G30 go to a reference point, G53 to machine coordinates: the named axes end up at
+    // positions this reader cannot know in the workpiece frame, so they must be programmed again.
+    m_known = static_cast<std::uint8_t>(m_known & ~axisWords);
+    if (axisWords & kBBit) {
+        m_bProgrammed = true;
+    }
+}
+
+bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axisWords) {
+    for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
+        const std::uint8_t bit = static_cast<std::uint8_t>(1u << axis);
+        if (!(axisWords & bit)) {
+            continue;
+        }
+        const WordSpan& word = at.block.word(kAxisLetters[axis]);
+        noteAxisWord(m_program.axisStyles[axis], word.text(at.line));
+        double value = word.value;
+        if (isRotaryIndex(axis)) {
+            value = units::degToRad(value);
+        } else if (m_inch) {
+            value = units::inchToMm(value);
+        }
+        if (m_incremental) {
+            if (!(m_known & bit)) {
+                const std::string name(1, kAxisLetters[axis]);
+                return fail(at, word.letter,
+                            "incremental (G91) " + name + " move before any absolute " + name +
+                                " position: expected " + name + " to be programmed in G90 first");
+            }
+            value += m_position[axis];
+        }
+        m_position[axis] = value;
+        m_known = static_cast<std::uint8_t>(m_known | bit);
+        if (bit == kBBit) {
+            m_bProgrammed = true;
+        }
+    }
+    return true;
+}
+
+bool ModalInterpreter::allAxesKnown() const {
+    if ((m_known & kRequiredAxes) != kRequiredAxes) {
+        return false;
+    }
+    return (m_known & kBBit) || !m_bProgrammed;
+}
+
+bool ModalInterpreter::checkFeedAvailable(const Context& at) {
+    if (m_inverseTime && !m_blockInverseTime) {
+        return fail(at, 0, "expected an F word in every inverse-time (G93) feed block");
+    }
+    if (!m_inverseTime && !m_feedPerMinuteMm) {
+        return fail(at, 0, "expected an F word before the first feed move");
+    }
+    return true;
+}
+
+std::uint32_t ModalInterpreter::firstAxisOffset(const Context& at, std::uint8_t axisWords) const {
+    std::uint32_t first = kNoOffset;
+    for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
+        if (axisWords & (1u << axis)) {
+            first = std::min(first, at.block.word(kAxisLetters[axis]).letter);
+        }
+    }
+    return first == kNoOffset ? 0 : first;
+}
+
+void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
+    RecordSource source;
+    source.lineBegin = at.lineBegin;
+    for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
+        if (!(axisWords & (1u << axis))) {
+            continue;
+        }
+        const WordSpan& word = at.block.word(kAxisLetters[axis]);
+        if (word.valueBegin >= kNoWord) {
+            fail(at, word.valueBegin,
+                 "block too long: expected axis words within 65534 characters");
+            return;
+        }
+        source.wordBegin[axis] = static_cast<std::uint16_t>(word.valueBegin);
+        source.wordLength[axis] = static_cast<std::uint8_t>(word.valueEnd - word.valueBegin);
+    }
+    source.flags =
+        static_cast<std::uint8_t>((m_incremental ? kIncremental : 0) | (m_inch ? kInch : 0));
+    source.setOutside = m_outside;
+    m_outside = 0;
+    if (!(m_known & kBBit) && !m_warnedDefaultB) {
+        m_warnedDefaultB = true;
+        m_program.path.warnings.push_back(
+            SourceLocation{m_errors.fileName(), at.lineNumber, 0}.toString() +
+            ": B is not programmed before the first move: B = 0 assumed");
+    }
+    kinematics::MachineAxes axes;
+    axes.x = m_position[0];
+    axes.y = m_position[1];
+    axes.z = m_position[2];
+    axes.a = m_position[3];
+    axes.b = (m_known & kBBit) ? m_position[4] : 0.0;
+    const kinematics::ToolPose pose = kinematics::forwardKinematics(m_machine.chain, axes);
+
+    toolpath::ClRecord record;
+    record.tip = pose.tip;
+    record.axis = pose.axis;
+    record.axes = axes;
+    record.motion =
+        m_motion == GKind::Linear ? toolpath::MotionKind::Feed : toolpath::MotionKind::Rapid;
+    record.feed = record.motion == toolpath::MotionKind::Feed ? feedOfRecord(pose.tip) : 0.0;
+    record.line = at.lineNumber;
+    m_lastTip = pose.tip;
+    m_program.path.records.push_back(record);
+    m_program.sources.push_back(source);
+}
+
+// Tip speed in mm/s. G94: F is mm/min. G93: F is 1/min, the block lasts 1/F min, so the tip
+// speed is the tip chord over that time (0, unknown, for a first block without a start point).
+double ModalInterpreter::feedOfRecord(const Vec3& tip) const {
+    if (!m_inverseTime) {
+        return units::perMinuteToPerSecond(*m_feedPerMinuteMm);
+    }
+    if (!m_lastTip) {
+        return 0.0;
+    }
+    const double chord = (tip - *m_lastTip).norm();
+    return units::perMinuteToPerSecond(chord * *m_blockInverseTime);
+}
+
+} // namespace bladeaxis::io::nc::detail

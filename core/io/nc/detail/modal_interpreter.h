@@ -1,0 +1,76 @@
+#pragma once
+// The meaning of G-code blocks: modal state (motion, units, distance and feed modes, the
+// position of every axis) and the CL records it produces. One instance reads one program.
+
+#include "core/geometry/vec.h"
+#include "core/io/nc/detail/block_scanner.h"
+#include "core/io/nc/detail/error_list.h"
+#include "core/io/nc/detail/g_codes.h"
+#include "core/io/nc/gcode_program.h"
+#include "core/kinematics/machine_model.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace bladeaxis::io::nc::detail {
+
+class ModalInterpreter {
+  public:
+    ModalInterpreter(GcodeProgram& program, const kinematics::MachineModel& machine,
+                     ErrorList& errors)
+        : m_program(program), m_machine(machine), m_errors(errors) {}
+
+    // Interprets one scanned block. `line` is its text, starting at `lineBegin` in the program.
+    void apply(const ScannedBlock& block, std::string_view line, std::uint32_t lineBegin,
+               int lineNumber);
+
+  private:
+    // The non-modal and motion codes of one block.
+    struct BlockCodes {
+        std::optional<GKind> motion;  // G0 / G1 in this block
+        std::optional<GKind> oneShot; // G4 / G28 / G30 / G53 in this block
+    };
+    // The block being interpreted, for error locations.
+    struct Context {
+        const ScannedBlock& block;
+        std::string_view line;
+        std::uint32_t lineBegin;
+        int lineNumber;
+    };
+
+    bool fail(const Context& at, std::uint32_t offset, std::string message);
+    bool readGCodes(const Context& at, BlockCodes& codes);
+    bool applyGCode(const Context& at, const WordSpan& word, BlockCodes& codes);
+    bool checkLetters(const Context& at);
+    bool applyFeedWord(const Context& at);
+    bool applyCWord(const Context& at);
+    void applyOneShot(const Context& at, GKind kind, std::uint8_t axisWords);
+    bool applyAxisWords(const Context& at, std::uint8_t axisWords);
+    bool allAxesKnown() const;
+    bool checkFeedAvailable(const Context& at);
+    void addRecord(const Context& at, std::uint8_t axisWords);
+    double feedOfRecord(const Vec3& tip) const;
+    std::uint32_t firstAxisOffset(const Context& at, std::uint8_t axisWords) const;
+
+    GcodeProgram& m_program;
+    const kinematics::MachineModel& m_machine;
+    ErrorList& m_errors;
+
+    std::optional<GKind> m_motion; // modal G0 / G1; none before the first one
+    bool m_inch = false;
+    bool m_incremental = false;
+    bool m_inverseTime = false;
+    std::optional<double> m_feedPerMinuteMm;  // G94 feed in mm/min, once programmed
+    std::optional<double> m_blockInverseTime; // G93 F of the current block (1/min)
+    std::array<double, 5> m_position{};       // mm / rad, as programmed
+    std::uint8_t m_known = 0;                 // bit per AxisId
+    bool m_bProgrammed = false;
+    bool m_warnedDefaultB = false;
+    std::optional<double> m_c; // deg, the constant C
+    std::uint8_t m_outside = 0x1F;
+    std::optional<Vec3> m_lastTip;
+};
+
+} // namespace bladeaxis::io::nc::detail

@@ -1,0 +1,61 @@
+#pragma once
+// The parsed form of an ISO/Fanuc G-code program: the toolpath every stage consumes, plus a
+// compact description of where each CL record came from in the original text, so that a writer
+// can change exactly the X Y Z A B words of a block and copy every other byte.
+
+#include "core/toolpath/toolpath.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace bladeaxis::io::nc {
+
+// Marks an axis that has no word in a record's block (its value is modal).
+inline constexpr std::uint16_t kNoWord = 0xFFFF;
+
+// Per-record modal flags needed to write the block back in its own terms.
+enum RecordFlag : std::uint8_t {
+    kIncremental = 1, // G91: axis words are increments
+    kInch = 2,        // G20: linear words are inches
+};
+
+// Where one CL record lives in GcodeProgram::text. Offsets, not strings: 24 bytes per record,
+// so a million-block program costs 24 MB here.
+struct RecordSource {
+    std::uint32_t lineBegin = 0; // byte offset of the first character of the block's line
+    // Offset of each axis word's number (after the letter) from lineBegin, in AxisId order
+    // (X Y Z A B); kNoWord when the block has no word for that axis.
+    std::array<std::uint16_t, 5> wordBegin{kNoWord, kNoWord, kNoWord, kNoWord, kNoWord};
+    std::array<std::uint8_t, 5> wordLength{}; // characters of that number
+    std::uint8_t flags = 0;                   // RecordFlag bits
+    // Bit i set: axis i was last set by a block that is not a record (leading partial rapids,
+    // the program start), so its modal value here is the original one, whatever the rewrite.
+    std::uint8_t setOutside = 0;
+
+    bool hasWord(int axis) const { return wordBegin[static_cast<std::size_t>(axis)] != kNoWord; }
+};
+
+// How the file writes the numbers of one axis, learnt from all its words. A file whose words
+// carry varying decimals ("X10." "X10.25") trims trailing zeros; otherwise it writes a fixed
+// number of decimals.
+struct AxisNumberStyle {
+    bool seen = false;
+    int minDecimals = 0;
+    int maxDecimals = 0;
+    bool trailingPoint = false; // some word ends in "." ("X10.")
+    bool leadingZero = true;    // "0.5" rather than ".5"
+    bool explicitPlus = false;  // "+1.5"
+
+    bool trimsZeros() const { return seen && (minDecimals != maxDecimals || trailingPoint); }
+};
+
+struct GcodeProgram {
+    toolpath::Toolpath path;
+    std::string text;                  // the original program, byte for byte
+    std::vector<RecordSource> sources; // one per path.records entry, same order
+    std::array<AxisNumberStyle, 5> axisStyles{};
+};
+
+} // namespace bladeaxis::io::nc

@@ -1,0 +1,109 @@
+#include "core/io/nc/gcode_reader.h"
+
+#include "core/base/file_io.h"
+#include "core/io/nc/detail/block_scanner.h"
+#include "core/io/nc/detail/error_list.h"
+#include "core/io/nc/detail/modal_interpreter.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+namespace bladeaxis::io::nc {
+
+namespace {
+
+// Record offsets are 32-bit to keep the per-record data small.
+constexpr std::size_t kMaxTextBytes = std::numeric_limits<std::uint32_t>::max();
+
+Error parseErrorAt(std::string_view fileName, int line, std::string message) {
+    return Error{ErrorCode::Parse, std::move(message), {std::string(fileName), line, 1}, {}};
+}
+
+// Records and their sources are reserved for one per line, so that a million-block program does
+// not pay for vector doubling (peak memory) or copies.
+void reserveForLines(GcodeProgram& program) {
+    const auto lines =
+        static_cast<std::size_t>(std::count(program.text.begin(), program.text.end(), '\n')) + 1;
+    program.path.records.reserve(lines);
+    program.sources.reserve(lines);
+}
+
+void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machine,
+                    detail::ErrorList& errors) {
+    detail::ModalInterpreter interpreter(program, machine, errors);
+    detail::ScannedBlock block;
+    const std::string_view text = program.text;
+    std::size_t begin = 0;
+    int lineNumber = 0;
+    while (begin < text.size() && !errors.full()) {
+        ++lineNumber;
+        const void* newline = std::memchr(text.data() + begin, '\n', text.size() - begin);
+        const std::size_t end =
+            newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - text.data())
+                    : text.size();
+        std::size_t contentEnd = end;
+        if (contentEnd > begin && text[contentEnd - 1] == '\r') {
+            --contentEnd;
+        }
+        const std::string_view line = text.substr(begin, contentEnd - begin);
+        if (auto issue = detail::scanBlock(line, block)) {
+            errors.add(lineNumber, static_cast<int>(issue->offset) + 1, std::move(issue->message));
+        } else {
+            interpreter.apply(block, line, static_cast<std::uint32_t>(begin), lineNumber);
+        }
+        begin = end + 1;
+    }
+}
+
+Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
+                                    const kinematics::MachineModel& machine) {
+    if (text.size() > kMaxTextBytes) {
+        return std::unexpected(
+            parseErrorAt(fileName, 1, "file too large: expected at most 4 GiB of G-code"));
+    }
+    if (text.empty()) {
+        return std::unexpected(
+            parseErrorAt(fileName, 1, "empty file: expected G-code blocks with G0/G1 moves"));
+    }
+    GcodeProgram program;
+    program.text = std::move(text);
+    program.path.sourceFile = std::string(fileName);
+    program.path.format = toolpath::SourceFormat::Gcode;
+    reserveForLines(program);
+
+    detail::ErrorList errors(fileName, kMaxParseErrors);
+    interpretLines(program, machine, errors);
+    if (!errors.empty()) {
+        return std::unexpected(errors.take());
+    }
+    if (program.path.records.empty()) {
+        return std::unexpected(parseErrorAt(
+            fileName, 1, "no moves: expected G0/G1 blocks that program X, Y, Z and A"));
+    }
+    // Shrinking copies the records, so it is done only when the reservation was mostly wasted
+    // (comment-heavy files), never for large motion programs where it would double the peak.
+    if (program.path.records.capacity() > 2 * program.path.records.size() + 1024) {
+        program.path.records.shrink_to_fit();
+        program.sources.shrink_to_fit();
+    }
+    return program;
+}
+
+} // namespace
+
+Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName,
+                                const kinematics::MachineModel& machine) {
+    return parseOwnedText(std::string(text), fileName, machine);
+}
+
+Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,
+                                   const kinematics::MachineModel& machine) {
+    Result<std::string> text = readTextFile(path);
+    if (!text) {
+        return std::unexpected(std::move(text.error()));
+    }
+    return parseOwnedText(std::move(*text), path.string(), machine);
+}
+
+} // namespace bladeaxis::io::nc

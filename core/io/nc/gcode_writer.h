@@ -1,0 +1,32 @@
+#pragma once
+// Minimal-diff rewriting of a parsed G-code program with new machine axes.
+//
+// Every block whose words do not change is copied byte for byte (line endings, a missing final
+// newline and all). A word changes only when its new value, formatted the way the file writes
+// that word (decimals, leading zero, explicit '+'), differs from its text; it keeps its
+// position. A block without a word for an axis gets one inserted, in X Y Z A B order, when the
+// new value differs from the modal value in effect. G91 blocks get recomputed increments, G20
+// blocks inch values, and modulo A axes values in [0, 360). F words are never changed.
+
+#include "core/base/error.h"
+#include "core/io/nc/gcode_program.h"
+#include "core/kinematics/machine_model.h"
+
+#include <filesystem>
+#include <span>
+#include <string>
+
+namespace bladeaxis::io::nc {
+
+// newAxes: one entry per program.path.records entry (same order), machine axes as in
+// ClRecord::axes. Errors (InvalidArgument): wrong count or a non-finite value; no partial output.
+Result<std::string> rewriteGcode(const GcodeProgram& program,
+                                 std::span<const kinematics::MachineAxes> newAxes,
+                                 const kinematics::MachineModel& machine);
+
+// rewriteGcode, then an atomic write that refuses to overwrite the program's source file.
+Status writeGcodeFile(const std::filesystem::path& out, const GcodeProgram& program,
+                      std::span<const kinematics::MachineAxes> newAxes,
+                      const kinematics::MachineModel& machine);
+
+} // namespace bladeaxis::io::nc

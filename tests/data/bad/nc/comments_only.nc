@@ -1,0 +1,4 @@
+%
+(NOTHING TO CUT)
+M30
+%

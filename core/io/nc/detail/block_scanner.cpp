@@ -81,25 +81,26 @@ std::optional<ScanIssue> readNumber(std::string_view line, std::size_t begin, ch
                                     WordSpan& word) {
     const std::size_t end = numberEnd(line, begin);
     const std::string_view token = line.substr(begin, end - begin);
-    const std::string quoted = std::string("'") + letter + "'";
+    // Built on the error paths only: this function runs for every word of the program.
+    const auto quoted = [letter] { return std::string("'") + letter + "'"; };
     if (token.empty() || token == "+" || token == "-") {
-        return issueAt(begin, "expected a number after " + quoted);
+        return issueAt(begin, "expected a number after " + quoted());
     }
     if (token.size() > kMaxNumberLength) {
-        return issueAt(begin, "number too long after " + quoted);
+        return issueAt(begin, "number too long after " + quoted());
     }
     const std::optional<double> value = parseNumber(token);
     if (!value) {
         if (looksNumeric(token)) {
-            return issueAt(begin, "number out of range after " + quoted + ": '" +
+            return issueAt(begin, "number out of range after " + quoted() + ": '" +
                                       std::string(token) + "'");
         }
-        return issueAt(begin, "expected a number after " + quoted + ", found '" +
+        return issueAt(begin, "expected a number after " + quoted() + ", found '" +
                                   std::string(token) + "'");
     }
     if (std::abs(*value) > kMaxWordMagnitude) {
         return issueAt(begin,
-                       "number out of range after " + quoted + ": '" + std::string(token) + "'");
+                       "number out of range after " + quoted() + ": '" + std::string(token) + "'");
     }
     word.valueBegin = static_cast<std::uint32_t>(begin);
     word.valueEnd = static_cast<std::uint32_t>(end);

@@ -1,11 +1,16 @@
 #include "core/scheduling/smoothing.h"
 
+#include "core/scheduling/detail/corner_channel.h"
+#include "core/scheduling/detail/exact_epsilon.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace bladeaxis::scheduling {
 
 namespace {
+
+using detail::ChannelView;
 
 struct CornerFrame {
     Vec2 p2;
@@ -29,58 +34,13 @@ double geometricLimit(const CornerFrame& c, CornerForm form) {
                                  std::hypot(c.dS2, c.k2 * c.dS2), c.f1, c.f2);
 }
 
-// Channel bounds at any S: linear interpolation between samples (s sorted).
-struct ChannelView {
-    std::span<const double> s, rawMin, rawMax;
-    double clearance;
-
-    std::pair<double, double> at(double x) const {
-        auto it = std::upper_bound(s.begin(), s.end(), x);
-        const std::size_t j = static_cast<std::size_t>(
-            std::clamp<long>(it - s.begin(), 1, static_cast<long>(s.size()) - 1));
-        const double w = std::clamp((x - s[j - 1]) / (s[j] - s[j - 1]), 0.0, 1.0);
-        return {rawMin[j - 1] + w * (rawMin[j] - rawMin[j - 1]) + clearance,
-                rawMax[j - 1] + w * (rawMax[j] - rawMax[j - 1]) - clearance};
-    }
-};
-
-// Exact rule check: the pair within the channel at every sample in its span and at
-// `checks` parameter values per cubic.
-bool pairFeasible(const BezierPair& pair, const ChannelView& channel, int checks) {
-    constexpr double kTolerance = 1e-12;
-    const auto first = std::lower_bound(channel.s.begin(), channel.s.end(), pair.sBegin());
-    const auto last = std::upper_bound(channel.s.begin(), channel.s.end(), pair.sEnd());
-    for (auto it = first; it != last; ++it) {
-        const std::size_t j = static_cast<std::size_t>(it - channel.s.begin());
-        const double value = evaluatePair(pair, *it).value;
-        if (value < channel.rawMin[j] + channel.clearance - kTolerance ||
-            value > channel.rawMax[j] - channel.clearance + kTolerance) {
-            return false;
-        }
-    }
-    for (const CubicBezier* cubic : {&pair.first, &pair.second}) {
-        for (int k = 0; k <= checks; ++k) {
-            const Vec2 p = cubic->point(static_cast<double>(k) / checks);
-            const auto [low, high] = channel.at(p.x());
-            if (p.y() < low - kTolerance || p.y() > high + kTolerance) {
-                return false;
-            }
-        }
-    }
-    return true;
-}
-
 // Paper epsilon0 (W1): the least vertical room between polyline and the boundary on the
 // corner's side, over the span from mid-point to mid-point (whole segment at layer ends).
 double paperRoom(const CornerFrame& c, const ChannelView& channel) {
     double room = std::numeric_limits<double>::infinity();
-    const double from = c.p2.x() - c.f1 * c.dS1;
-    const double to = c.p2.x() + c.f2 * c.dS2;
-    for (std::size_t j = 0; j < channel.s.size(); ++j) {
+    const std::size_t end = channel.upperIndex(c.p2.x() + c.f2 * c.dS2);
+    for (std::size_t j = channel.lowerIndex(c.p2.x() - c.f1 * c.dS1); j < end; ++j) {
         const double x = channel.s[j];
-        if (x < from || x > to) {
-            continue;
-        }
         const double poly = c.p2.y() + (x < c.p2.x() ? c.k1 : c.k2) * (x - c.p2.x());
         room = std::min(room, c.k2 > c.k1 ? channel.rawMax[j] - poly : poly - channel.rawMin[j]);
     }
@@ -96,17 +56,11 @@ SmoothedCorner smoothOne(const CornerFrame& c, const ChannelView& channel,
     double magnitude = geometric;
     if (settings.rule == EpsilonRule::Paper) {
         magnitude = std::min(geometric, paperRoom(c, channel) - settings.finalClearanceRad);
-    } else if (!pairFeasible(pairFor(c, sign * geometric, settings.form), channel,
-                             settings.checksPerCubic)) {
-        double low = 0.0; // feasibility is monotone in |epsilon| (homothety, §5.3)
-        double high = geometric;
-        for (int step = 0; step < settings.bisectionSteps; ++step) {
-            const double mid = 0.5 * (low + high);
-            const bool ok = pairFeasible(pairFor(c, sign * mid, settings.form), channel,
-                                         settings.checksPerCubic);
-            (ok ? low : high) = mid;
-        }
-        magnitude = low;
+    } else {
+        const detail::CornerGeometry shape =
+            detail::cornerGeometry(c.p2, c.k1, c.k2, sign, pairFor(c, sign, settings.form));
+        magnitude = detail::exactEpsilon(shape, geometric, channel, settings.checksPerCubic,
+                                         settings.bisectionSteps);
     }
     if (!(magnitude > 0.0)) {
         return corner; // unsmoothed corner, flagged by limitedBy = None
@@ -124,6 +78,7 @@ SmoothedPath smoothCorners(std::span<const PolyVertex> vertices, std::span<const
                            const SmoothingSettings& settings) {
     SmoothedPath path;
     path.vertices.assign(vertices.begin(), vertices.end());
+    path.form = settings.form;
     const ChannelView channel{s, rawMin, rawMax, settings.finalClearanceRad};
     for (std::size_t k = 1; k + 1 < vertices.size(); ++k) {
         const PolyVertex& a = vertices[k - 1];
@@ -185,15 +140,21 @@ PathSamples evaluateSmoothedPath(const SmoothedPath& path, std::span<const doubl
 }
 
 double peakSecondDerivative(const SmoothedPath& path) {
-    constexpr int kSamplesPerCubic = 64;
+    // Graph limit: theta''(t) = (2 eps / (3 h^2)) t (1 - t) / (1 - 2t + 2t^2)^3 on both cubics
+    // (§5.6), symmetric about t = 1/2 and maximal there; the dense sampling below includes
+    // t = 1/2, so one evaluation gives the same peak.
+    const int samples = path.form == CornerForm::GraphLimit ? 0 : 64;
     double peak = 0.0;
     for (const SmoothedCorner& corner : path.corners) {
         if (corner.limitedBy == CornerLimit::None) {
             continue;
         }
         for (const CubicBezier* cubic : {&corner.curve.first, &corner.curve.second}) {
-            for (int k = 0; k <= kSamplesPerCubic; ++k) {
-                const double t = static_cast<double>(k) / kSamplesPerCubic;
+            if (samples == 0) {
+                peak = std::max(peak, std::abs(secondDerivativeAt(*cubic, 0.5)));
+            }
+            for (int k = 0; k <= samples && samples > 0; ++k) {
+                const double t = static_cast<double>(k) / samples;
                 peak = std::max(peak, std::abs(secondDerivativeAt(*cubic, t)));
             }
         }

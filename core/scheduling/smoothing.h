@@ -33,6 +33,7 @@ struct SmoothingSettings {
 struct SmoothedPath {
     std::vector<PolyVertex> vertices;    // the polyline that was smoothed
     std::vector<SmoothedCorner> corners; // increasing S, spans pairwise disjoint
+    CornerForm form = CornerForm::Euclidean;
 };
 
 // `rawMin`, `rawMax`: the raw channel of the layer relative to its reference (no margin).
@@ -48,7 +49,8 @@ struct PathSamples {
 // spans, the Bezier pair inside (spec §5.8).
 PathSamples evaluateSmoothedPath(const SmoothedPath& path, std::span<const double> s);
 
-// Peak |theta''| of the smoothed curve, from a dense parameter sampling of every cubic.
+// Peak |theta''| of the smoothed curve: at t = 1/2 of every graph-limit cubic, where §5.6 puts
+// the maximum; from a dense parameter sampling of every Euclidean cubic.
 double peakSecondDerivative(const SmoothedPath& path);
 
 } // namespace bladeaxis::scheduling

@@ -1,0 +1,218 @@
+#include "core/scheduling/detail/exact_epsilon.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace bladeaxis::scheduling::detail {
+
+namespace {
+
+// Samples are solved against half the predicate's tolerance, so that the round-off of a later
+// evaluation (far below kRoundOff) never turns a solved bound into a predicate failure.
+constexpr double kRoomTolerance = 0.5 * kFeasibilityTolerance;
+constexpr double kRoundOff = 1e-13;
+
+struct Rooms {
+    double nearSide; // bound on the curve's side minus the polyline (>= the deviation needed)
+    double farSide;  // polyline minus the other bound (must stay >= 0)
+};
+
+class CornerRooms {
+  public:
+    CornerRooms(const CornerGeometry& corner, const ChannelView& channel)
+        : m_corner(corner), m_channel(channel) {}
+
+    Rooms atSample(std::size_t j) const {
+        return rooms(m_channel.s[j], m_channel.rawMin[j] + m_channel.clearance,
+                     m_channel.rawMax[j] - m_channel.clearance);
+    }
+    Rooms atAbscissa(double x) const {
+        const auto [low, high] = m_channel.at(x);
+        return rooms(x, low, high);
+    }
+
+  private:
+    Rooms rooms(double x, double low, double high) const {
+        const Vec2& p2 = m_corner.p2;
+        const double line = p2.y() + (x < p2.x() ? m_corner.kIn : m_corner.kOut) * (x - p2.x());
+        return m_corner.sign > 0.0
+                   ? Rooms{high - line + kRoomTolerance, line - low + kRoomTolerance}
+                   : Rooms{line - low + kRoomTolerance, high - line + kRoomTolerance};
+    }
+
+    const CornerGeometry& m_corner;
+    const ChannelView& m_channel;
+};
+
+double bernstein(const std::array<double, 4>& h, double t) {
+    const double u = 1.0 - t;
+    return u * u * u * h[0] + 3.0 * u * u * t * h[1] + 3.0 * u * t * t * h[2] + t * t * t * h[3];
+}
+
+double bernsteinSlope(const std::array<double, 4>& h, double t) {
+    const double u = 1.0 - t;
+    return 3.0 * (u * u * (h[1] - h[0]) + 2.0 * u * t * (h[2] - h[1]) + t * t * (h[3] - h[2]));
+}
+
+// The root in [0, 1] of a cubic in Bernstein form whose end values have opposite signs:
+// Newton safeguarded by the sign bracket, to a relative step of a few ulp.
+double bracketedRoot(const std::array<double, 4>& h) {
+    const bool rising = h[3] > h[0];
+    double low = 0.0;
+    double high = 1.0;
+    double t = std::clamp(h[0] / (h[0] - h[3]), 0.0, 1.0);
+    for (int step = 0; step < 200; ++step) {
+        const double f = bernstein(h, t);
+        if (f == 0.0) {
+            return t;
+        }
+        ((f < 0.0) == rising ? low : high) = t;
+        double next = t - f / bernsteinSlope(h, t);
+        if (!(next > low && next < high)) {
+            next = 0.5 * (low + high);
+        }
+        if (std::abs(next - t) <= 4.0 * std::numeric_limits<double>::epsilon() * next ||
+            high - low <= std::numeric_limits<double>::denorm_min()) {
+            return next;
+        }
+        t = next;
+    }
+    return t;
+}
+
+double bezierX(const CubicBezier& cubic, double t) {
+    return bernstein(
+        {cubic.control[0].x(), cubic.control[1].x(), cubic.control[2].x(), cubic.control[3].x()},
+        t);
+}
+
+// The largest m for which the sample at offset a != 0 with room r stays feasible: the deviation
+// m E(a / m) equals r where the unit curve meets the line Y = (k + r / a) X (k the flipped
+// polyline slope on that side), i.e. at the root of a cubic in t.
+double sampleBound(const CornerGeometry& corner, double a, double room) {
+    const CubicBezier& cubic = a > 0.0 ? corner.unitOffsets.second : corner.unitOffsets.first;
+    const double edge = a > 0.0 ? cubic.control[3].x() : cubic.control[0].x();
+    if (room < 0.0) { // the polyline itself violates: the span must stop short of the sample
+        return a / edge * (1.0 - 1e-9);
+    }
+    const double slope = corner.sign * (a > 0.0 ? corner.kOut : corner.kIn) + room / a;
+    std::array<double, 4> h{};
+    for (std::size_t k = 0; k < 4; ++k) {
+        h[k] = cubic.control[k].y() - slope * cubic.control[k].x();
+    }
+    return a / bezierX(cubic, bracketedRoot(h));
+}
+
+// Deviation from the polyline at abscissa x of the pair with |epsilon| = m.
+double deviation(const CornerGeometry& corner, double m, double x) {
+    const double u = (x - corner.p2.x()) / m;
+    if (u <= corner.unitOffsets.sBegin() || u >= corner.unitOffsets.sEnd()) {
+        return 0.0;
+    }
+    const double line = corner.sign * (u < 0.0 ? corner.kIn : corner.kOut) * u;
+    return m * (evaluatePair(corner.unitOffsets, u).value - line);
+}
+
+BezierPair pairAt(const CornerGeometry& corner, double m) {
+    BezierPair pair = corner.unitOffsets;
+    for (CubicBezier* cubic : {&pair.first, &pair.second}) {
+        for (Vec2& p : cubic->control) {
+            p = Vec2(corner.p2.x() + m * p.x(), corner.p2.y() + corner.sign * m * p.y());
+        }
+    }
+    return pair;
+}
+
+// Sufficient for pairFeasible(pairAt(m)): between consecutive abscissae (span ends and the
+// samples inside) both rooms are linear, the deviation is monotone on each side of S2 and never
+// above m, so the rooms' minimum must cover the deviation at the end nearer to S2.
+bool clearlyFeasible(const CornerGeometry& corner, double m, const ChannelView& channel,
+                     const CornerRooms& rooms) {
+    const double s2 = corner.p2.x();
+    const double begin = s2 + m * corner.unitOffsets.sBegin();
+    const double end = s2 + m * corner.unitOffsets.sEnd();
+    double previousX = begin;
+    Rooms previous = rooms.atAbscissa(begin);
+    const std::size_t last = channel.lowerIndex(end);
+    for (std::size_t j = channel.upperIndex(begin); j <= last; ++j) {
+        const double x = j < last ? channel.s[j] : end;
+        const Rooms current = j < last ? rooms.atSample(j) : rooms.atAbscissa(end);
+        if (current.farSide < 0.0 || previous.farSide < 0.0) {
+            return false;
+        }
+        const double low = std::min(previous.nearSide, current.nearSide);
+        if (low < m) {
+            const double bound =
+                previousX < s2 && x > s2 ? m : deviation(corner, m, x <= s2 ? x : previousX);
+            if (low + kRoundOff < bound) {
+                return false;
+            }
+        }
+        previousX = x;
+        previous = current;
+    }
+    return true;
+}
+
+// The original rule: bisection of the (monotone) predicate on [0, high].
+double bisect(const CornerGeometry& corner, double high, const ChannelView& channel, int checks,
+              int steps) {
+    double low = 0.0;
+    for (int step = 0; step < steps; ++step) {
+        const double mid = 0.5 * (low + high);
+        (pairFeasible(pairAt(corner, mid), channel, checks) ? low : high) = mid;
+    }
+    return low;
+}
+
+} // namespace
+
+CornerGeometry cornerGeometry(const Vec2& p2, double kIn, double kOut, double sign,
+                              const BezierPair& unitPair) {
+    CornerGeometry corner{p2, kIn, kOut, sign, unitPair};
+    for (CubicBezier* cubic : {&corner.unitOffsets.first, &corner.unitOffsets.second}) {
+        for (Vec2& p : cubic->control) {
+            p = Vec2(p.x() - p2.x(), sign * (p.y() - p2.y()));
+        }
+    }
+    return corner;
+}
+
+double exactEpsilon(const CornerGeometry& corner, double geometric, const ChannelView& channel,
+                    int checks, int bisectionSteps) {
+    if (!(geometric > 0.0)) {
+        return 0.0;
+    }
+    const CornerRooms rooms(corner, channel);
+    const double s2 = corner.p2.x();
+    double m = geometric;
+    bool farViolated = false;
+    const std::size_t end = channel.upperIndex(s2 + geometric * corner.unitOffsets.sEnd());
+    for (std::size_t j = channel.lowerIndex(s2 + geometric * corner.unitOffsets.sBegin()); j < end;
+         ++j) {
+        const Rooms r = rooms.atSample(j);
+        farViolated = farViolated || r.farSide < 0.0;
+        if (r.nearSide >= m) {
+            continue; // the deviation never exceeds m: this sample cannot bind
+        }
+        const double a = channel.s[j] - s2;
+        m = std::min(m, a == 0.0 ? std::max(r.nearSide, 0.0) : sampleBound(corner, a, r.nearSide));
+    }
+    if (farViolated) { // not monotone in m: the original search, unchanged
+        return pairFeasible(pairAt(corner, geometric), channel, checks)
+                   ? geometric
+                   : bisect(corner, geometric, channel, checks, bisectionSteps);
+    }
+    if (!(m > 0.0)) {
+        return 0.0;
+    }
+    if (clearlyFeasible(corner, m, channel, rooms) ||
+        pairFeasible(pairAt(corner, m), channel, checks)) {
+        return m;
+    }
+    return bisect(corner, m, channel, checks, bisectionSteps);
+}
+
+} // namespace bladeaxis::scheduling::detail

@@ -104,11 +104,13 @@ double parameterAt(const CubicBezier& cubic, double s) {
         (f < 0.0 ? low : high) = t;
         const double slope = c1 + t * (2.0 * c2 + 3.0 * t * c3);
         double next = slope > 0.0 ? t - f / slope : 0.5 * (low + high);
+        if (std::abs(next - t) <= 2.0 * std::numeric_limits<double>::epsilon()) {
+            return std::clamp(next, 0.0, 1.0);
+        }
         if (!(next > low && next < high)) {
             next = 0.5 * (low + high);
         }
-        if (std::abs(next - t) <= 2.0 * std::numeric_limits<double>::epsilon() ||
-            high - low <= 4.0 * std::numeric_limits<double>::epsilon()) {
+        if (high - low <= 4.0 * std::numeric_limits<double>::epsilon()) {
             return next;
         }
         t = next;

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace bladeaxis::scheduling {
 
@@ -20,14 +21,12 @@ struct Attempt {
     double peak = std::numeric_limits<double>::infinity();
 };
 
-Attempt attempt(const LayerProblem& p, const ScheduleParameters& parameters, double rho) {
+Attempt attempt(const LayerProblem& p, const ScheduleParameters& parameters, double rho,
+                const LeadChoice& leads) {
     Attempt a;
     a.rho = rho;
+    a.leads = leads;
     const double tol = parameters.keyToleranceRad;
-    if (!p.shortLayer) {
-        a.leads = chooseLeads(p.s, p.lo, p.hi, p.startValue, p.endValue, rho, p.span.startFree,
-                              p.span.endFree, tol);
-    }
     a.lines =
         linearise({p.s, p.lo, p.hi, p.startValue, p.endValue, a.leads, parameters.keyMode, tol});
     const SmoothingSettings settings{parameters.epsilonRule, parameters.cornerForm,
@@ -38,45 +37,90 @@ Attempt attempt(const LayerProblem& p, const ScheduleParameters& parameters, dou
     return a;
 }
 
+// The lead search (§3.4). An attempt depends on rho only through the lead samples, and the
+// golden section soon narrows below one sample spacing: attempts are memoised by their leads,
+// which returns exactly what re-running them would (a repeat never replaces the best, whose
+// peak it only equals).
+class LeadSearch {
+  public:
+    LeadSearch(const LayerProblem& problem, const ScheduleParameters& parameters)
+        : m_problem(problem), m_parameters(parameters),
+          m_limits(problem.shortLayer
+                       ? LeadLimits{}
+                       : leadLimits(problem.s, problem.lo, problem.hi, problem.startValue,
+                                    problem.endValue, parameters.keyToleranceRad)) {}
+
+    // Peak |theta''| at rho; keeps the best attempt (the first one reaching the lowest peak).
+    double consider(double rho) {
+        const LeadChoice leads = leadsAt(rho);
+        for (const Seen& seen : m_seen) {
+            if (seen.leadIn == leads.leadIn && seen.leadOut == leads.leadOut) {
+                return seen.peak;
+            }
+        }
+        Attempt a = attempt(m_problem, m_parameters, rho, leads);
+        m_seen.push_back({leads.leadIn, leads.leadOut, a.peak});
+        if (!m_best || a.peak < m_best->peak) {
+            m_best = std::move(a);
+        }
+        return m_seen.back().peak;
+    }
+
+    Attempt takeBest() { return std::move(*m_best); }
+
+  private:
+    struct Seen {
+        std::optional<std::size_t> leadIn, leadOut;
+        double peak;
+    };
+
+    LeadChoice leadsAt(double rho) const {
+        if (m_problem.shortLayer) {
+            return {};
+        }
+        return chooseLeads(m_problem.s, m_limits, rho, m_problem.span.startFree,
+                           m_problem.span.endFree);
+    }
+
+    const LayerProblem& m_problem;
+    const ScheduleParameters& m_parameters;
+    LeadLimits m_limits;
+    std::vector<Seen> m_seen;
+    std::optional<Attempt> m_best;
+};
+
 // §3.4 lead_mode = auto: golden-section search of rho minimising the peak |theta''|; the best
 // attempt seen is kept, because the objective is piecewise (leads snap to samples).
 Attempt bestAttempt(const LayerProblem& p, const ScheduleParameters& parameters) {
+    LeadSearch search(p, parameters);
+    search.consider(parameters.leadFraction);
     if (parameters.leadMode == LeadMode::Fixed || p.shortLayer ||
         (p.span.startFree && p.span.endFree)) {
-        return attempt(p, parameters, parameters.leadFraction);
+        return search.takeBest();
     }
     const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
     double low = parameters.leadSearchMinFraction;
     double high = parameters.leadSearchMaxFraction;
-    Attempt best = attempt(p, parameters, parameters.leadFraction);
-    auto consider = [&](double rho) {
-        Attempt a = attempt(p, parameters, rho);
-        const double peak = a.peak;
-        if (peak < best.peak) {
-            best = std::move(a);
-        }
-        return peak;
-    };
     double x1 = high - ratio * (high - low);
     double x2 = low + ratio * (high - low);
-    double f1 = consider(x1);
-    double f2 = consider(x2);
+    double f1 = search.consider(x1);
+    double f2 = search.consider(x2);
     for (int k = 2; k < parameters.leadSearchEvaluations; ++k) {
         if (f1 <= f2) {
             high = x2;
             x2 = x1;
             f2 = f1;
             x1 = high - ratio * (high - low);
-            f1 = consider(x1);
+            f1 = search.consider(x1);
         } else {
             low = x1;
             x1 = x2;
             f1 = f2;
             x2 = low + ratio * (high - low);
-            f2 = consider(x2);
+            f2 = search.consider(x2);
         }
     }
-    return best;
+    return search.takeBest();
 }
 
 LayerResult::Corner::Bound boundOf(CornerLimit limit) {

@@ -83,9 +83,25 @@ bool segmentInside(const PolyVertex& a, const PolyVertex& b, std::span<const dou
     return true;
 }
 
-LeadChoice chooseLeads(std::span<const double> s, std::span<const double> lo,
-                       std::span<const double> hi, double startValue, double endValue, double rho,
-                       bool freeStart, bool freeEnd, double toleranceRad) {
+LeadLimits leadLimits(std::span<const double> s, std::span<const double> lo,
+                      std::span<const double> hi, double startValue, double endValue,
+                      double toleranceRad) {
+    const std::size_t n = s.size();
+    LeadLimits limits;
+    while (limits.maxIn + 1 < n &&
+           inside(startValue, lo[limits.maxIn + 1], hi[limits.maxIn + 1], toleranceRad)) {
+        ++limits.maxIn;
+    }
+    limits.minOut = n == 0 ? 0 : n - 1;
+    while (limits.minOut > 0 &&
+           inside(endValue, lo[limits.minOut - 1], hi[limits.minOut - 1], toleranceRad)) {
+        --limits.minOut;
+    }
+    return limits;
+}
+
+LeadChoice chooseLeads(std::span<const double> s, const LeadLimits& limits, double rho,
+                       bool freeStart, bool freeEnd) {
     const std::size_t n = s.size();
     LeadChoice leads;
     if (n < 4) {
@@ -93,28 +109,21 @@ LeadChoice chooseLeads(std::span<const double> s, std::span<const double> lo,
     }
     const double length = s.back() - s.front();
     if (!freeStart) {
-        std::size_t maxIn = 0; // S_a,max: last sample of the run from 0 where start is inside
-        while (maxIn + 1 < n && inside(startValue, lo[maxIn + 1], hi[maxIn + 1], toleranceRad)) {
-            ++maxIn;
-        }
-        std::size_t index = 0;
-        while (index + 1 < n && s[index + 1] - s.front() <= rho * length) {
-            ++index;
-        }
-        leads.zeroLengthLead = maxIn == 0 || index == 0;
-        leads.leadIn = std::clamp<std::size_t>(std::min(index, maxIn), 1, n - 2);
+        // The last sample with S - S_0 <= rho S_e (S increasing: a partition point).
+        const auto after = std::partition_point(
+            s.begin() + 1, s.end(), [&](double x) { return x - s.front() <= rho * length; });
+        const auto index = static_cast<std::size_t>(after - s.begin()) - 1;
+        leads.zeroLengthLead = limits.maxIn == 0 || index == 0;
+        leads.leadIn = std::clamp<std::size_t>(std::min(index, limits.maxIn), 1, n - 2);
     }
     if (!freeEnd) {
-        std::size_t minOut = n - 1; // S_b,min
-        while (minOut > 0 && inside(endValue, lo[minOut - 1], hi[minOut - 1], toleranceRad)) {
-            --minOut;
-        }
-        std::size_t index = n - 1;
-        while (index > 0 && s.back() - s[index - 1] <= rho * length) {
-            --index;
-        }
-        leads.zeroLengthLead = leads.zeroLengthLead || minOut == n - 1 || index == n - 1;
-        leads.leadOut = std::clamp<std::size_t>(std::max(index, minOut), 1, n - 2);
+        // The first sample from which every S_e - S <= rho S_e (up to the last but one).
+        const auto index = static_cast<std::size_t>(
+            std::partition_point(s.begin(), s.end() - 1,
+                                 [&](double x) { return s.back() - x > rho * length; }) -
+            s.begin());
+        leads.zeroLengthLead = leads.zeroLengthLead || limits.minOut == n - 1 || index == n - 1;
+        leads.leadOut = std::clamp<std::size_t>(std::max(index, limits.minOut), 1, n - 2);
     }
     if (leads.leadIn && leads.leadOut && *leads.leadIn >= *leads.leadOut) {
         // [A] Leads longer than the layer allows: split the overlap, keep one sample between.
@@ -123,6 +132,13 @@ LeadChoice chooseLeads(std::span<const double> s, std::span<const double> lo,
         leads.leadOut = *leads.leadIn + 1;
     }
     return leads;
+}
+
+LeadChoice chooseLeads(std::span<const double> s, std::span<const double> lo,
+                       std::span<const double> hi, double startValue, double endValue, double rho,
+                       bool freeStart, bool freeEnd, double toleranceRad) {
+    return chooseLeads(s, leadLimits(s, lo, hi, startValue, endValue, toleranceRad), rho, freeStart,
+                       freeEnd);
 }
 
 Linearisation linearise(const LinearisationInput& in) {

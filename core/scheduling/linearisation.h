@@ -44,6 +44,18 @@ LeadChoice chooseLeads(std::span<const double> s, std::span<const double> lo,
                        std::span<const double> hi, double startValue, double endValue, double rho,
                        bool freeStart, bool freeEnd, double toleranceRad);
 
+// The rho-independent part of chooseLeads, computed once per layer for the lead search:
+// S_a,max and S_b,min as sample indices.
+struct LeadLimits {
+    std::size_t maxIn = 0;  // last sample of the run from 0 where the start value is inside
+    std::size_t minOut = 0; // first sample of the run to the end where the end value is inside
+};
+LeadLimits leadLimits(std::span<const double> s, std::span<const double> lo,
+                      std::span<const double> hi, double startValue, double endValue,
+                      double toleranceRad);
+LeadChoice chooseLeads(std::span<const double> s, const LeadLimits& limits, double rho,
+                       bool freeStart, bool freeEnd);
+
 Linearisation linearise(const LinearisationInput& input);
 
 // §4.4: repeatedly delete interior non-fixed vertices whose neighbours can be joined inside

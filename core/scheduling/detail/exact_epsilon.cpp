@@ -70,12 +70,11 @@ double bracketedRoot(const std::array<double, 4>& h) {
         }
         ((f < 0.0) == rising ? low : high) = t;
         double next = t - f / bernsteinSlope(h, t);
+        if (std::abs(next - t) <= 4.0 * std::numeric_limits<double>::epsilon() * t) {
+            return next; // converged (quadratically, a few steps from the linear guess)
+        }
         if (!(next > low && next < high)) {
             next = 0.5 * (low + high);
-        }
-        if (std::abs(next - t) <= 4.0 * std::numeric_limits<double>::epsilon() * next ||
-            high - low <= std::numeric_limits<double>::denorm_min()) {
-            return next;
         }
         t = next;
     }

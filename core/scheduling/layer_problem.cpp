@@ -1,7 +1,7 @@
 #include "core/scheduling/layer_problem.h"
 
 #include "core/base/units.h"
-#include "core/geometry/angles.h"
+#include "core/scheduling/detail/fast_angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,8 +27,8 @@ AbsoluteLayer absoluteLayer(const PlanePath& path, const RawChannel& channel, co
     layer.original.resize(layer.rawMin.size());
     for (std::size_t j = 0; j < layer.original.size(); ++j) {
         // The input axis on the channel's branch: nearest to the channel middle.
-        layer.original[j] = geometry::unwrapNear(path.originalAngle[span.first + j],
-                                                 0.5 * (layer.rawMin[j] + layer.rawMax[j]));
+        layer.original[j] = detail::unwrapNear(path.originalAngle[span.first + j],
+                                               0.5 * (layer.rawMin[j] + layer.rawMax[j]));
     }
     layer.hull = monotoneHull(layer.rawMin, layer.rawMax, margin);
     return layer;

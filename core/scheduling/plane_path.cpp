@@ -61,16 +61,18 @@ int traversalSignOf(std::span<const Vec3> centres) {
 
 // Spec §1.2: B_in = asin(V . a) must be constant; otherwise take the median and warn.
 double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std::string>& warn) {
-    std::vector<double> tilts;
-    tilts.reserve(path.firstInput.size());
+    // asin is monotone, so the extremes and the median are taken on V . a / |V| and only those
+    // three go through asin (the same values as asin of every sample, without n asin calls).
+    std::vector<double> axial;
+    axial.reserve(path.firstInput.size());
     for (std::size_t input : path.firstInput) {
-        tilts.push_back(std::asin(std::clamp(axes[input].normalized().x(), -1.0, 1.0)));
+        axial.push_back(std::clamp(axes[input].normalized().x(), -1.0, 1.0));
     }
-    const auto [low, high] = std::minmax_element(tilts.begin(), tilts.end());
-    const double spread = *high - *low;
-    std::nth_element(tilts.begin(), tilts.begin() + static_cast<long>(tilts.size() / 2),
-                     tilts.end());
-    const double median = tilts[tilts.size() / 2];
+    const auto [low, high] = std::minmax_element(axial.begin(), axial.end());
+    const double spread = std::asin(*high) - std::asin(*low);
+    std::nth_element(axial.begin(), axial.begin() + static_cast<long>(axial.size() / 2),
+                     axial.end());
+    const double median = std::asin(axial[axial.size() / 2]);
     if (spread > tol::kConstantTiltRad) {
         warn.push_back("input tilt B is not constant (spread " + std::to_string(spread) +
                        " rad); the median " + std::to_string(median) + " rad is used");

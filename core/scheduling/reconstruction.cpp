@@ -42,12 +42,13 @@ ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                                         std::span<const double> thetaAbs, double tiltB0,
                                         double toolRadius) {
     ReconstructionCheck check;
+    const double axial = std::sin(tiltB0);
     for (std::size_t i = 0; i < path.axes.size() && i < centres.size(); ++i) {
         const Vec3& v = path.axes[i];
         check.maxCentreErrorMm =
             std::max(check.maxCentreErrorMm, (path.tips[i] + toolRadius * v - centres[i]).norm());
         check.maxUnitError = std::max(check.maxUnitError, std::abs(v.norm() - 1.0));
-        check.maxTiltError = std::max(check.maxTiltError, std::abs(v.x() - std::sin(tiltB0)));
+        check.maxTiltError = std::max(check.maxTiltError, std::abs(v.x() - axial));
     }
     check.reversals = countReversals(thetaAbs, tol::kReversalStepRad);
     return check;

@@ -1,10 +1,9 @@
 #include "core/scheduling/tangents.h"
 
-#include "core/geometry/angles.h"
+#include "core/scheduling/detail/fast_angles.h"
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace bladeaxis::scheduling {
 
@@ -23,20 +22,25 @@ double medianChord(std::span<const Vec2> points) {
     return *middle;
 }
 
-// e+_i (step = +1) or e-_i (step = -1, returned pointing forward: q_i - q_j).
-std::optional<Vec2> chordFrom(std::span<const Vec2> points, std::size_t i, int step,
-                              double length) {
+// e+_i (step = +1) or e-_i (step = -1, returned pointing forward: q_i - q_j). `found` is false
+// when every chord on that side is degenerate.
+Vec2 chordFrom(std::span<const Vec2> points, std::size_t i, int step, double length, bool& found) {
     const std::size_t n = points.size();
-    std::optional<Vec2> farthest;
+    Vec2 farthest = Vec2::Zero();
+    double farthestNorm = 0.0;
+    found = false;
     for (std::size_t j = i; step > 0 ? j + 1 < n : j > 0;) {
         j = step > 0 ? j + 1 : j - 1;
         const Vec2 chord = step > 0 ? Vec2(points[j] - points[i]) : Vec2(points[i] - points[j]);
         const double norm = chord.norm();
         if (norm >= length) {
+            found = true;
             return chord;
         }
-        if (norm > kDegenerateChordMm && (!farthest || norm > farthest->norm())) {
+        if (norm > kDegenerateChordMm && (!found || norm > farthestNorm)) {
             farthest = chord;
+            farthestNorm = norm;
+            found = true;
         }
     }
     return farthest;
@@ -60,23 +64,30 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
     field.turning.resize(n);
     field.curvature.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        std::optional<Vec2> forward = chordFrom(points, i, +1, field.chordLengthMm);
-        std::optional<Vec2> backward = chordFrom(points, i, -1, field.chordLengthMm);
-        if (!forward && !backward) {
+        bool hasForward = false;
+        bool hasBackward = false;
+        const Vec2 forward = chordFrom(points, i, +1, field.chordLengthMm, hasForward);
+        const Vec2 backward = chordFrom(points, i, -1, field.chordLengthMm, hasBackward);
+        if (!hasForward && !hasBackward) {
             return makeError(ErrorCode::Geometry,
                              "the projected path is degenerate at point " + std::to_string(i));
         }
         // [A] At the ends one side is missing: use the other, so tau = 0 there.
-        const Vec2 ePlus = forward ? *forward : *backward;
-        const Vec2 eMinus = backward ? *backward : *forward;
+        const Vec2& ePlus = hasForward ? forward : backward;
+        const Vec2& eMinus = hasBackward ? backward : forward;
         forwardRaw[i] = angleOf(ePlus);
-        field.turning[i] = geometry::wrapAngle(angleOf(ePlus) - angleOf(eMinus));
+        field.turning[i] = detail::wrapAngle(forwardRaw[i] - angleOf(eMinus));
         // [A] Normalised curvature: the chords' directions are the tangents at their
         // mid-points, so tau spans (|e+| + |e-|)/2 of arc. This keeps kappa_h in 1/mm
         // independent of the point density (the literal sum of tau / w of §1.6 is not).
         field.curvature[i] = 2.0 * field.turning[i] / (ePlus.norm() + eMinus.norm());
     }
-    field.forwardAngle = geometry::unwrap(forwardRaw);
+    // Unwrapped along the whole path (geometry::unwrap, with the fast wrap).
+    field.forwardAngle.resize(n);
+    field.forwardAngle[0] = forwardRaw[0];
+    for (std::size_t i = 1; i < n; ++i) {
+        field.forwardAngle[i] = detail::unwrapNear(forwardRaw[i], field.forwardAngle[i - 1]);
+    }
     return field;
 }
 

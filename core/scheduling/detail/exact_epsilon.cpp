@@ -188,15 +188,19 @@ double exactEpsilon(const CornerGeometry& corner, double geometric, const Channe
     const double s2 = corner.p2.x();
     double m = geometric;
     bool farViolated = false;
+    const double beginEdge = corner.unitOffsets.sBegin(); // < 0
+    const double endEdge = corner.unitOffsets.sEnd();     // > 0
     const std::size_t end = channel.upperIndex(s2 + geometric * corner.unitOffsets.sEnd());
     for (std::size_t j = channel.lowerIndex(s2 + geometric * corner.unitOffsets.sBegin()); j < end;
          ++j) {
         const Rooms r = rooms.atSample(j);
         farViolated = farViolated || r.farSide < 0.0;
-        if (r.nearSide >= m) {
-            continue; // the deviation never exceeds m: this sample cannot bind
-        }
         const double a = channel.s[j] - s2;
+        // The deviation is convex on each side of S2 (one-signed theta'', §5.3), m at S2 and 0 at
+        // the span edge m * edge: below its chord m - |a| / |edge|. Such samples cannot bind.
+        if (r.nearSide >= m - a / (a < 0.0 ? beginEdge : endEdge)) {
+            continue;
+        }
         m = std::min(m, a == 0.0 ? std::max(r.nearSide, 0.0) : sampleBound(corner, a, r.nearSide));
     }
     if (farViolated) { // not monotone in m: the original search, unchanged

@@ -79,30 +79,36 @@ double secondDerivativeAt(const CubicBezier& cubic, double t) {
 
 namespace {
 
+// One coordinate of a cubic in power form: c0 + t (c1 + t (c2 + t c3)).
+struct PowerCubic {
+    double c0, c1, c2, c3;
+
+    PowerCubic(double p0, double p1, double p2, double p3)
+        : c0(p0), c1(3.0 * (p1 - p0)), c2(3.0 * (p2 - 2.0 * p1 + p0)),
+          c3(p3 - p0 + 3.0 * (p1 - p2)) {}
+    double value(double t) const { return c0 + t * (c1 + t * (c2 + t * c3)); }
+    double first(double t) const { return c1 + t * (2.0 * c2 + 3.0 * t * c3); }
+    double second(double t) const { return 2.0 * c2 + 6.0 * t * c3; }
+};
+
 // Parameter t with x(t) = s on a cubic whose x is strictly increasing (spec §5.8). Newton on
 // the cubic x(t), safeguarded by a bisection bracket: a few steps reach the round-off level that
 // the 50-60 plain bisection steps of §5.8 reach, which matters because every CL sample inside a
 // corner span is evaluated this way.
-double parameterAt(const CubicBezier& cubic, double s) {
-    const double x0 = cubic.control[0].x();
-    const double x3 = cubic.control[3].x();
-    if (s <= x0) {
+double parameterAt(const PowerCubic& x, double x3, double s) {
+    if (s <= x.c0) {
         return 0.0;
     }
     if (s >= x3) {
         return 1.0;
     }
-    // x(t) = x0 + t (c1 + t (c2 + t c3)) in power form.
-    const double c1 = 3.0 * (cubic.control[1].x() - x0);
-    const double c2 = 3.0 * (cubic.control[2].x() - 2.0 * cubic.control[1].x() + x0);
-    const double c3 = x3 - x0 + 3.0 * (cubic.control[1].x() - cubic.control[2].x());
     double low = 0.0;
     double high = 1.0;
-    double t = (s - x0) / (x3 - x0);
+    double t = (s - x.c0) / (x3 - x.c0);
     for (int step = 0; step < 100; ++step) {
-        const double f = t * (c1 + t * (c2 + t * c3)) - (s - x0);
+        const double f = x.value(t) - s;
         (f < 0.0 ? low : high) = t;
-        const double slope = c1 + t * (2.0 * c2 + 3.0 * t * c3);
+        const double slope = x.first(t);
         double next = slope > 0.0 ? t - f / slope : 0.5 * (low + high);
         if (std::abs(next - t) <= 2.0 * std::numeric_limits<double>::epsilon()) {
             return std::clamp(next, 0.0, 1.0);
@@ -121,9 +127,13 @@ double parameterAt(const CubicBezier& cubic, double s) {
 } // namespace
 
 GraphPoint evaluateCubic(const CubicBezier& cubic, double s) {
-    const double t = parameterAt(cubic, s);
-    const Vec2 d1 = cubic.firstDerivative(t);
-    return {cubic.point(t).y(), d1.y() / d1.x(), secondDerivativeAt(cubic, t)};
+    const auto& p = cubic.control;
+    const PowerCubic x(p[0].x(), p[1].x(), p[2].x(), p[3].x());
+    const PowerCubic y(p[0].y(), p[1].y(), p[2].y(), p[3].y());
+    const double t = parameterAt(x, p[3].x(), s);
+    const double dx = x.first(t);
+    const double dy = y.first(t);
+    return {y.value(t), dy / dx, (dx * y.second(t) - dy * x.second(t)) / (dx * dx * dx)};
 }
 
 GraphPoint evaluatePair(const BezierPair& pair, double s) {

@@ -155,6 +155,25 @@ bool clearlyFeasible(const CornerGeometry& corner, double m, const ChannelView& 
     return true;
 }
 
+// When every sample in the span cleared the chord bound m - reach (scanSide without binding),
+// the rooms and the chord are both linear between samples, so the chord (>= the deviation)
+// stays below the room everywhere if it does at the span ends (chord 0) and at S2 (chord m).
+bool chordClears(const CornerGeometry& corner, double m, const ChannelView& channel,
+                 const CornerRooms& rooms) {
+    const double s2 = corner.p2.x();
+    const Rooms begin = rooms.atAbscissa(s2 + m * corner.unitOffsets.sBegin());
+    const Rooms end = rooms.atAbscissa(s2 + m * corner.unitOffsets.sEnd());
+    if (std::min({begin.nearSide, begin.farSide, end.nearSide, end.farSide}) < 0.0) {
+        return false;
+    }
+    const std::size_t j = channel.lowerIndex(s2);
+    if (j < channel.s.size() && channel.s[j] == s2) {
+        return true; // S2 is a sample: checked by the scan
+    }
+    const Rooms middle = rooms.atAbscissa(s2);
+    return middle.nearSide >= m && middle.farSide >= 0.0;
+}
+
 // The original rule: bisection of the (monotone) predicate on [0, high].
 double bisect(const CornerGeometry& corner, double high, const ChannelView& channel, int checks,
               int steps) {
@@ -164,6 +183,45 @@ double bisect(const CornerGeometry& corner, double high, const ChannelView& chan
         (pairFeasible(pairAt(corner, mid), channel, checks) ? low : high) = mid;
     }
     return low;
+}
+
+// Lowers m to the bound of every binding sample on one side of S2 (direction -1: samples
+// before `split`, +1: from `split` on), scanning outward while the samples lie inside the
+// current span: farther ones have no deviation, so they cannot bind below m. Returns false when
+// the polyline itself violates the far side at a sample (then the bound is not monotone).
+bool scanSide(const CornerGeometry& corner, const ChannelView& channel, std::size_t split,
+              int direction, double& m, bool& binding) {
+    const bool right = direction > 0;
+    const double s2 = corner.p2.x();
+    const double slope = right ? corner.kOut : corner.kIn;
+    const double inverseEdge =
+        1.0 / (right ? corner.unitOffsets.sEnd() : corner.unitOffsets.sBegin()); // a / edge >= 0
+    const double sign = corner.sign;
+    const std::span<const double> nearBound = sign > 0.0 ? channel.rawMax : channel.rawMin;
+    const std::span<const double> farBound = sign > 0.0 ? channel.rawMin : channel.rawMax;
+    const double slack = kRoomTolerance - channel.clearance;
+    const std::size_t n = channel.s.size();
+    for (std::size_t j = right ? split : split - 1; j < n;
+         j += static_cast<std::size_t>(direction)) {
+        const double a = channel.s[j] - s2;
+        const double reach = a * inverseEdge; // the m at which the span edge reaches the sample
+        if (reach * (1.0 - 1e-9) > m) {
+            break;
+        }
+        const double line = corner.p2.y() + slope * a;
+        if (sign * (line - farBound[j]) + slack < 0.0) {
+            return false;
+        }
+        const double room = sign * (nearBound[j] - line) + slack;
+        // The deviation is convex on each side of S2 (one-signed theta'', §5.3), m at S2 and 0 at
+        // the span edge: below its chord m - reach. Such samples cannot bind.
+        if (room >= m - reach) {
+            continue;
+        }
+        binding = true;
+        m = std::min(m, a == 0.0 ? std::max(room, 0.0) : sampleBound(corner, a, room));
+    }
+    return true;
 }
 
 } // namespace
@@ -184,25 +242,11 @@ double exactEpsilon(const CornerGeometry& corner, double geometric, const Channe
     if (!(geometric > 0.0)) {
         return 0.0;
     }
-    const CornerRooms rooms(corner, channel);
-    const double s2 = corner.p2.x();
     double m = geometric;
-    bool farViolated = false;
-    const double beginEdge = corner.unitOffsets.sBegin(); // < 0
-    const double endEdge = corner.unitOffsets.sEnd();     // > 0
-    const std::size_t end = channel.upperIndex(s2 + geometric * corner.unitOffsets.sEnd());
-    for (std::size_t j = channel.lowerIndex(s2 + geometric * corner.unitOffsets.sBegin()); j < end;
-         ++j) {
-        const Rooms r = rooms.atSample(j);
-        farViolated = farViolated || r.farSide < 0.0;
-        const double a = channel.s[j] - s2;
-        // The deviation is convex on each side of S2 (one-signed theta'', §5.3), m at S2 and 0 at
-        // the span edge m * edge: below its chord m - |a| / |edge|. Such samples cannot bind.
-        if (r.nearSide >= m - a / (a < 0.0 ? beginEdge : endEdge)) {
-            continue;
-        }
-        m = std::min(m, a == 0.0 ? std::max(r.nearSide, 0.0) : sampleBound(corner, a, r.nearSide));
-    }
+    bool binding = false;
+    const std::size_t split = channel.upperIndex(corner.p2.x()); // S2 itself scans left
+    const bool farViolated = !scanSide(corner, channel, split, -1, m, binding) ||
+                             !scanSide(corner, channel, split, +1, m, binding);
     if (farViolated) { // not monotone in m: the original search, unchanged
         return pairFeasible(pairAt(corner, geometric), channel, checks)
                    ? geometric
@@ -210,6 +254,10 @@ double exactEpsilon(const CornerGeometry& corner, double geometric, const Channe
     }
     if (!(m > 0.0)) {
         return 0.0;
+    }
+    const CornerRooms rooms(corner, channel);
+    if (!binding && chordClears(corner, m, channel, rooms)) {
+        return m;
     }
     if (clearlyFeasible(corner, m, channel, rooms) ||
         pairFeasible(pairAt(corner, m), channel, checks)) {

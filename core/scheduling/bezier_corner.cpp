@@ -95,18 +95,24 @@ struct PowerCubic {
 // the cubic x(t), safeguarded by a bisection bracket: a few steps reach the round-off level that
 // the 50-60 plain bisection steps of §5.8 reach, which matters because every CL sample inside a
 // corner span is evaluated this way.
-double parameterAt(const PowerCubic& x, double x3, double s) {
+double parameterAt(const PowerCubic& x, double x3, double s, double guess) {
     if (s <= x.c0) {
         return 0.0;
     }
     if (s >= x3) {
         return 1.0;
     }
+    // A residual at the round-off level of evaluating x(t) cannot be reduced further.
+    const double converged =
+        8.0 * std::numeric_limits<double>::epsilon() * (std::abs(x.c0) + std::abs(x3 - x.c0));
     double low = 0.0;
     double high = 1.0;
-    double t = (s - x.c0) / (x3 - x.c0);
+    double t = guess > 0.0 && guess < 1.0 ? guess : (s - x.c0) / (x3 - x.c0);
     for (int step = 0; step < 100; ++step) {
         const double f = x.value(t) - s;
+        if (std::abs(f) <= converged) {
+            return t;
+        }
         (f < 0.0 ? low : high) = t;
         const double slope = x.first(t);
         double next = slope > 0.0 ? t - f / slope : 0.5 * (low + high);
@@ -126,14 +132,20 @@ double parameterAt(const PowerCubic& x, double x3, double s) {
 
 } // namespace
 
-GraphPoint evaluateCubic(const CubicBezier& cubic, double s) {
+GraphPoint evaluateCubic(const CubicBezier& cubic, double s, double& parameter) {
     const auto& p = cubic.control;
     const PowerCubic x(p[0].x(), p[1].x(), p[2].x(), p[3].x());
     const PowerCubic y(p[0].y(), p[1].y(), p[2].y(), p[3].y());
-    const double t = parameterAt(x, p[3].x(), s);
+    const double t = parameterAt(x, p[3].x(), s, parameter);
     const double dx = x.first(t);
     const double dy = y.first(t);
+    parameter = t; // Newton from here is a tangent step towards the next abscissa
     return {y.value(t), dy / dx, (dx * y.second(t) - dy * x.second(t)) / (dx * dx * dx)};
+}
+
+GraphPoint evaluateCubic(const CubicBezier& cubic, double s) {
+    double parameter = -1.0;
+    return evaluateCubic(cubic, s, parameter);
 }
 
 GraphPoint evaluatePair(const BezierPair& pair, double s) {

@@ -47,6 +47,9 @@ struct GraphPoint {
 // theta and its S-derivatives at abscissa s (clamped to the curve), t found by bisection on
 // the strictly increasing x(t) (spec §5.8).
 GraphPoint evaluateCubic(const CubicBezier& cubic, double s);
+// The same starting from a parameter guess in (0, 1) (outside: none), which is replaced by the
+// parameter found: walking the samples of one cubic in order, each starts from the previous.
+GraphPoint evaluateCubic(const CubicBezier& cubic, double s, double& parameter);
 GraphPoint evaluatePair(const BezierPair& pair, double s);
 // theta'' at a parameter value, from the analytic derivatives: (x'y'' - y'x'') / x'^3.
 double secondDerivativeAt(const CubicBezier& cubic, double t);

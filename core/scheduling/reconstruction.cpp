@@ -1,7 +1,6 @@
 #include "core/scheduling/reconstruction.h"
 
 #include "core/base/tolerances.h"
-#include "core/scheduling/plane_path.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +13,13 @@ ReconstructedPath reconstructAxes(std::span<const Vec3> centres, std::span<const
     const std::size_t n = std::min(centres.size(), thetaAbs.size());
     path.axes.reserve(n);
     path.tips.reserve(n);
+    // axisFromPlaneAngle with the tilt's sine and cosine taken once (the same arithmetic).
+    const double axial = std::sin(tiltB0);
+    const double inPlane = std::cos(tiltB0);
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec3 axis = axisFromPlaneAngle(thetaAbs[i], tiltB0, traversalSign);
+        const double angle = thetaAbs[i];
+        const Vec3 axis(axial, -traversalSign * std::sin(angle) * inPlane,
+                        std::cos(angle) * inPlane);
         path.axes.push_back(axis);
         path.tips.push_back(centres[i] - toolRadius * axis);
     }

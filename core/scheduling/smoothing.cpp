@@ -110,6 +110,8 @@ PathSamples evaluateSmoothedPath(const SmoothedPath& path, std::span<const doubl
     const std::vector<PolyVertex>& v = path.vertices;
     std::size_t segment = 0;
     std::size_t corner = 0;
+    double parameter = -1.0; // warm start along the current cubic (none yet)
+    const CubicBezier* cubic = nullptr;
     for (std::size_t i = 0; i < s.size(); ++i) {
         while (corner < path.corners.size() &&
                (path.corners[corner].limitedBy == CornerLimit::None ||
@@ -117,7 +119,15 @@ PathSamples evaluateSmoothedPath(const SmoothedPath& path, std::span<const doubl
             ++corner;
         }
         if (corner < path.corners.size() && path.corners[corner].curve.sBegin() <= s[i]) {
-            const GraphPoint p = evaluatePair(path.corners[corner].curve, s[i]);
+            const BezierPair& pair = path.corners[corner].curve;
+            // The cubic evaluatePair would choose.
+            const CubicBezier* current =
+                s[i] <= pair.first.control[3].x() ? &pair.first : &pair.second;
+            if (current != cubic) {
+                cubic = current;
+                parameter = -1.0;
+            }
+            const GraphPoint p = evaluateCubic(*cubic, s[i], parameter);
             out.theta[i] = p.value;
             out.dTheta[i] = p.first;
             out.ddTheta[i] = p.second;

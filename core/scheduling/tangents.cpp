@@ -22,28 +22,47 @@ double medianChord(std::span<const Vec2> points) {
     return *middle;
 }
 
-// e+_i (step = +1) or e-_i (step = -1, returned pointing forward: q_i - q_j). `found` is false
-// when every chord on that side is degenerate.
-Vec2 chordFrom(std::span<const Vec2> points, std::size_t i, int step, double length, bool& found) {
+struct Chord {
+    Vec2 vector = Vec2::Zero(); // e+_i, or e-_i pointing forward (q_i - q_j)
+    double norm = 0.0;
+    bool found = false; // false when every chord on that side is degenerate
+};
+
+Vec2 chordTo(std::span<const Vec2> points, std::size_t i, std::size_t j, int step) {
+    return step > 0 ? Vec2(points[j] - points[i]) : Vec2(points[i] - points[j]);
+}
+
+// Where no chord reaches `length` (near the path ends): the farthest non-degenerate one.
+Chord farthestChord(std::span<const Vec2> points, std::size_t i, int step) {
     const std::size_t n = points.size();
-    Vec2 farthest = Vec2::Zero();
-    double farthestNorm = 0.0;
-    found = false;
+    Chord farthest;
     for (std::size_t j = i; step > 0 ? j + 1 < n : j > 0;) {
         j = step > 0 ? j + 1 : j - 1;
-        const Vec2 chord = step > 0 ? Vec2(points[j] - points[i]) : Vec2(points[i] - points[j]);
+        const Vec2 chord = chordTo(points, i, j, step);
         const double norm = chord.norm();
-        if (norm >= length) {
-            found = true;
-            return chord;
-        }
-        if (norm > kDegenerateChordMm && (!found || norm > farthestNorm)) {
-            farthest = chord;
-            farthestNorm = norm;
-            found = true;
+        if (norm > kDegenerateChordMm && (!farthest.found || norm > farthest.norm)) {
+            farthest = {chord, norm, true};
         }
     }
     return farthest;
+}
+
+// e+_i (step = +1) or e-_i (step = -1): the first chord of length >= `length`. The walk
+// compares squared lengths and takes the square root only within a relative 1e-12 of the
+// threshold, which decides exactly as comparing the lengths would.
+Chord chordFrom(std::span<const Vec2> points, std::size_t i, int step, double length) {
+    const std::size_t n = points.size();
+    const double surelyLonger = length * length * (1.0 + 1e-12);
+    const double surelyShorter = length * length * (1.0 - 1e-12);
+    for (std::size_t j = i; step > 0 ? j + 1 < n : j > 0;) {
+        j = step > 0 ? j + 1 : j - 1;
+        const Vec2 chord = chordTo(points, i, j, step);
+        const double squared = chord.squaredNorm();
+        if (squared >= surelyLonger || (squared > surelyShorter && std::sqrt(squared) >= length)) {
+            return {chord, std::sqrt(squared), true};
+        }
+    }
+    return farthestChord(points, i, step);
 }
 
 double angleOf(const Vec2& v) {
@@ -64,23 +83,21 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
     field.turning.resize(n);
     field.curvature.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        bool hasForward = false;
-        bool hasBackward = false;
-        const Vec2 forward = chordFrom(points, i, +1, field.chordLengthMm, hasForward);
-        const Vec2 backward = chordFrom(points, i, -1, field.chordLengthMm, hasBackward);
-        if (!hasForward && !hasBackward) {
+        const Chord forward = chordFrom(points, i, +1, field.chordLengthMm);
+        const Chord backward = chordFrom(points, i, -1, field.chordLengthMm);
+        if (!forward.found && !backward.found) {
             return makeError(ErrorCode::Geometry,
                              "the projected path is degenerate at point " + std::to_string(i));
         }
         // [A] At the ends one side is missing: use the other, so tau = 0 there.
-        const Vec2& ePlus = hasForward ? forward : backward;
-        const Vec2& eMinus = hasBackward ? backward : forward;
-        forwardRaw[i] = angleOf(ePlus);
-        field.turning[i] = detail::wrapAngle(forwardRaw[i] - angleOf(eMinus));
+        const Chord& ePlus = forward.found ? forward : backward;
+        const Chord& eMinus = backward.found ? backward : forward;
+        forwardRaw[i] = angleOf(ePlus.vector);
+        field.turning[i] = detail::wrapAngle(forwardRaw[i] - angleOf(eMinus.vector));
         // [A] Normalised curvature: the chords' directions are the tangents at their
         // mid-points, so tau spans (|e+| + |e-|)/2 of arc. This keeps kappa_h in 1/mm
         // independent of the point density (the literal sum of tau / w of §1.6 is not).
-        field.curvature[i] = 2.0 * field.turning[i] / (ePlus.norm() + eMinus.norm());
+        field.curvature[i] = 2.0 * field.turning[i] / (ePlus.norm + eMinus.norm);
     }
     // Unwrapped along the whole path (geometry::unwrap, with the fast wrap).
     field.forwardAngle.resize(n);

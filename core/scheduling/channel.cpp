@@ -21,14 +21,15 @@ RawChannel buildRawChannel(const TangentField& tangents, std::span<const Concave
         channel.thetaMin[i] =
             channel.thetaMax[i] - units::kPi - tangents.turning[i] + 2.0 * inwardRad;
     }
-    const std::vector<double> convexMax = channel.thetaMax;
-    const std::vector<double> convexMin = channel.thetaMin;
     for (const ConcaveRun& run : runs) {
         // [A] A run without an exit (it reaches the path end) keeps its last sample's limit.
-        const std::size_t exit = std::min(run.exit, n - 1);
+        // Both limits are read before the run is overwritten; an exit is never inside a run,
+        // so no copy of the convex limits is needed.
+        const double exitMax = channel.thetaMax[std::min(run.exit, n - 1)];
+        const double entryMin = channel.thetaMin[run.entry];
         for (std::size_t j = run.entry; j < std::min(run.exit, n); ++j) {
-            channel.thetaMax[j] = convexMax[exit];
-            channel.thetaMin[j] = convexMin[run.entry];
+            channel.thetaMax[j] = exitMax;
+            channel.thetaMin[j] = entryMin;
         }
     }
     return channel;

@@ -31,6 +31,12 @@ AbsoluteLayer absoluteLayer(const PlanePath& path, const RawChannel& channel, co
                                                0.5 * (layer.rawMin[j] + layer.rawMax[j]));
     }
     layer.hull = monotoneHull(layer.rawMin, layer.rawMax, margin);
+    // Only LO, HI and the flags are used from here on: release the rest now, so that the next
+    // layer reuses the memory (fresh pages are the main cost of large paths).
+    layer.hull.lo0 = {};
+    layer.hull.hi0 = {};
+    layer.hull.marginLo = {};
+    layer.hull.marginHi = {};
     return layer;
 }
 
@@ -80,7 +86,7 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
     std::vector<LayerProblem> problems(count);
     for (std::size_t k = 0; k < count; ++k) {
         LayerProblem& p = problems[k];
-        const AbsoluteLayer& a = absolute[k];
+        AbsoluteLayer& a = absolute[k];
         p.span = split.layers[k];
         const MonotoneHull& h = a.hull;
         // §3.3 free ends: clamp the input orientation into the hull, keeping theta monotone.
@@ -94,18 +100,6 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
         p.reference = startAbs;
         p.startValue = 0.0;
         p.endValue = endAbs - startAbs;
-        const auto shifted = [startAbs](const std::vector<double>& values) {
-            std::vector<double> out(values);
-            for (double& v : out) {
-                v -= startAbs;
-            }
-            return out;
-        };
-        p.rawMin = shifted(a.rawMin);
-        p.rawMax = shifted(a.rawMax);
-        p.lo = shifted(h.lo);
-        p.hi = shifted(h.hi);
-        p.original = shifted(a.original);
         p.s.resize(a.rawMin.size());
         for (std::size_t i = 0; i < p.s.size(); ++i) {
             p.s[i] = path.arcLength[p.span.first + i] - path.arcLength[p.span.first];
@@ -121,6 +115,18 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
             addFlag(p, LayerStatus::ShortLayer);
         }
         checkEnds(p, a, startAbs, endAbs, k);
+        // The absolute vectors move into the problem and become relative in place.
+        const auto shifted = [startAbs](std::vector<double>& values) {
+            for (double& v : values) {
+                v -= startAbs;
+            }
+            return std::move(values);
+        };
+        p.rawMin = shifted(a.rawMin);
+        p.rawMax = shifted(a.rawMax);
+        p.lo = shifted(a.hull.lo);
+        p.hi = shifted(a.hull.hi);
+        p.original = shifted(a.original);
     }
     return problems;
 }

@@ -135,14 +135,15 @@ LayerResult::Corner::Bound boundOf(CornerLimit limit) {
     return LayerResult::Corner::Bound::None;
 }
 
-void fillCommon(LayerResult& r, const LayerProblem& p) {
-    r.s = p.s;
-    r.thetaOriginal = p.original;
-    r.thetaMin = p.rawMin;
-    r.thetaMax = p.rawMax;
-    r.lo = p.lo;
-    r.hi = p.hi;
-    r.flags = p.flags;
+// The problem's per-sample vectors become the result's diagnostics (moved, not copied).
+void fillCommon(LayerResult& r, LayerProblem&& p) {
+    r.s = std::move(p.s);
+    r.thetaOriginal = std::move(p.original);
+    r.thetaMin = std::move(p.rawMin);
+    r.thetaMax = std::move(p.rawMax);
+    r.lo = std::move(p.lo);
+    r.hi = std::move(p.hi);
+    r.flags = std::move(p.flags);
     r.junctionAngle = p.reference;
 }
 
@@ -191,15 +192,11 @@ void finiteDifferences(std::span<const double> s, std::span<const double> values
     }
 }
 
-LayerOutcome scheduleLayer(const LayerProblem& problem, const ScheduleParameters& parameters,
+LayerOutcome scheduleLayer(LayerProblem problem, const ScheduleParameters& parameters,
                            std::vector<std::size_t> inputIndex, std::size_t layerNumber) {
     const auto started = std::chrono::steady_clock::now();
     LayerOutcome out;
     LayerResult& r = out.result;
-    fillCommon(r, problem);
-    r.inputIndex = std::move(inputIndex);
-    r.first = r.inputIndex.empty() ? 0 : r.inputIndex.front();
-    r.last = r.inputIndex.empty() ? 0 : r.inputIndex.back();
     const bool keepOriginal = std::find(problem.flags.begin(), problem.flags.end(),
                                         LayerStatus::MonotoneInfeasible) != problem.flags.end();
     if (keepOriginal) {
@@ -219,6 +216,10 @@ LayerOutcome scheduleLayer(const LayerProblem& problem, const ScheduleParameters
             }
         }
     }
+    fillCommon(r, std::move(problem));
+    r.inputIndex = std::move(inputIndex);
+    r.first = r.inputIndex.empty() ? 0 : r.inputIndex.front();
+    r.last = r.inputIndex.empty() ? 0 : r.inputIndex.back();
     if (r.flags.empty()) {
         r.flags.push_back(LayerStatus::Ok);
     }

@@ -15,8 +15,9 @@ struct LayerOutcome {
     std::vector<std::string> warnings;
 };
 
-// `tangentChordMm` is l_t (for messages only); inputIndex maps layer samples to input indices.
-LayerOutcome scheduleLayer(const LayerProblem& problem, const ScheduleParameters& parameters,
+// inputIndex maps layer samples to input indices. The problem's per-sample vectors are moved
+// into the result.
+LayerOutcome scheduleLayer(LayerProblem problem, const ScheduleParameters& parameters,
                            std::vector<std::size_t> inputIndex, std::size_t layerNumber);
 
 // 3-point non-uniform differences (spec §8.1), exact for quadratics; used for kept originals.

@@ -88,6 +88,9 @@ Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<cons
     }
     PlanePath path;
     path.sampleOfInput.resize(centres.size());
+    path.centres.reserve(centres.size());
+    path.firstInput.reserve(centres.size());
+    path.arcLength.reserve(centres.size());
     double s = 0.0;
     for (std::size_t i = 0; i < centres.size(); ++i) {
         if (!path.centres.empty()) {
@@ -117,6 +120,8 @@ Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<cons
     if (std::cos(path.tiltB0) < 1e-6) {
         return makeError(ErrorCode::Geometry, "the tool axis is parallel to the rotary axis");
     }
+    path.points.reserve(path.centres.size());
+    path.originalAngle.reserve(path.centres.size());
     for (std::size_t k = 0; k < path.centres.size(); ++k) {
         const Vec3& q = path.centres[k];
         path.points.emplace_back(q.z(), -path.traversalSign * q.y());

@@ -94,9 +94,8 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
 
 // Runs every layer; a parallel run writes each result into its own slot, so it is identical
 // to the serial run.
-std::vector<LayerOutcome> runLayers(const std::vector<LayerProblem>& problems,
-                                    const PlanePath& path, const ScheduleParameters& p,
-                                    const CancelToken* cancel) {
+std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems, const PlanePath& path,
+                                    const ScheduleParameters& p, const CancelToken* cancel) {
     std::vector<LayerOutcome> outcomes(problems.size());
     std::atomic<std::size_t> next{0};
     auto worker = [&]() {
@@ -105,10 +104,11 @@ std::vector<LayerOutcome> runLayers(const std::vector<LayerProblem>& problems,
                 return;
             }
             std::vector<std::size_t> inputs;
+            inputs.reserve(problems[k].span.last - problems[k].span.first + 1);
             for (std::size_t i = problems[k].span.first; i <= problems[k].span.last; ++i) {
                 inputs.push_back(path.firstInput[i]);
             }
-            outcomes[k] = scheduleLayer(problems[k], p, std::move(inputs), k);
+            outcomes[k] = scheduleLayer(std::move(problems[k]), p, std::move(inputs), k);
         }
     };
     unsigned threads =
@@ -127,28 +127,31 @@ std::vector<LayerOutcome> runLayers(const std::vector<LayerProblem>& problems,
 
 void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput& input,
               std::vector<LayerOutcome>& outcomes) {
-    std::vector<double> sampleTheta(path.centres.size(), 0.0);
-    std::vector<double> sampleOriginal(path.centres.size(), 0.0);
+    const std::size_t n = input.centres.size();
+    result.thetaAbsolute.assign(n, 0.0);
+    result.thetaOriginalAbsolute.assign(n, 0.0);
     std::vector<bool> keepOriginal(path.centres.size(), false);
+    result.layers.reserve(outcomes.size());
+    // Each distinct sample's first input gets the layer values (a shared layer end is written
+    // by both layers, the later one wins, as before); merged duplicates copy them below.
     for (LayerOutcome& outcome : outcomes) {
         LayerResult& layer = outcome.result;
         const bool original = std::find(layer.flags.begin(), layer.flags.end(),
                                         LayerStatus::MonotoneInfeasible) != layer.flags.end();
         for (std::size_t j = 0; j < layer.theta.size(); ++j) {
-            const std::size_t sample = path.sampleOfInput[layer.inputIndex[j]];
-            sampleTheta[sample] = layer.junctionAngle + layer.theta[j];
-            sampleOriginal[sample] = layer.junctionAngle + layer.thetaOriginal[j];
-            keepOriginal[sample] = original;
+            const std::size_t first = layer.inputIndex[j];
+            result.thetaAbsolute[first] = layer.junctionAngle + layer.theta[j];
+            result.thetaOriginalAbsolute[first] = layer.junctionAngle + layer.thetaOriginal[j];
+            keepOriginal[path.sampleOfInput[first]] = original;
         }
         result.warnings.insert(result.warnings.end(), outcome.warnings.begin(),
                                outcome.warnings.end());
         result.layers.push_back(std::move(layer));
     }
-    const std::size_t n = input.centres.size();
     for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t sample = path.sampleOfInput[i];
-        result.thetaAbsolute.push_back(sampleTheta[sample]);
-        result.thetaOriginalAbsolute.push_back(sampleOriginal[sample]);
+        const std::size_t first = path.firstInput[path.sampleOfInput[i]]; // <= i
+        result.thetaAbsolute[i] = result.thetaAbsolute[first];
+        result.thetaOriginalAbsolute[i] = result.thetaOriginalAbsolute[first];
     }
     ReconstructedPath rebuilt = reconstructAxes(input.centres, result.thetaAbsolute, path.tiltB0,
                                                 path.traversalSign, input.toolRadius);
@@ -209,7 +212,7 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
     for (std::size_t b : stage->split.basePoints) {
         result.basePoints.push_back(path->firstInput[b]);
     }
-    const std::vector<LayerProblem> problems =
+    std::vector<LayerProblem> problems =
         buildLayerProblems(*path, stage->channel, stage->split, parameters.marginRad,
                            4.0 * stage->tangents.chordLengthMm);
     for (const LayerProblem& problem : problems) {

@@ -79,7 +79,7 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
     }
     TangentField field;
     field.chordLengthMm = std::max(minChordMm, medianFactor * medianChord(points));
-    std::vector<double> forwardRaw(n);
+    field.forwardAngle.resize(n); // first the wrapped angles, unwrapped in place below
     field.turning.resize(n);
     field.curvature.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -92,18 +92,18 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
         // [A] At the ends one side is missing: use the other, so tau = 0 there.
         const Chord& ePlus = forward.found ? forward : backward;
         const Chord& eMinus = backward.found ? backward : forward;
-        forwardRaw[i] = angleOf(ePlus.vector);
-        field.turning[i] = detail::wrapAngle(forwardRaw[i] - angleOf(eMinus.vector));
+        field.forwardAngle[i] = angleOf(ePlus.vector);
+        field.turning[i] = detail::wrapAngle(field.forwardAngle[i] - angleOf(eMinus.vector));
         // [A] Normalised curvature: the chords' directions are the tangents at their
         // mid-points, so tau spans (|e+| + |e-|)/2 of arc. This keeps kappa_h in 1/mm
         // independent of the point density (the literal sum of tau / w of §1.6 is not).
         field.curvature[i] = 2.0 * field.turning[i] / (ePlus.norm + eMinus.norm);
     }
-    // Unwrapped along the whole path (geometry::unwrap, with the fast wrap).
-    field.forwardAngle.resize(n);
-    field.forwardAngle[0] = forwardRaw[0];
+    // Unwrapped along the whole path (geometry::unwrap, with the fast wrap), in place: each
+    // step reads the wrapped value at i before overwriting it.
     for (std::size_t i = 1; i < n; ++i) {
-        field.forwardAngle[i] = detail::unwrapNear(forwardRaw[i], field.forwardAngle[i - 1]);
+        field.forwardAngle[i] =
+            detail::unwrapNear(field.forwardAngle[i], field.forwardAngle[i - 1]);
     }
     return field;
 }

@@ -52,6 +52,15 @@ void clipGlobalVisibility(RawChannel& channel, std::span<const Vec2> points, std
     }
 }
 
+void clipLeadBand(RawChannel& channel, const TangentField& tangents, double minRad, double maxRad) {
+    for (std::size_t i = 0; i < channel.thetaMax.size(); ++i) {
+        const double normal =
+            tangents.forwardAngle[i] - 0.5 * tangents.turning[i] - 0.5 * units::kPi;
+        channel.thetaMax[i] = std::min(channel.thetaMax[i], normal + maxRad);
+        channel.thetaMin[i] = std::max(channel.thetaMin[i], normal + minRad);
+    }
+}
+
 namespace {
 
 double median7(std::span<const double> values, std::size_t centre) {

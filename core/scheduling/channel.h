@@ -26,6 +26,12 @@ RawChannel buildRawChannel(const TangentField& tangents, std::span<const Concave
 // and thetaMin_i by the directions to the previous ones (each relative to the local limit).
 void clipGlobalVisibility(RawChannel& channel, std::span<const Vec2> points, std::size_t reach);
 
+// §2.4 [X] lead band: thetaMax_i <= theta_n,i + maxRad and thetaMin_i >= theta_n,i + minRad,
+// with theta_n the outward normal of the centre curve: the chord bisector ang(e+) - tau / 2
+// turned by -pi/2 (feed counter-clockwise), on the branch of the unwrapped forward angle. Where
+// the normal turns backwards (concave runs), the channel follows it: a pinch for §2.5.
+void clipLeadBand(RawChannel& channel, const TangentField& tangents, double minRad, double maxRad);
+
 // §4.6 [A, non-conservative] replace isolated downward outliers of thetaMax (upward of
 // thetaMin) by the centred median of 7. Returns how many samples changed.
 std::size_t despikeChannel(RawChannel& channel);

@@ -173,6 +173,34 @@ double minClearance(const LayerResult& r) {
     return clearance;
 }
 
+// §2.5 allow_nonmonotone: the original clamped into the raw channel, then a few passes of a
+// [1 2 1] / 4 filter, each clamped into the channel again, the ends at the layer's start and end
+// values (the junctions, clamped into the channel). [A] The
+// spec says only "project and smooth"; the filter removes sample-to-sample noise of the input
+// while never leaving the channel.
+std::vector<double> projectedOriginal(const LayerProblem& p) {
+    constexpr int kPasses = 4;
+    std::vector<double> theta(p.original.size());
+    for (std::size_t i = 0; i < theta.size(); ++i) {
+        theta[i] = std::clamp(p.original[i], p.rawMin[i], std::max(p.rawMin[i], p.rawMax[i]));
+    }
+    if (theta.size() >= 2) { // the junction values where they are inside: continuity
+        theta.front() = std::clamp(p.startValue, p.rawMin.front(),
+                                   std::max(p.rawMin.front(), p.rawMax.front()));
+        theta.back() =
+            std::clamp(p.endValue, p.rawMin.back(), std::max(p.rawMin.back(), p.rawMax.back()));
+    }
+    std::vector<double> next = theta;
+    for (int pass = 0; pass < kPasses; ++pass) {
+        for (std::size_t i = 1; i + 1 < theta.size(); ++i) {
+            const double average = 0.25 * (theta[i - 1] + 2.0 * theta[i] + theta[i + 1]);
+            next[i] = std::clamp(average, p.rawMin[i], std::max(p.rawMin[i], p.rawMax[i]));
+        }
+        std::swap(theta, next);
+    }
+    return theta;
+}
+
 } // namespace
 
 void finiteDifferences(std::span<const double> s, std::span<const double> values,
@@ -199,7 +227,15 @@ LayerOutcome scheduleLayer(LayerProblem problem, const ScheduleParameters& param
     LayerResult& r = out.result;
     const bool keepOriginal = std::find(problem.flags.begin(), problem.flags.end(),
                                         LayerStatus::MonotoneInfeasible) != problem.flags.end();
-    if (keepOriginal) {
+    if (keepOriginal && parameters.allowNonmonotone) {
+        r.theta = projectedOriginal(problem);
+        finiteDifferences(problem.s, r.theta, r.dTheta, r.ddTheta);
+        std::replace(problem.flags.begin(), problem.flags.end(), LayerStatus::MonotoneInfeasible,
+                     LayerStatus::NonMonotone);
+        out.warnings.push_back("layer " + std::to_string(layerNumber) +
+                               ": no monotone path, the projected original is used "
+                               "(the rotary axis may reverse)");
+    } else if (keepOriginal) {
         r.theta = problem.original;
         finiteDifferences(problem.s, r.theta, r.dTheta, r.ddTheta);
     } else {

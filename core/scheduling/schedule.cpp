@@ -29,6 +29,8 @@ const char* toString(LayerStatus status) {
         return "no concave run";
     case LayerStatus::ShortLayer:
         return "short layer";
+    case LayerStatus::NonMonotone:
+        return "non-monotone";
     }
     return "unknown";
 }
@@ -82,6 +84,9 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
         const auto reach = static_cast<std::size_t>(
             std::ceil(0.5 * static_cast<double>(path.points.size()) / turns));
         clipGlobalVisibility(stage.channel, path.points, reach);
+    }
+    if (p.leadBand) {
+        clipLeadBand(stage.channel, stage.tangents, p.leadBandMinRad, p.leadBandMaxRad);
     }
     if (p.despike) {
         if (const std::size_t changed = despikeChannel(stage.channel); changed > 0) {

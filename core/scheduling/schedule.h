@@ -30,6 +30,8 @@ enum class LayerStatus {
     MonotoneInfeasible, // no monotone path in the channel: the original orientation is kept
     NoConcaveRun,       // a base point of the layer is a fallback (§1.7)
     ShortLayer,         // S_e < 4 l_t or < 4 samples: no lead segments, end slope not forced
+    NonMonotone,        // no monotone path; allowNonmonotone: the original projected onto the
+                        // raw channel and smoothed (the rotary axis may reverse), §2.5
 };
 
 const char* toString(LayerStatus status);

@@ -59,6 +59,8 @@ Status validateParameters(const ScheduleParameters& p) {
         {"leadSearchMaxFraction", p.leadSearchMaxFraction, p.leadSearchMinFraction, 0.5},
         {"keyToleranceRad", p.keyToleranceRad, 0.0, 1e-3},
         {"finalClearanceRad", p.finalClearanceRad, 0.0, halfPi},
+        {"leadBandMinRad", p.leadBandMinRad, -units::kPi, units::kPi},
+        {"leadBandMaxRad", p.leadBandMaxRad, p.leadBandMinRad, units::kPi},
     };
     for (const auto& check : checks) {
         if (auto status = requireRange(check.name, check.value, check.low, check.high); !status) {

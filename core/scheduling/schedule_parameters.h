@@ -13,6 +13,7 @@ enum class BasePointRule { Exit, Entry };        // spec §1.7
 enum class Visibility { Local, Global };         // spec §2.4
 enum class LeadMode { Fixed, Auto };             // spec §3.4
 enum class KeyMode { Both, Worst };              // spec §4.3
+enum class Adjust { Recursive, Shift };          // spec §4.5
 enum class EpsilonRule { Paper, Exact };         // spec §5.4
 enum class CornerForm { Euclidean, GraphLimit }; // spec §5.2 / §5.5 (Euclidean in rad and mm)
 
@@ -37,12 +38,20 @@ struct ScheduleParameters {
     double concaveMinRunRevolutionFraction = 0.03;
     BasePointRule basePoint = BasePointRule::Exit;
 
-    // §2.4 (optional narrowing, off = local rule of the paper).
+    // §2.4 (optional narrowing, off = local rule of the paper). The lead band [X] intersects the
+    // channel with theta_n + [min, max], theta_n the outward surface normal angle (taken normal
+    // to the centre curve, whose tangent is the chord bisector of §1.5).
     Visibility visibility = Visibility::Local;
+    bool leadBand = false;
+    double leadBandMinRad = units::degToRad(-30.0);
+    double leadBandMaxRad = units::degToRad(30.0);
 
     // §2.5: margin m before the monotone hull; §4.6 optional despiking (non-conservative).
     double marginRad = units::degToRad(3.0);
     bool despike = false;
+    // §2.5: a layer without a monotone path keeps its original orientation (false), or gets the
+    // original projected onto the raw channel and smoothed, reversals allowed (true).
+    bool allowNonmonotone = false;
 
     // §3.4: lead-in/out fraction rho (fixed) or golden-section search over [min, max] (auto).
     LeadMode leadMode = LeadMode::Auto;
@@ -54,6 +63,8 @@ struct ScheduleParameters {
     // §4: key point insertion and feasibility tolerance (rad).
     KeyMode keyMode = KeyMode::Both;
     double keyToleranceRad = 1e-9;
+    // §4.5: crossings resolved by recursion only, or first by shifting the key inward.
+    Adjust adjust = Adjust::Recursive;
 
     // §5: corner construction, epsilon rule, final clearance (rad), bisection effort.
     EpsilonRule epsilonRule = EpsilonRule::Exact;

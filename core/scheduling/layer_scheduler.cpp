@@ -27,8 +27,8 @@ Attempt attempt(const LayerProblem& p, const ScheduleParameters& parameters, dou
     a.rho = rho;
     a.leads = leads;
     const double tol = parameters.keyToleranceRad;
-    a.lines =
-        linearise({p.s, p.lo, p.hi, p.startValue, p.endValue, a.leads, parameters.keyMode, tol});
+    a.lines = linearise({p.s, p.lo, p.hi, p.startValue, p.endValue, a.leads, parameters.keyMode,
+                         tol, parameters.adjust, 0.1 * parameters.marginRad});
     const SmoothingSettings settings{parameters.epsilonRule, parameters.cornerForm,
                                      parameters.finalClearanceRad, parameters.epsilonBisectionSteps,
                                      parameters.curveChecksPerCubic};

@@ -49,6 +49,34 @@ std::vector<PolyVertex> keysFor(const PolyVertex& a, const PolyVertex& b,
     return keys;
 }
 
+bool segmentFits(const PolyVertex& a, const PolyVertex& b, const LinearisationInput& in) {
+    for (std::size_t j = a.index + 1; j < b.index; ++j) {
+        if (!inside(lineAt(a, b, in.s[j]), in.lo[j], in.hi[j], in.toleranceRad)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// §4.5 shift: the key moved inward until u -> key -> w is monotone and inside the hull.
+std::optional<PolyVertex> shiftedKey(const PolyVertex& u, const PolyVertex& key,
+                                     const PolyVertex& w, const LinearisationInput& in) {
+    if (!(in.shiftStepRad > 0.0)) {
+        return std::nullopt;
+    }
+    const double direction = key.theta >= in.hi[key.index] ? -1.0 : 1.0; // upper key: down
+    const double reach = 0.5 * (in.hi[key.index] - in.lo[key.index]);
+    for (double shift = in.shiftStepRad; shift <= reach; shift += in.shiftStepRad) {
+        PolyVertex moved = key;
+        moved.theta = key.theta + direction * shift;
+        if (moved.theta >= u.theta && moved.theta <= w.theta && segmentFits(u, moved, in) &&
+            segmentFits(moved, w, in)) {
+            return moved;
+        }
+    }
+    return std::nullopt;
+}
+
 // refine(A, B) of §4.3 as an explicit depth-first stack (no recursion depth limit): appends
 // the vertices after `a` up to and including `b`, left to right.
 void refine(const PolyVertex& a, const PolyVertex& b, const LinearisationInput& in,
@@ -61,6 +89,14 @@ void refine(const PolyVertex& a, const PolyVertex& b, const LinearisationInput& 
         if (keys.empty()) {
             out.vertices.push_back(w);
             continue;
+        }
+        if (in.adjust == Adjust::Shift && keys.size() == 1) {
+            if (const auto moved = shiftedKey(u, keys.front(), w, in)) {
+                out.keyPoints.push_back(*moved);
+                out.vertices.push_back(*moved);
+                out.vertices.push_back(w);
+                continue;
+            }
         }
         out.keyPoints.insert(out.keyPoints.end(), keys.begin(), keys.end());
         stack.emplace_back(keys.back(), w);

@@ -31,6 +31,11 @@ struct LinearisationInput {
     LeadChoice leads;
     KeyMode keyMode = KeyMode::Both;
     double toleranceRad = 1e-9;
+    // §4.5 adjust = shift: a single key is first moved inward (upper keys down, lower keys up)
+    // in steps of shiftStepRad (m / 10) up to half the local hull width, until both new
+    // segments are inside; otherwise the recursion runs as usual.
+    Adjust adjust = Adjust::Recursive;
+    double shiftStepRad = 0.0;
 };
 
 struct Linearisation {

@@ -273,5 +273,18 @@ TEST(ChannelOptions, DespikeInThePipelineReportsWhatItChanged) {
     expectMonotoneInsideTheChannel(*result);
 }
 
+// §4.5 adjust = shift in the pipeline: the same invariants as the recursive default.
+TEST(ChannelOptions, ShiftAdjustmentKeepsThePipelineInvariants) {
+    ScheduleParameters parameters = bestPreset();
+    parameters.adjust = Adjust::Shift;
+    auto result = schedule(helix(3.0), parameters);
+    ASSERT_TRUE(result.has_value());
+    expectMonotoneInsideTheChannel(*result);
+    for (std::size_t k = 1; k + 1 < result->layers.size(); ++k) {
+        EXPECT_NEAR(result->layers[k].dTheta.front(), 0.0, 1e-9);
+        EXPECT_NEAR(result->layers[k].dTheta.back(), 0.0, 1e-9);
+    }
+}
+
 } // namespace
 } // namespace bladeaxis::scheduling

@@ -107,6 +107,29 @@ TEST(Linearisation, KeyPointsKeepThePolylineMonotoneAndInsideTheHull) {
     }
 }
 
+// §4.5 adjust = shift: keys moved off the hull boundary (Fig. 7b of the paper) where that makes
+// both new segments feasible; the polyline keeps every invariant of the recursive mode.
+TEST(Linearisation, ShiftModeMovesKeysInwardAndKeepsThePolylineValid) {
+    std::size_t shifted = 0;
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        const Layer layer = wigglyLayer(seed);
+        const double end = std::max(layer.lo.back(), 2.0 * kPi);
+        const LeadChoice leads =
+            chooseLeads(layer.s, layer.lo, layer.hi, 0.0, end, 0.1, false, false, 1e-9);
+        const Linearisation lines = linearise({layer.s, layer.lo, layer.hi, 0.0, end, leads,
+                                               KeyMode::Worst, 1e-9, Adjust::Shift, 0.005});
+        EXPECT_EQ(lines.vertices.front().theta, 0.0);
+        EXPECT_EQ(lines.vertices.back().theta, end);
+        expectValidPolyline(lines.vertices, layer);
+        for (const PolyVertex& key : lines.keyPoints) {
+            const bool onHull = std::abs(key.theta - layer.hi[key.index]) < 1e-12 ||
+                                std::abs(key.theta - layer.lo[key.index]) < 1e-12;
+            shifted += onHull ? 0 : 1;
+        }
+    }
+    EXPECT_GT(shifted, 0u);
+}
+
 TEST(Linearisation, FreeEndsHaveNoLeadSegment) {
     const Layer layer = wideLayer();
     const LeadChoice leads =

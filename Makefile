@@ -16,7 +16,7 @@ build: configure
 	cmake --build --preset dev -j $(JOBS)
 
 demo: build
-	$(BUILD_DIR)/app/bladeaxis --batch --demo --out out/demo
+	$(BUILD_DIR)/app/bladeaxis --batch --demo --out out/demo -o out/demo/demo_blade_rescheduled.nc
 
 test: build
 	ctest --preset dev -j $(JOBS)
@@ -25,7 +25,7 @@ bench: build
 	bash tests/bench/run_benchmarks.sh $(BUILD_DIR)
 
 format:
-	find core app ui tests -name '*.h' -o -name '*.cpp' | xargs clang-format -i
+	find core app tests $$(test -d ui && echo ui) -name '*.h' -o -name '*.cpp' | xargs clang-format -i
 
 clean:
 	rm -rf build out

@@ -109,7 +109,7 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
                    "Machine file (JSON); default: built-in blade machine");
     cli.add_option("--tool-radius", raw.toolRadius.text,
                    "Ball radius R in mm (overrides the file)");
-    cli.add_option("-o,--out", raw.out, "Output folder for report.json and axes.csv");
+    cli.add_option("--out", raw.out, "Output folder for report.json, axes.csv and layers.csv");
     cli.add_option("--feed", raw.feed.text, "Evaluate at this constant feed, mm/min");
     cli.add_option("--feed-reference", raw.feedReference, "Path parameter: tip or centre")
         ->check(CLI::IsMember({"tip", "centre"}));
@@ -180,11 +180,11 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
             return std::unexpected(value->error());
         }
     }
-    if (**toolRadius) {
-        options.job.toolRadius = **toolRadius;
+    if (*toolRadius) { // keeps a job file's radius unless the option is given
+        options.job.toolRadius = *toolRadius;
     }
-    if (**feed) {
-        options.job.analysis.feedOverride = units::perMinuteToPerSecond(***feed);
+    if (*feed) {
+        options.job.analysis.feedOverride = units::perMinuteToPerSecond(**feed);
     }
     options.generate.toolRadius = **toolRadius;
     options.generate.revolutions = **revolutions;

@@ -179,7 +179,17 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
-    JobResult result{*machine, std::move(*program), std::move(text)};
+    JobResult result{.machine = *machine,
+                     .program = std::move(*program),
+                     .programText = std::move(text),
+                     .toolRadius = std::nullopt,
+                     .pass = {},
+                     .axes = {},
+                     .original = {},
+                     .constantFeed = {},
+                     .rescheduled = std::nullopt,
+                     .warnings = {},
+                     .seconds = 0.0};
     result.toolRadius = spec.toolRadius   ? spec.toolRadius
                         : generatedRadius ? generatedRadius
                                           : result.program.path().toolRadius;

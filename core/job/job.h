@@ -23,6 +23,10 @@ struct JobSpec {
     std::filesystem::path machineFile; // empty: the built-in default blade machine
     std::optional<double> toolRadius;  // mm; overrides the radius stated in a CL file
     analysis::AxisProfileOptions analysis;
+    bool reschedule = true; // false: analyse the input only (`--analyse-only`)
+    scheduling::ScheduleParameters parameters = scheduling::bestPreset();
+    std::string presetName = "best";     // recorded in the report; "custom" once edited
+    std::filesystem::path outputProgram; // the re-scheduled program; empty: not written
     std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none
 };
 

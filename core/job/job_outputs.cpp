@@ -81,7 +81,24 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
 
 } // namespace
 
-Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
+namespace {
+
+// The re-scheduled program is written first: a report never describes a program that is not
+// on disk. The input is never a target (writeFileAtomically refuses it, also through links).
+Status writeOutputProgram(const JobSpec& spec, const JobResult& result,
+                          const std::vector<fs::path>& inputs) {
+    if (spec.outputProgram.empty()) {
+        return {};
+    }
+    if (!result.rescheduled) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "an output program needs re-scheduling; it was not run",
+                         {spec.outputProgram.string()});
+    }
+    return writeFileAtomically(spec.outputProgram, result.rescheduled->programText, inputs);
+}
+
+Status createOutputFolder(const JobSpec& spec) {
     if (spec.outputDir.empty()) {
         return {};
     }
@@ -91,8 +108,11 @@ Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
         return makeError(ErrorCode::WriteFailed, "cannot create the output folder: " + ec.message(),
                          {spec.outputDir.string()});
     }
-    const std::vector<fs::path> inputs =
-        spec.demo ? std::vector<fs::path>{} : std::vector<fs::path>{spec.program};
+    return {};
+}
+
+Status writeReportFolder(const JobSpec& spec, const JobResult& result,
+                         const std::vector<fs::path>& inputs) {
     if (spec.demo) {
         if (auto status =
                 writeFileAtomically(spec.outputDir / kDemoProgramName, result.programText);
@@ -107,11 +127,37 @@ Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
         !status) {
         return status;
     }
-    return writeFileAtomically(spec.outputDir / "report.json", reportJsonText(result), inputs);
+    if (result.rescheduled) {
+        if (auto status =
+                writeFileAtomically(spec.outputDir / "layers.csv",
+                                    report::layersCsv(result.rescheduled->schedule), inputs);
+            !status) {
+            return status;
+        }
+    }
+    return writeFileAtomically(spec.outputDir / "report.json", reportJsonText(result, &spec),
+                               inputs);
 }
 
-std::string reportJsonText(const JobResult& result) {
-    return reportJson(result).dump(2) + "\n";
+} // namespace
+
+Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
+    const std::vector<fs::path> inputs =
+        spec.demo ? std::vector<fs::path>{} : std::vector<fs::path>{spec.program};
+    if (auto status = createOutputFolder(spec); !status) {
+        return status;
+    }
+    if (auto status = writeOutputProgram(spec, result, inputs); !status) {
+        return status;
+    }
+    if (spec.outputDir.empty()) {
+        return {};
+    }
+    return writeReportFolder(spec, result, inputs);
+}
+
+std::string reportJsonText(const JobResult& result, const JobSpec* spec) {
+    return reportJson(result, spec).dump(2) + "\n";
 }
 
 namespace {

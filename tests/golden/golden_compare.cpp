@@ -117,8 +117,9 @@ void compareCsv(const std::string& expected, const std::string& actual, Comparis
             const auto b = bladeaxis::parseNumber(got[cell]);
             const bool same = (a && b) ? closeEnough(*a, *b) : want[cell] == got[cell];
             if (!same) {
-                result.add("row " + std::to_string(row + 1) + " column " + std::to_string(cell + 1) +
-                           ": expected " + want[cell] + ", got " + got[cell]);
+                result.add("row " + std::to_string(row + 1) + " column " +
+                           std::to_string(cell + 1) + ": expected " + want[cell] + ", got " +
+                           got[cell]);
             }
         }
     }

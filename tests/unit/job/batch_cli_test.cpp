@@ -8,13 +8,13 @@
 namespace bladeaxis::app {
 namespace {
 
-struct Run {
+struct CliRun {
     int code;
     std::string out;
     std::string err;
 };
 
-Run run(std::vector<std::string> arguments) {
+CliRun run(std::vector<std::string> arguments) {
     arguments.insert(arguments.begin(), "bladeaxis");
     std::ostringstream out;
     std::ostringstream err;
@@ -23,26 +23,26 @@ Run run(std::vector<std::string> arguments) {
 }
 
 TEST(BatchCli, HelpListsTheExitCodes) {
-    const Run result = run({"--batch", "--help"});
+    const CliRun result = run({"--batch", "--help"});
     EXPECT_EQ(result.code, kExitOk);
     EXPECT_NE(result.out.find("Exit codes"), std::string::npos);
     EXPECT_NE(result.out.find("--machine"), std::string::npos);
 }
 
 TEST(BatchCli, VersionPrintsTheVersion) {
-    const Run result = run({"--batch", "--version"});
+    const CliRun result = run({"--batch", "--version"});
     EXPECT_EQ(result.code, kExitOk);
     EXPECT_EQ(result.out.rfind("bladeaxis ", 0), 0u);
 }
 
 TEST(BatchCli, NoProgramIsAUsageError) {
-    const Run result = run({"--batch"});
+    const CliRun result = run({"--batch"});
     EXPECT_EQ(result.code, kExitUsage);
     EXPECT_NE(result.err.find("expected a program"), std::string::npos);
 }
 
 TEST(BatchCli, NonNumericToolRadiusIsAUsageError) {
-    const Run result = run({"--batch", "--demo", "--tool-radius", "8,5"});
+    const CliRun result = run({"--batch", "--demo", "--tool-radius", "8,5"});
     EXPECT_EQ(result.code, kExitUsage);
     EXPECT_NE(result.err.find("--tool-radius: expected a positive number, got '8,5'"),
               std::string::npos);
@@ -53,13 +53,13 @@ TEST(BatchCli, UnknownOptionIsAUsageError) {
 }
 
 TEST(BatchCli, MissingMachineFileExitsWithTheMachineCode) {
-    const Run result = run({"--batch", "--demo", "--machine", "/nonexistent/m.json"});
+    const CliRun result = run({"--batch", "--demo", "--machine", "/nonexistent/m.json"});
     EXPECT_EQ(result.code, kExitMachine);
     EXPECT_NE(result.err.find("/nonexistent/m.json"), std::string::npos);
 }
 
 TEST(BatchCli, DemoPrintsASummaryWithReversals) {
-    const Run result = run({"--batch", "--demo"});
+    const CliRun result = run({"--batch", "--demo"});
     EXPECT_EQ(result.code, kExitOk) << result.err;
     EXPECT_NE(result.out.find("reversals"), std::string::npos);
 }

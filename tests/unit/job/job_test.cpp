@@ -81,8 +81,10 @@ TEST(Job, GeneratedAptProgramAnalysesLikeItsGcodeTwin) {
     CancelToken cancel;
     JobSpec spec;
     spec.program = dir / "twin.nc";
+    spec.toolRadius = gcode->toolRadius; // G-code does not state the ball radius
     auto fromGcode = runJob(spec, progress, cancel);
     spec.program = dir / "twin.cls";
+    spec.toolRadius.reset(); // the CL file states it (CUTTER)
     auto fromApt = runJob(spec, progress, cancel);
     fs::remove_all(dir);
     ASSERT_TRUE(fromGcode.has_value()) << fromGcode.error().toString();
@@ -90,6 +92,11 @@ TEST(Job, GeneratedAptProgramAnalysesLikeItsGcodeTwin) {
     EXPECT_EQ(fromGcode->original.aReversals.count, fromApt->original.aReversals.count);
     EXPECT_NEAR(fromGcode->original.pathLength, fromApt->original.pathLength,
                 1e-3 * fromGcode->original.pathLength);
+    ASSERT_TRUE(fromGcode->rescheduled && fromApt->rescheduled);
+    EXPECT_EQ(fromGcode->rescheduled->profile.aReversals.count,
+              fromApt->rescheduled->profile.aReversals.count);
+    EXPECT_NEAR(fromGcode->rescheduled->constantFeed.time, fromApt->rescheduled->constantFeed.time,
+                1e-2 * fromGcode->rescheduled->constantFeed.time);
 }
 
 TEST(DemoJob, OutputsDoNotDependOnADecimalCommaLocale) {

@@ -178,7 +178,7 @@ std::string rescheduledSummary(const JobResult& result) {
     const auto& a1 = after.axis(AxisId::A);
     std::size_t flagged = 0;
     for (const auto& layer : outcome.schedule.layers) {
-        flagged += layer.flags.empty() ? 0 : 1;
+        flagged += scheduling::isFlagged(layer) ? 1 : 0;
     }
     std::string text = "re-scheduled " + std::to_string(outcome.schedule.layers.size()) +
                        " layers (" + std::to_string(flagged) + " flagged, " +

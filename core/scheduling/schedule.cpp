@@ -17,6 +17,11 @@
 
 namespace bladeaxis::scheduling {
 
+bool isFlagged(const LayerResult& layer) {
+    return std::ranges::any_of(layer.flags,
+                               [](LayerStatus status) { return status != LayerStatus::Ok; });
+}
+
 const char* toString(LayerStatus status) {
     switch (status) {
     case LayerStatus::Ok:

@@ -57,6 +57,9 @@ struct LayerResult {
     double seconds = 0.0;              // wall time of the per-layer stage
 };
 
+// True when a layer carries a status other than Ok: a finding the engineer should review.
+bool isFlagged(const LayerResult& layer);
+
 struct ScheduleResult {
     std::vector<LayerResult> layers;
     std::vector<Vec3> newAxes, newTips;        // per input sample

@@ -186,11 +186,11 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     if (*feed) {
         options.job.analysis.feedOverride = units::perMinuteToPerSecond(**feed);
     }
-    options.generate.toolRadius = **toolRadius;
-    options.generate.revolutions = **revolutions;
-    options.generate.leadDeg = **lead;
-    options.generate.tiltDeg = **tilt;
-    options.generate.chordalTolerance = **tolerance;
+    options.generate.toolRadius = *toolRadius;
+    options.generate.revolutions = *revolutions;
+    options.generate.leadDeg = *lead;
+    options.generate.tiltDeg = *tilt;
+    options.generate.chordalTolerance = *tolerance;
     return {};
 }
 

@@ -1,6 +1,6 @@
 # Runs one golden case (see CMakeLists.txt in this folder for the layout).
 file(REMOVE_RECURSE "${OUT_DIR}")
-file(MAKE_DIRECTORY "${OUT_DIR}")
+file(MAKE_DIRECTORY "${OUT_DIR}/out")
 file(STRINGS "${CASE_DIR}/args.txt" raw_args)
 set(args "")
 foreach(arg IN LISTS raw_args)

@@ -53,6 +53,7 @@ struct RawOptions {
     NumberOption toolRadius{"", "--tool-radius", true};
     NumberOption feed{"", "--feed", true};
     NumberOption revolutions{"", "--revolutions", true};
+    NumberOption pitch{"", "--pitch", true};
     NumberOption lead{"", "--lead-deg", false};
     NumberOption tilt{"", "--tilt-deg", false};
     NumberOption tolerance{"", "--tolerance", true};
@@ -127,6 +128,8 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     generate->add_option("--format", raw.format, "gcode or apt")
         ->check(CLI::IsMember({"gcode", "apt"}));
     generate->add_option("--revolutions", raw.revolutions.text, "Number of revolutions");
+    generate->add_option("--pitch", raw.pitch.text,
+                         "Advance along the rotary axis per revolution, mm");
     generate->add_option("--lead-deg", raw.lead.text, "Lead angle of the original CAM orientation");
     generate->add_option("--tilt-deg", raw.tilt.text, "Fixed B tilt");
     generate->add_option("--tolerance", raw.tolerance.text,
@@ -172,10 +175,11 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     auto toolRadius = readNumber(raw.toolRadius);
     auto feed = readNumber(raw.feed);
     auto revolutions = readNumber(raw.revolutions);
+    auto pitch = readNumber(raw.pitch);
     auto lead = readNumber(raw.lead);
     auto tilt = readNumber(raw.tilt);
     auto tolerance = readNumber(raw.tolerance);
-    for (const auto* value : {&toolRadius, &feed, &revolutions, &lead, &tilt, &tolerance}) {
+    for (const auto* value : {&toolRadius, &feed, &revolutions, &pitch, &lead, &tilt, &tolerance}) {
         if (!value->has_value()) {
             return std::unexpected(value->error());
         }
@@ -188,6 +192,7 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     }
     options.generate.toolRadius = *toolRadius;
     options.generate.revolutions = *revolutions;
+    options.generate.pitch = *pitch;
     options.generate.leadDeg = *lead;
     options.generate.tiltDeg = *tilt;
     options.generate.chordalTolerance = *tolerance;

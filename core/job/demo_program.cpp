@@ -38,13 +38,16 @@ Result<blade::HelicalPathSpec> pathSpecFor(const GenerateRequest& request) {
         spec.toolRadius = *request.toolRadius;
     }
     if (request.revolutions) {
-        if (*request.revolutions < 1.0 || *request.revolutions > 1000.0 ||
+        if (*request.revolutions < 1.0 || *request.revolutions > 100000.0 ||
             std::floor(*request.revolutions) != *request.revolutions) {
             return makeError(ErrorCode::InvalidArgument,
-                             "--revolutions: expected a whole number from 1 to 1000, got " +
+                             "--revolutions: expected a whole number from 1 to 100000, got " +
                                  formatShortest(*request.revolutions));
         }
         spec.revolutions = static_cast<int>(*request.revolutions);
+    }
+    if (request.pitch) {
+        spec.pitch = *request.pitch;
     }
     if (request.leadDeg) {
         spec.leadAngle = units::degToRad(*request.leadDeg);

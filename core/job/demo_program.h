@@ -18,6 +18,7 @@ struct GenerateRequest {
     std::string format = "gcode";             // gcode | apt
     std::optional<double> toolRadius;         // mm
     std::optional<double> revolutions;
+    std::optional<double> pitch;            // mm of x per revolution
     std::optional<double> leadDeg;          // lead of the original CAM orientation, deg
     std::optional<double> tiltDeg;          // fixed B, deg
     std::optional<double> chordalTolerance; // mm

@@ -57,6 +57,12 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
     const std::vector<int> lines = passLines(result);
     report::BeforeAfter data{&result.original, &outcome.profile, result.axes, outcome.axes, lines};
     json["layers"] = report::layersJson(outcome.schedule, data);
+    const auto& stages = outcome.stageSeconds;
+    json["timing"] = {{"schedule_s", stages.schedule},
+                      {"kinematics_s", stages.kinematics},
+                      {"rewrite_s", stages.rewrite},
+                      {"verify_s", stages.verify},
+                      {"analysis_s", stages.analysis}};
     return json;
 }
 

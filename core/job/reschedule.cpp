@@ -6,7 +6,9 @@
 #include "core/kinematics/kinematics.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <future>
 
 namespace bladeaxis::job {
 
@@ -122,6 +124,25 @@ RescheduleOutcome outcomeFrom(scheduling::ScheduleResult schedule, std::span<con
     return outcome;
 }
 
+Result<analysis::AxisProfile> analyseNewMotion(const RescheduleInput& input,
+                                               const RescheduleOutcome& outcome) {
+    return analysis::analyseAxisMotion(outcome.axes, outcome.records, input.analysis);
+}
+
+// Seconds since the previous lap (or construction).
+class StageClock {
+  public:
+    double lap() {
+        const auto now = std::chrono::steady_clock::now();
+        const double seconds = std::chrono::duration<double>(now - m_last).count();
+        m_last = now;
+        return seconds;
+    }
+
+  private:
+    std::chrono::steady_clock::time_point m_last = std::chrono::steady_clock::now();
+};
+
 Status checkOutcome(const RescheduleOutcome& outcome, const std::string& file) {
     if (!outcome.schedule.check.passes()) {
         return makeError(ErrorCode::CheckFailed,
@@ -153,6 +174,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
             ErrorCode::InvalidArgument,
             "the ball radius is not known: give --tool-radius (G-code does not state it)");
     }
+    StageClock clock;
     auto schedule = scheduling::schedule(scheduleInputOf(input), input.parameters, &cancel);
     if (!schedule) {
         Error error = schedule.error();
@@ -162,17 +184,25 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(error);
     }
     RescheduleOutcome outcome = outcomeFrom(std::move(*schedule), passOf(input));
+    outcome.stageSeconds.schedule = clock.lap();
     auto axes = newMachineAxes(input, outcome.records);
     if (!axes) {
         return std::unexpected(axes.error());
     }
     outcome.axes = std::move(*axes);
+    outcome.stageSeconds.kinematics = clock.lap();
     auto text = rewriteProgram(input, outcome.records, outcome.axes);
     if (!text) {
         return std::unexpected(text.error());
     }
     outcome.programText = std::move(*text);
-    auto deviation = verifyCentres(input, outcome.programText);
+    outcome.stageSeconds.rewrite = clock.lap();
+    // The re-read check and the analysis of the new motion are independent: run them at once.
+    auto analysed = std::async(input.analyseNewMotion ? std::launch::async : std::launch::deferred,
+                               [&] { return analyseNewMotion(input, outcome); });
+    auto deviation =
+        input.verifyByRereading ? verifyCentres(input, outcome.programText) : Result<double>(0.0);
+    outcome.stageSeconds.verify = clock.lap();
     if (!deviation) {
         return std::unexpected(deviation.error());
     }
@@ -180,12 +210,15 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     if (auto status = checkOutcome(outcome, input.program->path().sourceFile); !status) {
         return std::unexpected(status.error());
     }
-    auto profile = analysis::analyseAxisMotion(outcome.axes, outcome.records, input.analysis);
-    if (!profile) {
-        return std::unexpected(profile.error());
+    if (input.analyseNewMotion) {
+        auto profile = analysed.get();
+        if (!profile) {
+            return std::unexpected(profile.error());
+        }
+        outcome.profile = std::move(*profile);
+        outcome.constantFeed = analysis::constantFeedTime(outcome.profile, *input.machine, false);
     }
-    outcome.profile = std::move(*profile);
-    outcome.constantFeed = analysis::constantFeedTime(outcome.profile, *input.machine, false);
+    outcome.stageSeconds.analysis = clock.lap(); // what the analysis added after the check
     return outcome;
 }
 

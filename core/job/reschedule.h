@@ -29,6 +29,10 @@ struct RescheduleOutcome {
     double maxCentreDeviationMm = 0.0;
     double minChannelClearanceRad = 0.0;
     std::size_t layersKeptOriginal = 0; // MonotoneInfeasible layers
+    // Wall time of each stage, s: what a user waits for and what the benchmarks break down.
+    struct StageSeconds {
+        double schedule = 0.0, kinematics = 0.0, rewrite = 0.0, verify = 0.0, analysis = 0.0;
+    } stageSeconds;
 };
 
 struct RescheduleInput {
@@ -40,6 +44,9 @@ struct RescheduleInput {
     double toolRadius = 0.0;
     scheduling::ScheduleParameters parameters;
     analysis::AxisProfileOptions analysis;
+    // Both on in every job; the benchmarks switch them off to time read-schedule-write alone.
+    bool verifyByRereading = true;
+    bool analyseNewMotion = true;
 };
 
 // Largest ball-centre deviation accepted when the written program is read back: the program's

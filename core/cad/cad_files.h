@@ -1,0 +1,42 @@
+#pragma once
+// STEP (ISO 10303-21, AP214) and IGES files of blade geometry.
+//
+// Writing: the shape in mm is written in the requested file unit (OpenCASCADE scales the
+// coordinates); outputs are written to a temporary sibling and renamed into place.
+// Reading: faces, shells and solids are transferred (curves and points alone are refused),
+// coordinates are converted from the file's unit to mm, then the caller's placement puts the
+// blade relative to the rotary axis. Every failure is a Result error naming the file and what
+// was expected; OpenCASCADE exceptions never escape.
+
+#include "core/base/error.h"
+#include "core/cad/cad_shape.h"
+#include "core/geometry/vec.h"
+
+#include <filesystem>
+
+namespace bladeaxis::cad {
+
+enum class CadFormat { Step, Iges };
+
+enum class LengthUnit { Millimetre, Inch, Metre };
+
+// Rigid placement of the file's geometry in W: p_W = rotation * p_file + translation (mm).
+// The rotation must be orthonormal with determinant +1.
+struct Placement {
+    Mat3 rotation = Mat3::Identity();
+    Vec3 translation = Vec3::Zero();
+};
+
+// Errors: InvalidArgument (null or face-less shape), WriteFailed.
+Status writeCadFile(const CadShape& shape, const std::filesystem::path& path, CadFormat format,
+                    LengthUnit unit = LengthUnit::Millimetre);
+
+// The format from the content ("ISO-10303-21;" header, or the IGES start/global section columns),
+// falling back to the extension (.step .stp .iges .igs); Parse error when neither tells.
+Result<CadFormat> detectCadFormat(const std::filesystem::path& path);
+
+// Errors: FileNotFound, FileUnreadable, Parse (empty, not STEP/IGES, malformed), Geometry (no
+// face in the file, e.g. curves only), InvalidArgument (placement not a rotation).
+Result<CadShape> readCadFile(const std::filesystem::path& path, const Placement& placement = {});
+
+} // namespace bladeaxis::cad

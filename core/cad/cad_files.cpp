@@ -4,9 +4,14 @@
 
 #include <BRepBuilderAPI_Transform.hxx>
 #include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Controller.hxx>
 #include <IGESControl_Reader.hxx>
 #include <IGESControl_Writer.hxx>
 #include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
+#include <STEPControl_Controller.hxx>
 #include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TopExp_Explorer.hxx>
@@ -20,6 +25,23 @@
 
 namespace bladeaxis::cad {
 namespace fs = std::filesystem;
+
+std::mutex& dataExchangeMutex() {
+    static std::mutex mutex;
+    static const bool ready = [] {
+        // The data-exchange parameters exist only once the controllers are registered: setting
+        // a unit before that would be silently ignored.
+        STEPControl_Controller::Init();
+        IGESControl_Controller::Init();
+        const Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->Printers();
+        for (Message_SequenceOfPrinters::Iterator it(printers); it.More(); it.Next()) {
+            it.Value()->SetTraceLevel(Message_Fail);
+        }
+        return true;
+    }();
+    (void)ready;
+    return mutex;
+}
 namespace {
 
 const char* kExpected = "expected a STEP or IGES model of the blade surface";
@@ -50,10 +72,14 @@ Status writeWithOcct(const CadShape& shape, const fs::path& temporary, CadFormat
                      LengthUnit unit) {
     const std::lock_guard lock(dataExchangeMutex());
     const std::string name = temporary.string();
+    if (!Interface_Static::SetCVal("xstep.cascade.unit", "MM")) {
+        return makeError(ErrorCode::Internal, "OpenCASCADE data exchange is not initialised");
+    }
     if (format == CadFormat::Step) {
-        Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-        Interface_Static::SetCVal("write.step.unit", stepUnitName(unit));
-        Interface_Static::SetCVal("write.step.schema", "AP214IS");
+        if (!Interface_Static::SetCVal("write.step.unit", stepUnitName(unit)) ||
+            !Interface_Static::SetCVal("write.step.schema", "AP214IS")) {
+            return makeError(ErrorCode::Internal, "OpenCASCADE refused the STEP unit or schema");
+        }
         STEPControl_Writer writer;
         if (writer.Transfer(occtShape(shape), STEPControl_AsIs) != IFSelect_RetDone ||
             writer.Write(name.c_str()) != IFSelect_RetDone) {
@@ -61,7 +87,6 @@ Status writeWithOcct(const CadShape& shape, const fs::path& temporary, CadFormat
         }
         return {};
     }
-    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
     // Mode 0 writes trimmed surfaces (entity 144), which every IGES reader understands.
     IGESControl_Writer writer(stepUnitName(unit), 0);
     if (!writer.AddShape(occtShape(shape))) {
@@ -111,7 +136,9 @@ Status checkPlacement(const Placement& placement) {
 Result<TopoDS_Shape> transferModel(const fs::path& path, CadFormat format) {
     const std::lock_guard lock(dataExchangeMutex());
     // Coordinates come out in mm whatever unit the file declares.
-    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+    if (!Interface_Static::SetCVal("xstep.cascade.unit", "MM")) {
+        return makeError(ErrorCode::Internal, "OpenCASCADE data exchange is not initialised");
+    }
     STEPControl_Reader stepReader;
     IGESControl_Reader igesReader;
     XSControl_Reader& reader = format == CadFormat::Step

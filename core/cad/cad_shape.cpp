@@ -4,26 +4,10 @@
 
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
-#include <Message.hxx>
-#include <Message_Messenger.hxx>
-#include <Message_Printer.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 namespace bladeaxis::cad {
-
-std::mutex& dataExchangeMutex() {
-    static std::mutex mutex;
-    static const bool quiet = [] {
-        const Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->Printers();
-        for (Message_SequenceOfPrinters::Iterator it(printers); it.More(); it.Next()) {
-            it.Value()->SetTraceLevel(Message_Fail);
-        }
-        return true;
-    }();
-    (void)quiet;
-    return mutex;
-}
 
 int CadShape::faceCount() const {
     if (isNull()) {

@@ -27,8 +27,8 @@ inline const TopoDS_Shape& occtShape(const CadShape& shape) {
 
 // OCCT's data-exchange settings (units, modes) live in a process-wide table (Interface_Static)
 // that its readers and writers consult while they run, so every STEP/IGES transfer is serialised.
-// The first use also turns OpenCASCADE's console chatter (transfer statistics) down to failures:
-// the module reports through Result values.
+// The first use registers the STEP and IGES controllers and turns OpenCASCADE's console chatter
+// (transfer statistics) down to failures: the module reports through Result values.
 std::mutex& dataExchangeMutex();
 
 // Runs `body` (returning a Result) and converts any exception escaping from OCCT into an error

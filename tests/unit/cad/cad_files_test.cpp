@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 
 namespace bladeaxis::cad {
@@ -85,6 +86,105 @@ TEST(CadWrite, RefusesAnEmptyShapeAndAnUnwritablePath) {
     EXPECT_EQ(missingDir.error().code, ErrorCode::WriteFailed);
     EXPECT_NE(missingDir.error().toString().find("dir.step"), std::string::npos);
 }
+
+// A 10 x 20 x 30 mm box at (1, 2, 3) written by OpenCASCADE in inches (coordinates such as
+// 3.937007874016E-02 in the file).
+TEST(CadRead, ConvertsASolidFromInchesToMillimetres) {
+    ASSERT_NE(fileText(cadData("box_solid_inch.step")).find("'INCH'"), std::string::npos);
+    const Result<CadShape> box = readCadFile(cadData("box_solid_inch.step"));
+    ASSERT_TRUE(box.has_value()) << box.error().toString();
+    EXPECT_EQ(box->faceCount(), 6);
+    expectSameBox(box->bounds(), {Vec3(1, 2, 3), Vec3(11, 22, 33)}, 1e-6);
+}
+
+TEST(CadRead, ReadsAShellFromIges) {
+    const Result<CadShape> shell = readCadFile(cadData("box_shell.igs"));
+    ASSERT_TRUE(shell.has_value()) << shell.error().toString();
+    EXPECT_EQ(shell->faceCount(), 6);
+    expectSameBox(shell->bounds(), {Vec3(1, 2, 3), Vec3(11, 22, 33)}, 1e-6);
+}
+
+TEST(CadRead, AppliesThePlacementRelativeToTheRotaryAxis) {
+    Placement placement;
+    placement.rotation = rotationX(std::numbers::pi / 2); // (x, y, z) -> (x, -z, y)
+    placement.translation = Vec3(-5.0, 0.5, 0.0);
+    const Result<CadShape> box = readCadFile(cadData("box_solid_inch.step"), placement);
+    ASSERT_TRUE(box.has_value()) << box.error().toString();
+    expectSameBox(box->bounds(), {Vec3(1 - 5, -33 + 0.5, 2), Vec3(11 - 5, -3 + 0.5, 22)}, 1e-6);
+}
+
+TEST(CadRead, RefusesAPlacementThatIsNotARotation) {
+    Placement scaled;
+    scaled.rotation = 2.0 * Mat3::Identity();
+    const Result<CadShape> box = readCadFile(cadData("box_solid_inch.step"), scaled);
+    ASSERT_FALSE(box.has_value());
+    EXPECT_EQ(box.error().code, ErrorCode::InvalidArgument);
+    Placement mirrored;
+    mirrored.rotation = Vec3(1, 1, -1).asDiagonal();
+    EXPECT_FALSE(readCadFile(cadData("box_solid_inch.step"), mirrored).has_value());
+}
+
+TEST(CadRead, DetectsTheFormatFromTheContentBeforeTheExtension) {
+    const fs::path misnamed = scratchDir() / "really_step.igs";
+    fs::copy_file(cadData("box_solid_inch.step"), misnamed);
+    EXPECT_EQ(detectCadFormat(misnamed).value(), CadFormat::Step);
+    EXPECT_EQ(detectCadFormat(cadData("box_shell.igs")).value(), CadFormat::Iges);
+    const Result<CadShape> box = readCadFile(misnamed);
+    ASSERT_TRUE(box.has_value()) << box.error().toString();
+    EXPECT_EQ(box->faceCount(), 6);
+}
+
+TEST(CadRead, ReportsAMissingFileAndADirectory) {
+    const fs::path missing = scratchDir() / "no_such_blade.step";
+    const Result<CadShape> none = readCadFile(missing);
+    ASSERT_FALSE(none.has_value());
+    EXPECT_EQ(none.error().code, ErrorCode::FileNotFound);
+    EXPECT_NE(none.error().toString().find("no_such_blade.step"), std::string::npos);
+    EXPECT_NE(none.error().message.find("expected a STEP or IGES"), std::string::npos);
+    const Result<CadShape> dir = readCadFile(cadData("bad"));
+    ASSERT_FALSE(dir.has_value());
+    EXPECT_EQ(dir.error().code, ErrorCode::FileUnreadable);
+}
+
+struct BadFile {
+    const char* name;
+    ErrorCode code;
+    const char* says; // part of the message
+};
+
+class CadReadBadFile : public ::testing::TestWithParam<BadFile> {};
+
+TEST_P(CadReadBadFile, IsAnErrorNamingTheFileAndWhatWasExpected) {
+    const BadFile& bad = GetParam();
+    const fs::path path = cadData("bad") / bad.name;
+    ASSERT_TRUE(fs::exists(path)) << path;
+    const Result<CadShape> shape = readCadFile(path);
+    ASSERT_FALSE(shape.has_value()) << bad.name << " was accepted";
+    EXPECT_EQ(shape.error().code, bad.code) << shape.error().toString();
+    const std::string text = shape.error().toString();
+    EXPECT_NE(text.find(bad.name), std::string::npos) << text;
+    EXPECT_NE(text.find(bad.says), std::string::npos) << text;
+    EXPECT_NE(text.find("expected"), std::string::npos) << text;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Corpus, CadReadBadFile,
+    ::testing::Values(BadFile{"empty.step", ErrorCode::Parse, "empty file"},
+                      BadFile{"not_cad.step", ErrorCode::Parse, "STEP"},
+                      BadFile{"binary.stp", ErrorCode::Parse, "STEP"},
+                      BadFile{"truncated.step", ErrorCode::Parse, "STEP"},
+                      BadFile{"header_only.step", ErrorCode::Geometry, "no transferable"},
+                      BadFile{"curves_only.step", ErrorCode::Geometry, "no face"},
+                      BadFile{"curves_only.igs", ErrorCode::Geometry, "no face"},
+                      BadFile{"garbage.igs", ErrorCode::Geometry,
+                              "IGES file holds no transferable"}),
+    [](const ::testing::TestParamInfo<BadFile>& param) {
+        std::string name = param.param.name;
+        for (char& c : name) {
+            c = (c == '.') ? '_' : c;
+        }
+        return name;
+    });
 
 } // namespace
 } // namespace bladeaxis::cad

@@ -38,22 +38,20 @@ scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
 // program starts where the old one did and A stays continuous.
 Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInput& input,
                                                             std::span<const ClRecord> records) {
-    std::vector<kinematics::MachineAxes> axes;
-    axes.reserve(records.size());
-    double reference = input.originalAxes->front().a;
-    const auto pass = passOf(input);
-    for (std::size_t i = 0; i < records.size(); ++i) {
-        auto value = kinematics::inverseKinematics(input.machine->chain,
-                                                   {records[i].tip, records[i].axis}, reference);
-        if (!value) {
-            Error error = value.error();
-            error.where = {input.program->path().sourceFile, pass[i].line, 0};
-            return std::unexpected(error);
-        }
-        axes.push_back(*value);
-        reference = value->a;
+    std::vector<kinematics::ToolPose> poses;
+    poses.reserve(records.size());
+    for (const ClRecord& record : records) {
+        poses.push_back({record.tip, record.axis});
     }
-    return axes;
+    auto solved = kinematics::inverseKinematicsAlong(input.machine->chain, poses,
+                                                     input.originalAxes->front().a);
+    if (solved.failedIndex) {
+        Error error = solved.failure;
+        error.where = {input.program->path().sourceFile, passOf(input)[*solved.failedIndex].line,
+                       0};
+        return std::unexpected(error);
+    }
+    return std::move(solved.axes);
 }
 
 Result<std::string> rewriteProgram(const RescheduleInput& input,

@@ -15,6 +15,24 @@ Vec3 spindleDirection(double bMath) {
 
 } // namespace
 
+IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const ToolPose> poses,
+                                     double aStart) {
+    IkAlongResult result;
+    result.axes.reserve(poses.size());
+    double reference = aStart;
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        auto axes = inverseKinematics(chain, poses[i], reference);
+        if (!axes) {
+            result.failedIndex = i;
+            result.failure = axes.error();
+            return result;
+        }
+        result.axes.push_back(*axes);
+        reference = axes->a;
+    }
+    return result;
+}
+
 Vec3 toolAxisFor(const TableAHeadB& chain, double a, double b) {
     const double aMath = chain.aSign * a;
     const double bMath = chain.bSign * b;

@@ -6,6 +6,10 @@
 #include "core/geometry/vec.h"
 #include "core/kinematics/machine_model.h"
 
+#include <optional>
+#include <span>
+#include <vector>
+
 namespace bladeaxis::kinematics {
 
 // Tool tip O and unit tool axis V (tip -> spindle) in the workpiece frame W, mm.
@@ -21,6 +25,16 @@ ToolPose forwardKinematics(const TableAHeadB& chain, const MachineAxes& axes);
 // Errors (Geometry): non-finite input, zero axis, or an axis along the A axis (A undefined).
 Result<MachineAxes> inverseKinematics(const TableAHeadB& chain, const ToolPose& pose,
                                       double aReference = 0.0);
+
+// IK of consecutive poses with A continuous: the first pose is solved nearest `aStart`, every
+// later one nearest the A of the one before. A failed pose is reported as `failedIndex`.
+struct IkAlongResult {
+    std::vector<MachineAxes> axes;
+    std::optional<std::size_t> failedIndex;
+    Error failure; // meaningful when failedIndex is set
+};
+IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const ToolPose> poses,
+                                     double aStart);
 
 // Tool axis for a given programmed A and B, in W (spec §6.1 with the sign conventions).
 Vec3 toolAxisFor(const TableAHeadB& chain, double a, double b);

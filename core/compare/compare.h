@@ -1,0 +1,32 @@
+#pragma once
+// The comparison of issue 4 (spec §7-§9): every method on the same ball centres, evaluated by
+// one pipeline (method_evaluation.h), so that the table a shop reads compares like with like.
+
+#include "core/base/progress.h"
+#include "core/compare/method_evaluation.h"
+#include "core/scheduling/schedule_parameters.h"
+
+#include <vector>
+
+namespace bladeaxis::compare {
+
+struct CompareOptions {
+    scheduling::ScheduleParameters faithful = scheduling::faithfulPreset();
+    scheduling::ScheduleParameters best = scheduling::bestPreset();
+};
+
+struct Comparison {
+    scheduling::ScheduleResult reference; // stheta-best: its layers and channel frame the metrics
+    std::vector<MethodResult> methods;    // original first, then in the order of the spec
+
+    const MethodResult* find(std::string_view method) const;
+};
+
+// `context.reference` is ignored: the comparison schedules its own reference.
+Result<Comparison> compareMethods(EvaluationContext context, const CompareOptions& options,
+                                  const CancelToken& cancel);
+
+// (before - after) / before, the paper's "optimization ratio"; 0 when before is 0.
+double reduction(double before, double after);
+
+} // namespace bladeaxis::compare

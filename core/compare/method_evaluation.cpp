@@ -1,0 +1,73 @@
+#include "core/compare/method_evaluation.h"
+
+#include "core/kinematics/kinematics.h"
+
+namespace bladeaxis::compare {
+
+std::vector<Vec3> centresOf(const EvaluationContext& context) {
+    std::vector<Vec3> centres;
+    centres.reserve(context.pass.size());
+    for (const toolpath::ClRecord& record : context.pass) {
+        centres.push_back(record.tip + context.toolRadius * record.axis.normalized());
+    }
+    return centres;
+}
+
+namespace {
+
+Status validate(const EvaluationContext& context, const std::vector<Vec3>& toolAxes) {
+    if (context.machine == nullptr || context.reference == nullptr ||
+        context.originalAxes.size() != context.pass.size() || context.pass.empty()) {
+        return makeError(ErrorCode::InvalidArgument, "incomplete evaluation context");
+    }
+    if (toolAxes.size() != context.pass.size()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "expected " + std::to_string(context.pass.size()) + " tool axes, got " +
+                             std::to_string(toolAxes.size()));
+    }
+    return {};
+}
+
+} // namespace
+
+Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::string method,
+                                    std::string setting, std::vector<Vec3> toolAxes,
+                                    double computeSeconds) {
+    if (auto status = validate(context, toolAxes); !status) {
+        return std::unexpected(status.error());
+    }
+    const std::vector<Vec3> centres = centresOf(context);
+    std::vector<toolpath::ClRecord> records(context.pass.begin(), context.pass.end());
+    std::vector<kinematics::ToolPose> poses;
+    poses.reserve(records.size());
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        records[i].axis = toolAxes[i].normalized();
+        records[i].tip = centres[i] - context.toolRadius * records[i].axis;
+        records[i].axes.reset();
+        poses.push_back({records[i].tip, records[i].axis});
+    }
+    auto solved = kinematics::inverseKinematicsAlong(context.machine->chain, poses,
+                                                     context.originalAxes.front().a);
+    if (solved.failedIndex) {
+        Error error = solved.failure;
+        error.message = method + ": " + error.message;
+        error.where.line = context.pass[*solved.failedIndex].line;
+        return std::unexpected(error);
+    }
+    auto profile = analysis::analyseAxisMotion(solved.axes, records, context.analysis);
+    if (!profile) {
+        return std::unexpected(profile.error());
+    }
+    MethodResult result;
+    result.method = std::move(method);
+    result.setting = std::move(setting);
+    result.channel = measureInChannel(*context.reference, toolAxes);
+    result.toolAxes = std::move(toolAxes);
+    result.machineAxes = std::move(solved.axes);
+    result.profile = std::move(*profile);
+    result.t1 = analysis::constantFeedTime(result.profile, *context.machine, false);
+    result.computeSeconds = computeSeconds;
+    return result;
+}
+
+} // namespace bladeaxis::compare

@@ -1,0 +1,131 @@
+#include "core/blade/presets.h"
+#include "core/compare/compare.h"
+#include "core/kinematics/kinematics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace bladeaxis::compare {
+namespace {
+
+// The demo blade program's cutting pass with its machine axes, as a job would hand it over.
+struct DemoPass {
+    kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    std::vector<toolpath::ClRecord> records;
+    std::vector<kinematics::MachineAxes> axes;
+    double toolRadius = 0.0;
+
+    DemoPass() {
+        auto bladeModel = blade::Blade::create(blade::demoBladeSpec());
+        const blade::HelicalPathSpec spec = blade::demoPathSpec();
+        auto generated = blade::generateHelicalPath(*bladeModel, spec);
+        records = generated->path.records;
+        toolRadius = spec.toolRadius;
+        std::vector<kinematics::ToolPose> poses;
+        for (const auto& record : records) {
+            poses.push_back({record.tip, record.axis});
+        }
+        axes = kinematics::inverseKinematicsAlong(machine.chain, poses, 0.0).axes;
+    }
+
+    EvaluationContext context() const {
+        EvaluationContext context;
+        context.pass = records;
+        context.originalAxes = axes;
+        context.toolRadius = toolRadius;
+        context.machine = &machine;
+        return context;
+    }
+};
+
+const DemoPass& demo() {
+    static const DemoPass pass;
+    return pass;
+}
+
+const Comparison& demoComparison() {
+    static const Comparison comparison = [] {
+        auto result = compareMethods(demo().context(), {}, CancelToken{});
+        EXPECT_TRUE(result.has_value()) << result.error().toString();
+        return std::move(*result);
+    }();
+    return comparison;
+}
+
+TEST(SecondDerivative, IsExactForAQuadraticOnANonUniformGrid) {
+    const std::vector<double> s{0.0, 0.3, 1.0, 1.2, 2.5, 2.6};
+    std::vector<double> theta;
+    for (double x : s) {
+        theta.push_back(0.7 * x * x - 2.0 * x + 1.0);
+    }
+    const auto second = secondDerivative(s, theta);
+    for (std::size_t i = 1; i + 1 < s.size(); ++i) {
+        EXPECT_NEAR(second[i], 1.4, 1e-12) << i;
+    }
+}
+
+TEST(Compare, EveryMethodKeepsTheBallCentres) {
+    const auto centres = centresOf(demo().context());
+    for (const MethodResult& method : demoComparison().methods) {
+        ASSERT_EQ(method.machineAxes.size(), centres.size()) << method.method;
+        for (std::size_t i = 0; i < centres.size(); i += 37) {
+            const auto pose =
+                kinematics::forwardKinematics(demo().machine.chain, method.machineAxes[i]);
+            const Vec3 centre = pose.tip + demo().toolRadius * pose.axis;
+            EXPECT_LT((centre - centres[i]).norm(), 1e-9) << method.method << " " << i;
+        }
+    }
+}
+
+TEST(Compare, OriginalReciprocatesAndTheEngineDoesNot) {
+    const Comparison& comparison = demoComparison();
+    const MethodResult* original = comparison.find("original");
+    ASSERT_NE(original, nullptr);
+    EXPECT_GT(original->channel.thetaReversals, 0u);
+    EXPECT_GT(original->profile.aReversals.count, 0u);
+    for (const char* name : {"stheta-faithful", "stheta-best"}) {
+        const MethodResult* method = comparison.find(name);
+        ASSERT_NE(method, nullptr) << name;
+        EXPECT_EQ(method->channel.thetaReversals, 0u) << name;
+        EXPECT_EQ(method->profile.aReversals.count, 0u) << name;
+        EXPECT_EQ(method->channel.samplesOutside, 0u) << name;
+        EXPECT_LT(method->profile.axis(kinematics::AxisId::A).peakAcceleration,
+                  0.1 * original->profile.axis(kinematics::AxisId::A).peakAcceleration)
+            << name;
+        EXPECT_LT(method->t1.time, original->t1.time) << name;
+    }
+}
+
+TEST(Compare, ChannelMetricsAgreeWithTheEnginesOwnClearance) {
+    const Comparison& comparison = demoComparison();
+    double engineClearance = 1e9;
+    for (const auto& layer : comparison.reference.layers) {
+        engineClearance = std::min(engineClearance, layer.minClearance);
+    }
+    EXPECT_NEAR(comparison.find("stheta-best")->channel.minClearance, engineClearance, 1e-9);
+}
+
+TEST(Compare, WrongNumberOfAxesIsAnError) {
+    EvaluationContext context = demo().context();
+    context.reference = &demoComparison().reference;
+    auto result = evaluateMethod(context, "broken", "", std::vector<Vec3>(3, Vec3::UnitZ()), 0.0);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::InvalidArgument);
+}
+
+TEST(Compare, CancelledComparisonStops) {
+    CancelToken cancel;
+    cancel.requestCancel();
+    auto result = compareMethods(demo().context(), {}, cancel);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
+}
+
+TEST(Reduction, IsThePapersOptimisationRatio) {
+    EXPECT_DOUBLE_EQ(reduction(200.0, 50.0), 0.75);
+    EXPECT_DOUBLE_EQ(reduction(0.0, 5.0), 0.0);
+}
+
+} // namespace
+} // namespace bladeaxis::compare

@@ -16,7 +16,7 @@ build: configure
 	cmake --build --preset dev -j $(JOBS)
 
 demo: build
-	$(BUILD_DIR)/app/bladeaxis --batch --demo --out out/demo -o out/demo/demo_blade_rescheduled.nc
+	$(BUILD_DIR)/app/bladeaxis --batch --demo --compare --out out/demo -o out/demo/demo_blade_rescheduled.nc
 
 test: build
 	ctest --preset dev -j $(JOBS)

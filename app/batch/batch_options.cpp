@@ -62,6 +62,7 @@ struct RawOptions {
     std::uint64_t seed = 1;
     bool batch = false, demo = false, json = false, quiet = false, version = false;
     bool analyseOnly = false;
+    bool compare = false;
 };
 
 std::string optionName(const std::string& key) {
@@ -81,6 +82,8 @@ void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
                       "Job file (JSON, docs/job-file.md); options given here win");
     group->add_flag("--analyse-only", raw.analyseOnly,
                     "Analyse the program without re-scheduling it");
+    group->add_flag("--compare", raw.compare,
+                    "Also compare with the other methods: compare.json, compare.csv, report.html");
     for (const job::ParameterInfo& info : job::scheduleParameterSchema()) {
         std::string help = info.help;
         if (!info.unit.empty()) {
@@ -164,6 +167,7 @@ Status applySchedule(const RawOptions& raw, BatchOptions& options) {
         options.job.outputProgram = raw.outputProgram;
     }
     options.job.reschedule = !raw.analyseOnly;
+    options.job.compare = raw.compare;
     if (raw.analyseOnly && !options.job.outputProgram.empty()) {
         return makeError(ErrorCode::InvalidArgument,
                          "--analyse-only and --output exclude each other");

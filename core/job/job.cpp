@@ -140,6 +140,34 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     return {};
 }
 
+Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
+    if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
+        return makeError(
+            ErrorCode::InvalidArgument,
+            "the ball radius is not known: give --tool-radius (G-code does not state it)");
+    }
+    compare::EvaluationContext context;
+    context.pass =
+        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
+    context.originalAxes = result.axes;
+    context.toolRadius = *result.toolRadius;
+    context.machine = &result.machine;
+    context.analysis = spec.analysis;
+    context.analysis.toolRadius = context.toolRadius;
+    compare::CompareOptions options;
+    options.best = spec.parameters;
+    auto comparison = compare::compareMethods(context, options, cancel);
+    if (!comparison) {
+        Error error = comparison.error();
+        if (error.where.file.empty()) {
+            error.where.file = result.program.path().sourceFile;
+        }
+        return std::unexpected(error);
+    }
+    result.comparison = std::move(*comparison);
+    return {};
+}
+
 Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
     RescheduleInput input;
     input.program = &result.program;
@@ -188,6 +216,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .original = {},
                      .constantFeed = {},
                      .rescheduled = std::nullopt,
+                     .comparison = std::nullopt,
                      .warnings = {},
                      .seconds = 0.0};
     result.toolRadius = spec.toolRadius   ? spec.toolRadius
@@ -212,6 +241,12 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
         for (const std::string& warning : result.rescheduled->schedule.warnings) {
             progress.warning(warning);
             result.warnings.push_back(warning);
+        }
+    }
+    if (spec.compare) {
+        progress.progress(0.7, "comparing with the other methods");
+        if (auto status = compareInto(result, spec, cancel); !status) {
+            return std::unexpected(status.error());
         }
     }
     result.seconds =

@@ -5,6 +5,7 @@
 #include "core/analysis/analysis.h"
 #include "core/base/error.h"
 #include "core/base/progress.h"
+#include "core/compare/compare.h"
 #include "core/io/program.h"
 #include "core/job/reschedule.h"
 #include "core/kinematics/machine_model.h"
@@ -24,6 +25,7 @@ struct JobSpec {
     std::optional<double> toolRadius;  // mm; overrides the radius stated in a CL file
     analysis::AxisProfileOptions analysis;
     bool reschedule = true; // false: analyse the input only (`--analyse-only`)
+    bool compare = false;   // also run and evaluate every comparison method (`--compare`)
     scheduling::ScheduleParameters parameters = scheduling::bestPreset();
     std::string presetName = "best";     // recorded in the report; "custom" once edited
     std::filesystem::path outputProgram; // the re-scheduled program; empty: not written
@@ -46,7 +48,8 @@ struct JobResult {
     std::vector<kinematics::MachineAxes> axes; // per record of the pass, A continuous
     analysis::AxisProfile original;
     analysis::ConstantFeedTime constantFeed;
-    std::optional<RescheduleOutcome> rescheduled; // when spec.reschedule
+    std::optional<RescheduleOutcome> rescheduled;  // when spec.reschedule
+    std::optional<compare::Comparison> comparison; // when spec.compare
     std::vector<std::string> warnings;
     double seconds = 0.0; // wall time of runJob
 };
@@ -60,8 +63,8 @@ Result<kinematics::MachineModel> loadMachine(const JobSpec& spec);
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel);
 
 // Writes the re-scheduled program to spec.outputProgram, and report.json, axes.csv and
-// layers.csv (and demo_blade.nc for a demo job) into spec.outputDir, each atomically; refuses to
-// overwrite the input program.
+// layers.csv (and demo_blade.nc for a demo job; compare.json, compare.csv and report.html for a
+// comparison) into spec.outputDir, each atomically; refuses to overwrite the input program.
 Status writeJobOutputs(const JobSpec& spec, const JobResult& result);
 
 // The content of report.json (also printed by `--batch --json`).

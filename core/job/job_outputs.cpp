@@ -4,6 +4,7 @@
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
 #include "core/report/analysis_report.h"
+#include "core/report/compare_report.h"
 #include "core/report/schedule_report.h"
 
 #include <nlohmann/json.hpp>
@@ -117,6 +118,22 @@ Status createOutputFolder(const JobSpec& spec) {
     return {};
 }
 
+Status writeComparison(const JobSpec& spec, const JobResult& result,
+                       const std::vector<fs::path>& inputs) {
+    const compare::Comparison& comparison = *result.comparison;
+    const std::string name = fs::path(result.program.path().sourceFile).filename().string();
+    const std::pair<const char*, std::string> files[] = {
+        {"compare.json", report::compareJson(comparison).dump(2) + "\n"},
+        {"compare.csv", report::compareCsv(comparison)},
+        {"report.html", report::compareHtml(comparison, name)}};
+    for (const auto& [file, text] : files) {
+        if (auto status = writeFileAtomically(spec.outputDir / file, text, inputs); !status) {
+            return status;
+        }
+    }
+    return {};
+}
+
 Status writeReportFolder(const JobSpec& spec, const JobResult& result,
                          const std::vector<fs::path>& inputs) {
     if (spec.demo) {
@@ -138,6 +155,11 @@ Status writeReportFolder(const JobSpec& spec, const JobResult& result,
                 writeFileAtomically(spec.outputDir / "layers.csv",
                                     report::layersCsv(result.rescheduled->schedule), inputs);
             !status) {
+            return status;
+        }
+    }
+    if (result.comparison) {
+        if (auto status = writeComparison(spec, result, inputs); !status) {
             return status;
         }
     }
@@ -207,6 +229,22 @@ std::string rescheduledSummary(const JobResult& result) {
     return text;
 }
 
+std::string comparisonSummary(const compare::Comparison& comparison) {
+    using kinematics::AxisId;
+    std::string text = "comparison   method            A rev.  A peak acc. (deg/s^2)  T1 (s)\n";
+    for (const compare::MethodResult& method : comparison.methods) {
+        std::string name = method.method;
+        name.resize(std::max<std::size_t>(name.size(), 18), ' ');
+        std::string reversals = std::to_string(method.profile.aReversals.count);
+        reversals.resize(std::max<std::size_t>(reversals.size(), 8), ' ');
+        std::string peak =
+            formatFixed(units::radToDeg(method.profile.axis(AxisId::A).peakAcceleration), 0);
+        peak.resize(std::max<std::size_t>(peak.size(), 23), ' ');
+        text += "             " + name + reversals + peak + formatFixed(method.t1.time, 1) + "\n";
+    }
+    return text;
+}
+
 } // namespace
 
 std::string formatSummary(const JobResult& result) {
@@ -239,6 +277,9 @@ std::string formatSummary(const JobResult& result) {
             " mm/min (bound by " + kinematics::axisName(result.constantFeed.bindingAxis) + ")\n";
     if (result.rescheduled) {
         text += rescheduledSummary(result);
+    }
+    if (result.comparison) {
+        text += comparisonSummary(*result.comparison);
     }
     for (const std::string& warning : result.warnings) {
         text += "warning      " + warning + "\n";

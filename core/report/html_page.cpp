@@ -16,10 +16,6 @@ table { border-collapse: collapse; margin: 8px 0 16px; font-size: 13px; }
 th, td { border: 1px solid #ccc; padding: 3px 8px; }
 th { background: #f0f0f0; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
 figure { margin: 12px 0 20px; } figcaption { font-size: 12px; color: #555; }
-svg.plot { font-size: 11px; background: #fff; }
-svg.plot .grid { stroke: #e4e4e4; stroke-width: 1; }
-svg.plot .frame { fill: none; stroke: #888; stroke-width: 1; }
-svg.plot .title { font-size: 13px; font-weight: bold; }
 )css";
 
 bool looksNumeric(const std::string& cell) {

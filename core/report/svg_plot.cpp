@@ -153,26 +153,26 @@ std::string axesSvg(const Canvas& canvas) {
     for (double t : xTicks) {
         const std::string at = px(canvas.mapX(t));
         svg += "<line x1=\"" + at + "\" y1=\"" + px(top) + "\" x2=\"" + at + "\" y2=\"" +
-               px(bottom) + "\" class=\"grid\"/>";
+               px(bottom) + "\" stroke=\"#e4e4e4\"/>";
         svg += "<text x=\"" + at + "\" y=\"" + px(bottom + 16) + "\" text-anchor=\"middle\">" +
                formatTrimmed(t, decimalsFor(xTicks)) + "</text>";
     }
     for (double t : yTicks) {
         const std::string at = px(canvas.mapY(t));
         svg += "<line x1=\"" + px(left) + "\" y1=\"" + at + "\" x2=\"" + px(right) + "\" y2=\"" +
-               at + "\" class=\"grid\"/>";
+               at + "\" stroke=\"#e4e4e4\"/>";
         svg += "<text x=\"" + px(left - 6) + "\" y=\"" + at +
                "\" text-anchor=\"end\" dominant-baseline=\"middle\">" +
                formatTrimmed(t, decimalsFor(yTicks)) + "</text>";
     }
     svg += "<rect x=\"" + px(left) + "\" y=\"" + px(top) + "\" width=\"" + px(right - left) +
-           "\" height=\"" + px(bottom - top) + "\" class=\"frame\"/>";
+           "\" height=\"" + px(bottom - top) + "\" fill=\"none\" stroke=\"#888\"/>";
     svg += "<text x=\"" + px((left + right) / 2) + "\" y=\"" + px(plot.height - 6.0) +
            "\" text-anchor=\"middle\">" + escapeMarkup(plot.xLabel) + "</text>";
     svg += "<text transform=\"translate(14 " + px((top + bottom) / 2) +
            ") rotate(-90)\" text-anchor=\"middle\">" + escapeMarkup(plot.yLabel) + "</text>";
-    svg += "<text x=\"" + px(left) + "\" y=\"18\" class=\"title\">" + escapeMarkup(plot.title) +
-           "</text>";
+    svg += "<text x=\"" + px(left) + "\" y=\"18\" font-weight=\"bold\">" +
+           escapeMarkup(plot.title) + "</text>";
     return svg;
 }
 
@@ -234,7 +234,10 @@ std::string renderSvg(const Plot& plot) {
     std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
                       std::to_string(plot.width) + "\" height=\"" + std::to_string(plot.height) +
                       "\" viewBox=\"0 0 " + std::to_string(plot.width) + " " +
-                      std::to_string(plot.height) + "\" class=\"plot\">";
+                      std::to_string(plot.height) +
+                      "\" font-family=\"DejaVu Sans, Arial, sans-serif\" font-size=\"11\">";
+    // Styled by attributes, not CSS classes: the figure looks the same on its own.
+    svg += "<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>";
     svg += axesSvg(canvas);
     // A nested viewport clips the curves to the frame without document-wide ids, so any number
     // of plots can share one HTML page.

@@ -60,9 +60,12 @@ struct RawOptions {
     std::string outputProgram, preset, jobFile;
     std::map<std::string, std::string> parameters; // schema key -> text, when given
     std::uint64_t seed = 1;
+    bool seedGiven = false;
     bool batch = false, demo = false, json = false, quiet = false, version = false;
     bool analyseOnly = false;
     bool compare = false;
+    bool reproduce = false;
+    int blades = 36;
 };
 
 std::string optionName(const std::string& key) {
@@ -138,6 +141,12 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     generate->add_option("--tolerance", raw.tolerance.text,
                          "Chordal tolerance on the ball centre, mm");
     generate->add_option("--seed", raw.seed, "Random seed (lead-angle noise, family members)");
+    auto* study = cli.add_option_group("Reproduction", "The comparison on a synthetic family");
+    study->add_flag("--reproduce", raw.reproduce,
+                    "Compare every method on a seeded family of synthetic blades and print the "
+                    "median and IQR of every reduction (reproduce.json, reproduce.csv in --out)");
+    study->add_option("--blades", raw.blades, "Number of blades of the family (default 36)")
+        ->check(CLI::Range(1, 1000));
     defineScheduleOptions(cli, raw);
 }
 
@@ -237,6 +246,13 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
     options.generate.profile = raw.profile;
     options.generate.format = raw.format;
     options.generate.seed = raw.seed;
+    if (raw.reproduce) {
+        options.mode = BatchOptions::Mode::Reproduce;
+        options.reproduction.seed = raw.seedGiven ? raw.seed : options.reproduction.seed;
+        options.reproduction.blades = raw.blades;
+        options.reproduction.compare.best = options.job.parameters;
+        return options;
+    }
     if (!raw.generate.empty()) {
         options.mode = BatchOptions::Mode::Generate;
         options.generateOutput = raw.generate;
@@ -270,6 +286,7 @@ Result<BatchOptions> parseBatchOptions(const std::vector<std::string>& arguments
     } catch (const CLI::ParseError& error) {
         return makeError(ErrorCode::InvalidArgument, error.what());
     }
+    raw.seedGiven = cli.count("--seed") > 0;
     return interpret(raw, cli.help());
 }
 

@@ -5,6 +5,7 @@
 #include "core/base/error.h"
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
+#include "core/job/reproduction.h"
 
 #include <filesystem>
 #include <string>
@@ -13,12 +14,14 @@
 namespace bladeaxis::app {
 
 struct BatchOptions {
-    enum class Mode { Analyse, Generate, Help, Version };
+    enum class Mode { Analyse, Generate, Reproduce, Help, Version };
     Mode mode = Mode::Analyse;
     job::JobSpec job;
     // --generate OUT: write a synthetic blade program instead of analysing one.
     std::filesystem::path generateOutput;
     job::GenerateRequest generate;
+    // --reproduce: the comparison over a seeded synthetic family (spec §8.5).
+    job::ReproductionSpec reproduction;
     bool printJson = false; // print report.json to stdout instead of the summary
     bool quiet = false;
     std::string helpText;

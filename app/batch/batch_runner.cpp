@@ -3,6 +3,7 @@
 #include "app/batch/exit_codes.h"
 #include "core/base/file_io.h"
 
+#include <filesystem>
 #include <ostream>
 
 namespace bladeaxis::app {
@@ -69,6 +70,32 @@ int runAnalyse(const BatchOptions& options, std::ostream& out, std::ostream& err
     return kExitOk;
 }
 
+int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& err) {
+    BatchProgress progress(err, options.quiet);
+    CancelToken cancel;
+    auto result = job::runReproduction(options.reproduction, progress, cancel);
+    if (!result) {
+        return fail(result.error(), err);
+    }
+    const auto& folder = options.job.outputDir;
+    if (!folder.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(folder, ec);
+        const std::pair<const char*, std::string> files[] = {
+            {"reproduce.json", job::reproductionJsonText(*result)},
+            {"reproduce.csv", job::reproductionCsv(*result)}};
+        for (const auto& [name, text] : files) {
+            if (auto status = writeFileAtomically(folder / name, text); !status) {
+                return fail(status.error(), err);
+            }
+        }
+    }
+    if (!options.quiet) {
+        out << job::reproductionSummary(*result);
+    }
+    return kExitOk;
+}
+
 } // namespace
 
 int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err) {
@@ -83,6 +110,8 @@ int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err) 
         return runGenerate(options, out, err);
     case BatchOptions::Mode::Analyse:
         return runAnalyse(options, out, err);
+    case BatchOptions::Mode::Reproduce:
+        return runReproduce(options, out, err);
     }
     return kExitInternal;
 }

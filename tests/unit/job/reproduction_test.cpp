@@ -1,0 +1,66 @@
+#include "core/job/reproduction.h"
+
+#include <gtest/gtest.h>
+
+namespace bladeaxis::job {
+namespace {
+
+TEST(Spread, MedianAndQuartilesInterpolateBetweenOrderStatistics) {
+    const Spread spread = spreadOf({5.0, 1.0, 3.0, 2.0, 4.0});
+    EXPECT_DOUBLE_EQ(spread.median, 3.0);
+    EXPECT_DOUBLE_EQ(spread.q1, 2.0);
+    EXPECT_DOUBLE_EQ(spread.q3, 4.0);
+    EXPECT_EQ(spread.count, 5u);
+    EXPECT_DOUBLE_EQ(spreadOf({1.0, 2.0}).median, 1.5);
+    EXPECT_EQ(spreadOf({}).count, 0u);
+}
+
+const ReproductionResult& smallStudy() {
+    static const ReproductionResult result = [] {
+        ReproductionSpec spec;
+        spec.blades = 5;
+        NullProgressSink progress;
+        auto run = runReproduction(spec, progress, CancelToken{});
+        EXPECT_TRUE(run.has_value()) << run.error().toString();
+        return *run;
+    }();
+    return result;
+}
+
+TEST(Reproduction, EveryBladeIsComparedAndTheEngineNeverReverses) {
+    const ReproductionResult& result = smallStudy();
+    ASSERT_EQ(result.blades.size(), 5u);
+    for (const BladeFigures& blade : result.blades) {
+        EXPECT_TRUE(blade.error.empty()) << blade.blade << ": " << blade.error;
+        EXPECT_EQ(blade.figures.at("stheta-best").at("a_reversals"), 0.0) << blade.blade;
+    }
+    const Spread& reduction =
+        result.summary.at("stheta-best").at("a_peak_acceleration_reduction_vs_original");
+    EXPECT_EQ(reduction.count, 5u);
+    EXPECT_GT(reduction.median, 0.5);
+    EXPECT_LE(reduction.q1, reduction.median);
+    EXPECT_LE(reduction.median, reduction.q3);
+}
+
+TEST(Reproduction, IsDeterministicForASeed) {
+    ReproductionSpec spec;
+    spec.blades = 5;
+    NullProgressSink progress;
+    auto again = runReproduction(spec, progress, CancelToken{});
+    ASSERT_TRUE(again.has_value());
+    EXPECT_EQ(reproductionCsv(*again), reproductionCsv(smallStudy()));
+}
+
+TEST(Reproduction, CancelledStudyStops) {
+    ReproductionSpec spec;
+    spec.blades = 3;
+    NullProgressSink progress;
+    CancelToken cancel;
+    cancel.requestCancel();
+    auto result = runReproduction(spec, progress, cancel);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
+}
+
+} // namespace
+} // namespace bladeaxis::job

@@ -59,6 +59,11 @@ const toolpath::Toolpath& LoadedProgram::path() const {
                       document);
 }
 
+const std::string& LoadedProgram::text() const {
+    return std::visit([](const auto& program) -> const std::string& { return program.text; },
+                      document);
+}
+
 ProgramFormat LoadedProgram::format() const {
     return std::holds_alternative<nc::GcodeProgram>(document) ? ProgramFormat::Gcode
                                                               : ProgramFormat::Apt;

@@ -24,6 +24,7 @@ struct LoadedProgram {
     std::variant<nc::GcodeProgram, cl::AptProgram> document;
 
     const toolpath::Toolpath& path() const;
+    const std::string& text() const; // the program as read, byte for byte
     ProgramFormat format() const;
 };
 

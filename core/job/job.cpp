@@ -82,16 +82,16 @@ Result<std::vector<kinematics::MachineAxes>> passAxes(std::span<const ClRecord> 
     return axes;
 }
 
+// The text is parsed and dropped: the document keeps the one copy the writer needs.
 Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::MachineModel& machine,
-                                    std::string& text, std::optional<double>& toolRadius) {
+                                    std::optional<double>& toolRadius) {
     if (spec.demo) {
         auto demo = demoProgram(machine);
         if (!demo) {
             return std::unexpected(demo.error());
         }
-        text = std::move(demo->text);
         toolRadius = demo->toolRadius;
-        return io::parseProgram(text, kDemoProgramName, io::ProgramFormat::Gcode, machine);
+        return io::parseProgram(demo->text, kDemoProgramName, io::ProgramFormat::Gcode, machine);
     }
     if (spec.program.empty()) {
         return makeError(ErrorCode::InvalidArgument, "no input program given (or use --demo)");
@@ -100,9 +100,8 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
     if (!content) {
         return std::unexpected(content.error());
     }
-    text = std::move(*content);
-    return io::parseProgram(text, spec.program.string(), io::probeFormat(spec.program, text),
-                            machine);
+    return io::parseProgram(*content, spec.program.string(),
+                            io::probeFormat(spec.program, *content), machine);
 }
 
 Status checkCancelled(const CancelToken& cancel) {
@@ -198,9 +197,8 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     }
     progress.progress(0.05,
                       spec.demo ? "generating the demo blade program" : "reading the program");
-    std::string text;
     std::optional<double> generatedRadius;
-    auto program = loadInput(spec, *machine, text, generatedRadius);
+    auto program = loadInput(spec, *machine, generatedRadius);
     if (!program) {
         return std::unexpected(program.error());
     }
@@ -209,7 +207,6 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     }
     JobResult result{.machine = *machine,
                      .program = std::move(*program),
-                     .programText = std::move(text),
                      .toolRadius = std::nullopt,
                      .pass = {},
                      .axes = {},

@@ -42,7 +42,6 @@ struct CuttingPass {
 struct JobResult {
     kinematics::MachineModel machine;
     io::LoadedProgram program;
-    std::string programText;          // the input text (the demo program when generated)
     std::optional<double> toolRadius; // mm, from the spec or the file
     CuttingPass pass;
     std::vector<kinematics::MachineAxes> axes; // per record of the pass, A continuous
@@ -52,6 +51,9 @@ struct JobResult {
     std::optional<compare::Comparison> comparison; // when spec.compare
     std::vector<std::string> warnings;
     double seconds = 0.0; // wall time of runJob
+
+    // The input text (the demo program when generated); held once, by the parsed document.
+    const std::string& programText() const { return program.text(); }
 };
 
 // The spec's machine file, or the built-in default blade machine. A missing or invalid file is

@@ -138,7 +138,7 @@ Status writeReportFolder(const JobSpec& spec, const JobResult& result,
                          const std::vector<fs::path>& inputs) {
     if (spec.demo) {
         if (auto status =
-                writeFileAtomically(spec.outputDir / kDemoProgramName, result.programText);
+                writeFileAtomically(spec.outputDir / kDemoProgramName, result.programText());
             !status) {
             return status;
         }

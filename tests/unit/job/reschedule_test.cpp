@@ -66,7 +66,7 @@ TEST(Reschedule, GcodeOutputChangesOnlyTipCoordinatesAndA) {
     auto result = run(gcodeSpec());
     ASSERT_TRUE(result.has_value()) << result.error().toString();
     ASSERT_TRUE(result->rescheduled);
-    const auto before = linesOf(result->programText);
+    const auto before = linesOf(result->programText());
     const auto after = linesOf(result->rescheduled->programText);
     ASSERT_EQ(before.size(), after.size());
     std::size_t changed = 0;

@@ -57,6 +57,7 @@ struct RawOptions {
     NumberOption lead{"", "--lead-deg", false};
     NumberOption tilt{"", "--tilt-deg", false};
     NumberOption tolerance{"", "--tolerance", true};
+    NumberOption filterMs{"", "--filter-ms", true};
     std::string outputProgram, preset, jobFile;
     std::map<std::string, std::string> parameters; // schema key -> text, when given
     std::uint64_t seed = 1;
@@ -120,8 +121,12 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     cli.add_option("--feed", raw.feed.text, "Evaluate at this constant feed, mm/min");
     cli.add_option("--feed-reference", raw.feedReference, "Path parameter: tip or centre")
         ->check(CLI::IsMember({"tip", "centre"}));
-    cli.add_option("--derivatives", raw.derivatives, "spline (default) or fd (finite differences)")
-        ->check(CLI::IsMember({"spline", "fd"}));
+    cli.add_option(
+           "--derivatives", raw.derivatives,
+           "spline (default), fd (finite differences) or filter (controller-like, --filter-ms)")
+        ->check(CLI::IsMember({"spline", "fd", "filter"}));
+    cli.add_option("--filter-ms", raw.filterMs.text,
+                   "Moving-average window of --derivatives filter, ms (default 8)");
     cli.add_flag("--json", raw.json, "Print report.json to standard output instead of the summary");
     cli.add_flag("-q,--quiet", raw.quiet, "Print nothing but errors");
     cli.add_flag("--version", raw.version, "Print the version and exit");
@@ -189,10 +194,12 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     auto feed = readNumber(raw.feed);
     auto revolutions = readNumber(raw.revolutions);
     auto pitch = readNumber(raw.pitch);
+    auto filterMs = readNumber(raw.filterMs);
     auto lead = readNumber(raw.lead);
     auto tilt = readNumber(raw.tilt);
     auto tolerance = readNumber(raw.tolerance);
-    for (const auto* value : {&toolRadius, &feed, &revolutions, &pitch, &lead, &tilt, &tolerance}) {
+    for (const auto* value :
+         {&toolRadius, &feed, &revolutions, &pitch, &lead, &tilt, &tolerance, &filterMs}) {
         if (!value->has_value()) {
             return std::unexpected(value->error());
         }
@@ -202,6 +209,9 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     }
     if (*feed) {
         options.job.analysis.feedOverride = units::perMinuteToPerSecond(**feed);
+    }
+    if (*filterMs) {
+        options.job.analysis.filterSeconds = **filterMs / 1000.0;
     }
     options.generate.toolRadius = *toolRadius;
     options.generate.revolutions = *revolutions;
@@ -238,8 +248,9 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
     options.job.analysis.feedReference = raw.feedReference == "centre"
                                              ? analysis::FeedReference::Centre
                                              : analysis::FeedReference::Tip;
-    options.job.analysis.method = raw.derivatives == "fd"
-                                      ? analysis::DerivativeMethod::FiniteDifference
+    options.job.analysis.method =
+        raw.derivatives == "fd"       ? analysis::DerivativeMethod::FiniteDifference
+        : raw.derivatives == "filter" ? analysis::DerivativeMethod::Filtered
                                       : analysis::DerivativeMethod::Spline;
     options.printJson = raw.json;
     options.quiet = raw.quiet;

@@ -152,8 +152,9 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         for (std::size_t i = 0; i < n; ++i) {
             position[i] = axes[profile.sampleRecord[i]][id];
         }
-        Result<AxisSeries> series = differentiateAxis(profile.pathParameter, std::move(position),
-                                                      profile.feed, options.method);
+        Result<AxisSeries> series =
+            differentiateAxis(profile.pathParameter, std::move(position), profile.feed,
+                              options.method, options.filterSeconds);
         if (!series) {
             Error error = std::move(series.error());
             error.message = std::string("axis ") + kinematics::axisName(id) + ": " + error.message;

@@ -26,7 +26,10 @@ enum class FeedReference { Tip, Centre };
 // Spline: not-a-knot C2 cubic q(s) per axis, derivatives analytic (the headline method).
 // FiniteDifference: raw 3-point non-uniform differences (exact for quadratics); mostly measures
 // the CL discretisation, reported for comparison.
-enum class DerivativeMethod { Spline, FiniteDifference };
+// Spline: not-a-knot cubic spline of each axis over s (the headline method). FiniteDifference:
+// raw 3-point differences (they mostly measure the CL discretisation). Filtered: the
+// controller-like filter of spec §8.1 (1 ms resampling, moving average applied twice).
+enum class DerivativeMethod { Spline, FiniteDifference, Filtered };
 
 struct AxisProfileOptions {
     FeedReference feedReference = FeedReference::Tip;
@@ -37,7 +40,8 @@ struct AxisProfileOptions {
     // ignored). A per-record feed would add impulsive accelerations at every feed step, which
     // measure the post-processor, not the tool orientation.
     double feedOverride = 0.0;
-    double toolRadius = 0.0; // mm, required (> 0) for FeedReference::Centre
+    double toolRadius = 0.0;      // mm, required (> 0) for FeedReference::Centre
+    double filterSeconds = 0.008; // moving-average window of DerivativeMethod::Filtered
 };
 
 // One machine axis. Derivatives are time derivatives at the constant feed F:

@@ -1,5 +1,6 @@
 #include "core/analysis/derivatives.h"
 
+#include "core/analysis/controller_filter.h"
 #include "core/geometry/cubic_spline.h"
 
 #include <algorithm>
@@ -115,6 +116,26 @@ Status splineDerivatives(std::span<const double> s, double feed, AxisSeries& ser
     return {};
 }
 
+struct Peaks {
+    double velocity = 0.0, acceleration = 0.0, jerk = 0.0;
+};
+
+Peaks filteredDerivatives(std::span<const double> s, double feed, double filterSeconds,
+                          AxisSeries& series) {
+    const FilteredAxis filtered = filterAxis(s, series.position, feed, filterSeconds);
+    const std::size_t n = s.size();
+    series.velocity.resize(n);
+    series.acceleration.resize(n);
+    series.jerk.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double t = (s[i] - s.front()) / feed;
+        series.velocity[i] = sampleAt(filtered.velocity, filtered.step, t);
+        series.acceleration[i] = sampleAt(filtered.acceleration, filtered.step, t);
+        series.jerk[i] = sampleAt(filtered.jerk, filtered.step, t);
+    }
+    return {maxAbs(filtered.velocity), maxAbs(filtered.acceleration), maxAbs(filtered.jerk)};
+}
+
 Status validate(std::span<const double> s, std::span<const double> position, double feed) {
     if (s.size() != position.size()) {
         return makeError(ErrorCode::InvalidArgument,
@@ -142,7 +163,7 @@ Status validate(std::span<const double> s, std::span<const double> position, dou
 } // namespace
 
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,
-                                     double feed, DerivativeMethod method) {
+                                     double feed, DerivativeMethod method, double filterSeconds) {
     if (Status ok = validate(s, position, feed); !ok) {
         return std::unexpected(std::move(ok.error()));
     }
@@ -160,16 +181,19 @@ Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<doub
         series.jerk.assign(n, 0.0);
         return series;
     }
+    Peaks filteredPeaks;
     if (method == DerivativeMethod::Spline) {
         if (Status ok = splineDerivatives(s, feed, series, interiorPeak); !ok) {
             return std::unexpected(std::move(ok.error()));
         }
+    } else if (method == DerivativeMethod::Filtered) {
+        filteredPeaks = filteredDerivatives(s, feed, filterSeconds, series);
     } else {
         finiteDifferences(s, feed, series);
     }
-    series.peakVelocity = std::max(maxAbs(series.velocity), interiorPeak);
-    series.peakAcceleration = maxAbs(series.acceleration);
-    series.peakJerk = maxAbs(series.jerk);
+    series.peakVelocity = std::max({maxAbs(series.velocity), interiorPeak, filteredPeaks.velocity});
+    series.peakAcceleration = std::max(maxAbs(series.acceleration), filteredPeaks.acceleration);
+    series.peakJerk = std::max(maxAbs(series.jerk), filteredPeaks.jerk);
     series.p999Velocity = absPercentile(series.velocity, 0.999);
     series.p999Acceleration = absPercentile(series.acceleration, 0.999);
     if (!std::isfinite(series.peakVelocity + series.peakAcceleration + series.peakJerk)) {

@@ -13,8 +13,11 @@ namespace bladeaxis::analysis {
 // returns the series with velocity, acceleration, jerk, peaks and percentiles at feed F (mm/s).
 // Errors: InvalidArgument (sizes differ, s not strictly increasing, F not positive),
 // Geometry (a non-finite value, or derivatives that overflow).
+// filterSeconds is the window of DerivativeMethod::Filtered (ignored otherwise); its peaks are
+// taken over the whole 1 ms series, its per-sample values interpolated at the sample times.
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,
-                                     double feed, DerivativeMethod method);
+                                     double feed, DerivativeMethod method,
+                                     double filterSeconds = 0.008);
 
 // The p-quantile (0 <= p <= 1) of |values|, linear interpolation between order statistics
 // (numpy's default). 0 for an empty input. O(n).

@@ -61,6 +61,12 @@ nlohmann::json analysisJson(const analysis::AxisProfile& profile,
     json["path_length_mm"] = profile.pathLength;
     json["feed_mm_min"] = units::perSecondToPerMinute(profile.feed);
     json["cycle_time_at_programmed_feed_s"] = profile.cycleTime;
+    json["feed_reference"] =
+        profile.feedReference == analysis::FeedReference::Centre ? "centre" : "tip";
+    json["derivatives"] = profile.method == analysis::DerivativeMethod::Spline ? "spline"
+                          : profile.method == analysis::DerivativeMethod::Filtered
+                              ? "controller filter"
+                              : "finite differences";
     nlohmann::json axes;
     for (AxisId axis : kinematics::kAllAxes) {
         axes[kinematics::axisName(axis)] = axisJson(axis, profile.axes[static_cast<int>(axis)]);

@@ -1,0 +1,71 @@
+#include "core/analysis/controller_filter.h"
+#include "core/analysis/derivatives.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace bladeaxis::analysis {
+namespace {
+
+TEST(MovingAverage, KeepsConstantsAndLinesAwayFromTheEnds) {
+    std::vector<double> line;
+    for (int k = 0; k < 50; ++k) {
+        line.push_back(3.0 * k - 2.0);
+    }
+    const auto smoothed = movingAverage(line, 9);
+    for (std::size_t k = 4; k + 4 < line.size(); ++k) {
+        EXPECT_NEAR(smoothed[k], line[k], 1e-12) << k;
+    }
+    EXPECT_EQ(movingAverage(std::vector<double>(7, 2.5), 5), std::vector<double>(7, 2.5));
+}
+
+TEST(ControllerFilter, ConstantRateAxisKeepsItsVelocity) {
+    // s from 0 to 100 mm at 10 mm/s: 10 s; the axis moves 2 units per mm -> 20 units/s.
+    std::vector<double> s, q;
+    for (int i = 0; i <= 200; ++i) {
+        s.push_back(0.5 * i);
+        q.push_back(1.0 * i);
+    }
+    const FilteredAxis axis = filterAxis(s, q, 10.0, 0.008);
+    ASSERT_GT(axis.velocity.size(), 9000u);
+    const std::size_t middle = axis.velocity.size() / 2;
+    EXPECT_NEAR(axis.velocity[middle], 20.0, 1e-9);
+    EXPECT_NEAR(axis.acceleration[middle], 0.0, 1e-6);
+}
+
+TEST(ControllerFilter, TurnsAVelocityStepIntoABoundedAcceleration) {
+    // A corner: the axis stands still, then moves at 1 unit/mm. Raw second differences are an
+    // impulse that grows without bound as the samples get denser; the filter's is bounded by
+    // the jump divided by the window.
+    std::vector<double> s, q;
+    for (int i = 0; i <= 2000; ++i) {
+        s.push_back(0.01 * i);
+        q.push_back(i < 1000 ? 0.0 : 0.01 * (i - 1000));
+    }
+    const double feed = 10.0, window = 0.008;
+    auto filtered = differentiateAxis(s, q, feed, DerivativeMethod::Filtered, window);
+    auto raw = differentiateAxis(s, q, feed, DerivativeMethod::FiniteDifference);
+    ASSERT_TRUE(filtered && raw);
+    const double jump = 1.0 * feed; // units/s
+    EXPECT_NEAR(filtered->peakVelocity, jump, 1e-6);
+    EXPECT_LE(filtered->peakAcceleration, 1.05 * jump / window);
+    EXPECT_GT(filtered->peakAcceleration, 0.5 * jump / window);
+    EXPECT_GT(raw->peakAcceleration, 5.0 * filtered->peakAcceleration);
+}
+
+TEST(ControllerFilter, WiderWindowLowersThePeakAcceleration) {
+    std::vector<double> s, q;
+    for (int i = 0; i <= 400; ++i) {
+        s.push_back(0.25 * i);
+        q.push_back(std::sin(0.05 * i) + (i > 200 ? 0.02 * (i - 200) : 0.0));
+    }
+    auto narrow = differentiateAxis(s, q, 20.0, DerivativeMethod::Filtered, 0.004);
+    auto wide = differentiateAxis(s, q, 20.0, DerivativeMethod::Filtered, 0.032);
+    ASSERT_TRUE(narrow && wide);
+    EXPECT_LT(wide->peakAcceleration, narrow->peakAcceleration);
+}
+
+} // namespace
+} // namespace bladeaxis::analysis

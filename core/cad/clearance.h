@@ -33,8 +33,11 @@ namespace bladeaxis::cad {
 struct ClearanceOptions {
     double gougeTolerance = 0.01;  // mm; a ball clearance below -tolerance is a gouge
     double minimumClearance = 0.0; // mm; shank or holder closer than this is a collision
-    double searchLimit = std::numeric_limits<double>::infinity(); // report min(distance, limit)
-    unsigned threads = 0;                                         // 0 = hardware concurrency
+    // Distances are exact up to this limit and reported as the limit beyond it: the search then
+    // prunes everything farther away (4 us per CL point at 5 mm, 100 us unlimited, on the demo
+    // profile). Collisions and near misses are always exact.
+    double searchLimit = 5.0; // mm, > 0 (infinity = exact everywhere)
+    unsigned threads = 0;     // 0 = hardware concurrency
     // Inclusive record ranges per layer; empty = one layer per revolution of the ball centre
     // about the rotary axis x, counted from the first record.
     std::vector<std::pair<std::size_t, std::size_t>> layers;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -177,9 +178,11 @@ TEST(Clearance, OriginalDemoPathHasNoShankOrHolderCollision) {
     const ClearanceReport& report = demoReport();
     EXPECT_EQ(countIssues(report, ClearanceKind::ShankCollision), 0u);
     EXPECT_EQ(countIssues(report, ClearanceKind::HolderCollision), 0u);
+    const double limit = ClearanceOptions{}.searchLimit;
     for (const RecordClearance& c : report.records) {
         ASSERT_GT(c.shank, 1.0);
-        ASSERT_GT(c.holder, 10.0);
+        ASSERT_LE(c.shank, limit);
+        ASSERT_EQ(c.holder, limit); // nothing within the search limit of the holder
     }
 }
 
@@ -298,6 +301,22 @@ TEST(Clearance, RescheduledDemoShankGoesNoDeeperThanTheBall) {
         grazing += c.shank < 0.0;
     }
     RecordProperty("shank_below_zero_records", static_cast<int>(grazing));
+}
+
+TEST(Clearance, SearchLimitOnlyCapsDistancesBeyondIt) {
+    ClearanceOptions exact;
+    exact.searchLimit = std::numeric_limits<double>::infinity();
+    const Result<ClearanceReport> full =
+        checkClearance(demoSamples(), demoPath().path, demoTool(), exact);
+    ASSERT_TRUE(full.has_value()) << full.error().toString();
+    const double limit = ClearanceOptions{}.searchLimit;
+    for (std::size_t i = 0; i < full->records.size(); ++i) {
+        const RecordClearance& a = full->records[i];
+        const RecordClearance& b = demoReport().records[i];
+        ASSERT_EQ(b.ball, std::min(a.ball, limit)) << i;
+        ASSERT_EQ(b.shank, std::min(a.shank, limit)) << i;
+        ASSERT_EQ(b.holder, std::min(a.holder, limit)) << i;
+    }
 }
 
 TEST(Clearance, LayersPartitionTheRecordsByRevolution) {

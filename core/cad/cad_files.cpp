@@ -3,6 +3,7 @@
 #include "core/cad/detail/occt_shape.h"
 
 #include <BRepBuilderAPI_Transform.hxx>
+#include <BinTools.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Reader.hxx>
@@ -17,11 +18,17 @@
 #include <TopExp_Explorer.hxx>
 #include <XSControl_Reader.hxx>
 #include <algorithm>
+#include <atomic>
 #include <cctype>
+#include <chrono>
+#include <csignal>
 #include <fstream>
 #include <gp_Trsf.hxx>
 #include <string>
+#include <sys/wait.h>
 #include <system_error>
+#include <thread>
+#include <unistd.h>
 
 namespace bladeaxis::cad {
 namespace fs = std::filesystem;
@@ -133,8 +140,8 @@ Status checkPlacement(const Placement& placement) {
     return {};
 }
 
+// The caller holds dataExchangeMutex() (in the parent: a forked child inherits it locked).
 Result<TopoDS_Shape> transferModel(const fs::path& path, CadFormat format) {
-    const std::lock_guard lock(dataExchangeMutex());
     // Coordinates come out in mm whatever unit the file declares.
     if (!Interface_Static::SetCVal("xstep.cascade.unit", "MM")) {
         return makeError(ErrorCode::Internal, "OpenCASCADE data exchange is not initialised");
@@ -159,6 +166,85 @@ Result<TopoDS_Shape> transferModel(const fs::path& path, CadFormat format) {
                          where);
     }
     return reader.OneShape();
+}
+
+// Exit codes of the reading child process.
+enum ChildExit : int { kShapeWritten = 0, kMalformed = 1, kNoGeometry = 2, kFailed = 3 };
+
+constexpr std::chrono::seconds kReadTimeout{300};
+
+Error childError(const fs::path& path, CadFormat format, const std::string& what) {
+    const char* kind = format == CadFormat::Step ? "STEP" : "IGES";
+    return Error{ErrorCode::Parse,
+                 std::string("malformed ") + kind + " file: " + what + " (" + kExpected + ")",
+                 {path.string(), 0, 0},
+                 {}};
+}
+
+// OpenCASCADE 7.6's STEP translator dereferences missing entities of a malformed file (a
+// segmentation fault, not an exception: found by mutating a valid file). Untrusted files are
+// therefore translated in a forked child process, which hands the shape back as an OCCT binary
+// BRep file; a crash, an exception or a hang of the child becomes an error of this file.
+Result<TopoDS_Shape> transferInChild(const fs::path& path, CadFormat format) {
+    static std::atomic<unsigned> counter{0};
+    const fs::path handover =
+        fs::temp_directory_path() /
+        ("bladeaxis_cad_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".brep");
+    const std::lock_guard lock(dataExchangeMutex());
+    const pid_t child = ::fork();
+    if (child < 0) {
+        return makeError(ErrorCode::Internal, "cannot start the CAD reader process",
+                         {path.string(), 0, 0});
+    }
+    if (child == 0) {
+        int code = kFailed;
+        try {
+            const Result<TopoDS_Shape> shape = transferModel(path, format);
+            if (!shape) {
+                code = shape.error().code == ErrorCode::Parse ? kMalformed : kNoGeometry;
+            } else if (BinTools::Write(*shape, handover.c_str())) {
+                code = kShapeWritten;
+            }
+        } catch (...) {
+            code = kFailed;
+        }
+        ::_exit(code); // no atexit handlers or static destructors of the parent's state
+    }
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + kReadTimeout;
+    while (::waitpid(child, &status, WNOHANG) == 0) {
+        if (std::chrono::steady_clock::now() > deadline) {
+            ::kill(child, SIGKILL);
+            ::waitpid(child, &status, 0);
+            return std::unexpected(childError(path, format, "reading timed out"));
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    std::error_code ignored;
+    if (WIFSIGNALED(status)) {
+        fs::remove(handover, ignored);
+        return std::unexpected(childError(path, format,
+                                          "OpenCASCADE crashed on it (signal " +
+                                              std::to_string(WTERMSIG(status)) + ")"));
+    }
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : kFailed;
+    if (code == kMalformed) {
+        return std::unexpected(childError(path, format, "syntax errors"));
+    }
+    if (code == kNoGeometry) {
+        return makeError(ErrorCode::Geometry,
+                         std::string("the ") + (format == CadFormat::Step ? "STEP" : "IGES") +
+                             " file holds no transferable geometry (expected faces, shells or "
+                             "solids)",
+                         {path.string(), 0, 0});
+    }
+    TopoDS_Shape shape;
+    const bool read = code == kShapeWritten && BinTools::Read(shape, handover.c_str());
+    fs::remove(handover, ignored);
+    if (!read) {
+        return std::unexpected(childError(path, format, "OpenCASCADE failed to translate it"));
+    }
+    return shape;
 }
 
 Result<CadShape> placeShape(const TopoDS_Shape& shape, const Placement& placement) {
@@ -248,7 +334,7 @@ Result<CadShape> readCadFile(const fs::path& path, const Placement& placement) {
         return std::unexpected(format.error());
     }
     return catchOcct(ErrorCode::Parse, path.string(), [&]() -> Result<CadShape> {
-        const Result<TopoDS_Shape> shape = transferModel(path, *format);
+        const Result<TopoDS_Shape> shape = transferInChild(path, *format);
         if (!shape) {
             return std::unexpected(shape.error());
         }

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <numbers>
 #include <vector>
 
 namespace bladeaxis::cad {
@@ -70,6 +72,26 @@ TEST(Sections, FastPathAgreesWithTheBooleanSection) {
     EXPECT_LT(hausdorff(inSectionPlane(fast->front()), inSectionPlane(reference->front())), 0.005);
 }
 
+// The section of an imported model follows the placement: a blade written to IGES and read
+// back turned by 90 deg about the rotary axis and shifted along it has the turned section.
+TEST(Sections, OfAPlacedImportFollowThePlacement) {
+    const std::filesystem::path file = testing::scratchDir() / "blade.igs";
+    ASSERT_TRUE(writeCadFile(demoSurface(), file, CadFormat::Iges).has_value());
+    Placement placement;
+    placement.rotation = rotationX(std::numbers::pi / 2);
+    placement.translation = Vec3(3.0, 0.0, 0.0);
+    const Result<CadShape> placed = readCadFile(file, placement);
+    ASSERT_TRUE(placed.has_value()) << placed.error().toString();
+    const Result<std::vector<Polyline3>> cut = sectionAtX(*placed, 7.3 + 3.0);
+    ASSERT_TRUE(cut.has_value()) << cut.error().toString();
+    ASSERT_EQ(cut->size(), 1u);
+    blade::Curve2 expected;
+    for (const Vec2& p : demoBlade().sectionAt(7.3)) {
+        expected.emplace_back(-p.y(), p.x()); // (y, z) -> (-z, y)
+    }
+    EXPECT_LT(hausdorff(inSectionPlane(cut->front()), expected), 0.01);
+}
+
 TEST(Sections, AreEmptyWhereThePlaneMissesTheShape) {
     const Result<std::vector<Polyline3>> cut = sectionAtX(demoSurface(), 25.0);
     ASSERT_TRUE(cut.has_value()) << cut.error().toString();
@@ -97,6 +119,20 @@ TEST(Sections, InParallelEqualTheSerialOnes) {
     for (std::size_t i = 0; i < xs.size(); ++i) {
         ASSERT_EQ((*serial)[i].size(), (*parallel)[i].size());
         ASSERT_EQ((*serial)[i][0].points.size(), (*parallel)[i][0].points.size());
+        EXPECT_EQ((*serial)[i][0].points, (*parallel)[i][0].points);
+    }
+}
+
+TEST(Sections, OfTrimmedFacesInParallelEqualTheSerialOnes) {
+    const Result<CadShape> box = readCadFile(cadData("box_solid_inch.step"));
+    ASSERT_TRUE(box.has_value()) << box.error().toString();
+    const std::vector<double> xs{1.5, 3.0, 5.0, 7.0, 9.0, 10.5};
+    const auto serial = sectionsAtX(*box, xs, {}, 1);
+    const auto parallel = sectionsAtX(*box, xs, {}, 2);
+    ASSERT_TRUE(serial.has_value() && parallel.has_value());
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        ASSERT_EQ((*parallel)[i].size(), 1u);
+        EXPECT_NEAR(blade::signedArea(inSectionPlane((*parallel)[i][0])), 600.0, 1e-6);
         EXPECT_EQ((*serial)[i][0].points, (*parallel)[i][0].points);
     }
 }

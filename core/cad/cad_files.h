@@ -6,7 +6,11 @@
 // Reading: faces, shells and solids are transferred (curves and points alone are refused),
 // coordinates are converted from the file's unit to mm, then the caller's placement puts the
 // blade relative to the rotary axis. Every failure is a Result error naming the file and what
-// was expected; OpenCASCADE exceptions never escape.
+// was expected; OpenCASCADE exceptions never escape. OpenCASCADE 7.6 crashes (SIGSEGV) on some
+// malformed STEP files, so the translation runs in a forked child process that hands the shape
+// back as a binary BRep file; a crash, an exception or a hang (5 min) of the child is reported as
+// a Parse error. Reads and writes are serialised (OpenCASCADE keeps its data-exchange settings in
+// process-wide state).
 
 #include "core/base/error.h"
 #include "core/cad/cad_shape.h"

@@ -58,6 +58,12 @@ struct RawOptions {
     NumberOption tilt{"", "--tilt-deg", false};
     NumberOption tolerance{"", "--tolerance", true};
     NumberOption filterMs{"", "--filter-ms", true};
+    NumberOption stickOut{"", "--stick-out", true};
+    NumberOption holderRadius{"", "--holder-radius", true};
+    NumberOption holderLength{"", "--holder-length", true};
+    std::string cad;
+    std::vector<std::string> cadTranslate;
+    bool force = false;
     std::string outputProgram, preset, jobFile;
     std::map<std::string, std::string> parameters; // schema key -> text, when given
     std::uint64_t seed = 1;
@@ -113,6 +119,18 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     cli.add_flag("--batch", raw.batch, "Run headless: no window, no display needed");
     cli.add_option("program", raw.program, "NC program (G-code) or CL data (APT/CLSF) to analyse");
     cli.add_flag("--demo", raw.demo, "Use the built-in demo blade program");
+    auto* cad = cli.add_option_group("Blade CAD", "Clearance check against the real blade");
+    cad->add_option("--cad", raw.cad,
+                    "Blade CAD (STEP or IGES) to check the tool against; gouges or collisions "
+                    "the re-scheduling introduces refuse the output program");
+    cad->add_option("--cad-translate", raw.cadTranslate,
+                    "Move the CAD blade by X Y Z mm into the program's workpiece frame")
+        ->expected(3);
+    cad->add_option("--stick-out", raw.stickOut.text, "Tool tip to holder face, mm (default 50)");
+    cad->add_option("--holder-radius", raw.holderRadius.text, "Holder radius, mm (default 20)");
+    cad->add_option("--holder-length", raw.holderLength.text, "Holder length, mm (default 60)");
+    cad->add_flag("--force", raw.force,
+                  "Write the program even if the clearance check finds new gouges or collisions");
     cli.add_option("--machine", raw.machine,
                    "Machine file (JSON); default: built-in blade machine");
     cli.add_option("--tool-radius", raw.toolRadius.text,
@@ -195,11 +213,14 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     auto revolutions = readNumber(raw.revolutions);
     auto pitch = readNumber(raw.pitch);
     auto filterMs = readNumber(raw.filterMs);
+    auto stickOut = readNumber(raw.stickOut);
+    auto holderRadius = readNumber(raw.holderRadius);
+    auto holderLength = readNumber(raw.holderLength);
     auto lead = readNumber(raw.lead);
     auto tilt = readNumber(raw.tilt);
     auto tolerance = readNumber(raw.tolerance);
-    for (const auto* value :
-         {&toolRadius, &feed, &revolutions, &pitch, &lead, &tilt, &tolerance, &filterMs}) {
+    for (const auto* value : {&toolRadius, &feed, &revolutions, &pitch, &lead, &tilt, &tolerance,
+                              &filterMs, &stickOut, &holderRadius, &holderLength}) {
         if (!value->has_value()) {
             return std::unexpected(value->error());
         }
@@ -210,6 +231,10 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     if (*feed) {
         options.job.analysis.feedOverride = units::perMinuteToPerSecond(**feed);
     }
+    auto& tool = options.job.cad.tool;
+    tool.stickOut = stickOut->value_or(tool.stickOut);
+    tool.holderRadius = holderRadius->value_or(tool.holderRadius);
+    tool.holderLength = holderLength->value_or(tool.holderLength);
     if (*filterMs) {
         options.job.analysis.filterSeconds = **filterMs / 1000.0;
     }
@@ -219,6 +244,26 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     options.generate.leadDeg = *lead;
     options.generate.tiltDeg = *tilt;
     options.generate.chordalTolerance = *tolerance;
+    return {};
+}
+
+Status applyCad(const RawOptions& raw, BatchOptions& options) {
+    auto& cad = options.job.cad;
+    if (!raw.cad.empty()) {
+        cad.file = raw.cad;
+    }
+    cad.force = raw.force;
+    // The tool's taper is the one the channel was built for (spec §2.3).
+    cad.tool.taperHalfAngle = options.job.parameters.taperHalfAngleRad;
+    for (std::size_t k = 0; k < raw.cadTranslate.size(); ++k) {
+        auto value = parseNumber(raw.cadTranslate[k]);
+        if (!value) {
+            return makeError(ErrorCode::InvalidArgument,
+                             "--cad-translate: expected three numbers (mm), got '" +
+                                 raw.cadTranslate[k] + "'");
+        }
+        cad.placement.translation[static_cast<Eigen::Index>(k)] = *value;
+    }
     return {};
 }
 
@@ -239,6 +284,9 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
         options.job.program = raw.program;
     }
     options.job.demo = raw.demo;
+    if (auto status = applyCad(raw, options); !status) {
+        return std::unexpected(status.error());
+    }
     if (!raw.machine.empty()) {
         options.job.machineFile = raw.machine;
     }

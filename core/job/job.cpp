@@ -2,6 +2,8 @@
 
 #include "core/analysis/axis_profile.h"
 #include "core/base/file_io.h"
+#include "core/blade/presets.h"
+#include "core/cad/blade_surface.h"
 #include "core/geometry/angles.h"
 #include "core/job/demo_program.h"
 #include "core/kinematics/kinematics.h"
@@ -139,6 +141,58 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     return {};
 }
 
+Result<cad::CadShape> bladeShape(const JobSpec& spec) {
+    if (!spec.cad.file.empty()) {
+        return cad::readCadFile(spec.cad.file, spec.cad.placement);
+    }
+    auto blade = blade::demoBlade(); // the demo program was generated on it
+    if (!blade) {
+        return std::unexpected(blade.error());
+    }
+    return cad::makeBladeSurface(*blade);
+}
+
+Status cadCheckInto(JobResult& result, const JobSpec& spec) {
+    if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "the clearance check needs the ball radius: give --tool-radius");
+    }
+    auto shape = bladeShape(spec);
+    if (!shape) {
+        return std::unexpected(shape.error());
+    }
+    CuttingPassView view;
+    view.original =
+        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
+    view.sourceFile = result.program.path().sourceFile;
+    if (result.rescheduled) {
+        view.rescheduled = result.rescheduled->records;
+        // Layers share their junction sample; the clearance report wants a partition.
+        const auto& layers = result.rescheduled->schedule.layers;
+        for (std::size_t k = 0; k < layers.size(); ++k) {
+            const std::size_t last =
+                k + 1 < layers.size() ? layers[k + 1].first - 1 : layers[k].last;
+            view.layers.emplace_back(layers[k].first, last);
+        }
+    }
+    const std::string source =
+        spec.cad.file.empty() ? "demo blade surface" : spec.cad.file.filename().string();
+    auto checked = runCadCheck(spec.cad, *shape, source, *result.toolRadius, view);
+    if (!checked) {
+        return std::unexpected(checked.error());
+    }
+    result.cadCheck = std::move(*checked);
+    const auto& inputIssues = result.cadCheck->original.issues;
+    if (!inputIssues.empty()) {
+        result.warnings.push_back(
+            "the input program's tool already gouges or collides with " + source + " at " +
+            std::to_string(inputIssues.size()) +
+            " CL points (first: " + cad::describe(inputIssues.front(), view.sourceFile) +
+            "); re-scheduling keeps the ball centres, so their gouges stay");
+    }
+    return {};
+}
+
 Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
         return makeError(
@@ -214,6 +268,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .constantFeed = {},
                      .rescheduled = std::nullopt,
                      .comparison = std::nullopt,
+                     .cadCheck = std::nullopt,
                      .warnings = {},
                      .seconds = 0.0};
     result.toolRadius = spec.toolRadius   ? spec.toolRadius
@@ -238,6 +293,12 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
         for (const std::string& warning : result.rescheduled->schedule.warnings) {
             progress.warning(warning);
             result.warnings.push_back(warning);
+        }
+    }
+    if (!spec.cad.file.empty() || spec.demo) {
+        progress.progress(0.65, "checking the tool against the blade CAD");
+        if (auto status = cadCheckInto(result, spec); !status) {
+            return std::unexpected(status.error());
         }
     }
     if (spec.compare) {

@@ -7,6 +7,7 @@
 #include "core/base/progress.h"
 #include "core/compare/compare.h"
 #include "core/io/program.h"
+#include "core/job/cad_check.h"
 #include "core/job/reschedule.h"
 #include "core/kinematics/machine_model.h"
 #include "core/scheduling/schedule_parameters.h"
@@ -29,6 +30,7 @@ struct JobSpec {
     scheduling::ScheduleParameters parameters = scheduling::bestPreset();
     std::string presetName = "best";     // recorded in the report; "custom" once edited
     std::filesystem::path outputProgram; // the re-scheduled program; empty: not written
+    CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)
     std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none
 };
 
@@ -49,6 +51,7 @@ struct JobResult {
     analysis::ConstantFeedTime constantFeed;
     std::optional<RescheduleOutcome> rescheduled;  // when spec.reschedule
     std::optional<compare::Comparison> comparison; // when spec.compare
+    std::optional<CadCheckResult> cadCheck;        // when CAD is given, and for the demo
     std::vector<std::string> warnings;
     double seconds = 0.0; // wall time of runJob
 

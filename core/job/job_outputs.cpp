@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <limits>
+
 namespace bladeaxis::job {
 
 namespace {
@@ -67,6 +69,40 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
     return json;
 }
 
+nlohmann::json clearanceSideJson(const cad::ClearanceReport& report, const std::string& file) {
+    cad::RecordClearance minimum{std::numeric_limits<double>::infinity(),
+                                 std::numeric_limits<double>::infinity(),
+                                 std::numeric_limits<double>::infinity()};
+    for (const cad::RecordClearance& record : report.records) {
+        minimum.ball = std::min(minimum.ball, record.ball);
+        minimum.shank = std::min(minimum.shank, record.shank);
+        minimum.holder = std::min(minimum.holder, record.holder);
+    }
+    nlohmann::json json{{"min_ball_mm", minimum.ball},
+                        {"min_shank_mm", minimum.shank},
+                        {"min_holder_mm", minimum.holder},
+                        {"issues", report.issues.size()}};
+    nlohmann::json first = nlohmann::json::array();
+    for (std::size_t i = 0; i < std::min<std::size_t>(report.issues.size(), 10); ++i) {
+        first.push_back(cad::describe(report.issues[i], file));
+    }
+    json["first_issues"] = first;
+    return json;
+}
+
+nlohmann::json clearanceJson(const CadCheckResult& check, const std::string& file) {
+    nlohmann::json json{{"cad", check.source},
+                        {"faces", check.faces},
+                        {"triangles", check.triangles},
+                        {"original", clearanceSideJson(check.original, file)}};
+    if (check.rescheduled) {
+        json["rescheduled"] = clearanceSideJson(*check.rescheduled, file);
+        json["introduced_issues"] = introducedIssues(check).size();
+    }
+    json["sampling_error_mm"] = check.original.samplingError;
+    return json;
+}
+
 nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
     nlohmann::json json;
     json["bladeaxis_version"] = BLADEAXIS_VERSION;
@@ -80,6 +116,9 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
     json["original"] = report::analysisJson(result.original, result.constantFeed);
     if (result.rescheduled) {
         json["rescheduled"] = rescheduledJson(result, spec);
+    }
+    if (result.cadCheck) {
+        json["clearance"] = clearanceJson(*result.cadCheck, result.program.path().sourceFile);
     }
     json["warnings"] = result.warnings;
     json["timing"] = {{"job_s", result.seconds}};
@@ -102,7 +141,24 @@ Status writeOutputProgram(const JobSpec& spec, const JobResult& result,
                          "an output program needs re-scheduling; it was not run",
                          {spec.outputProgram.string()});
     }
+    if (result.cadCheck) {
+        if (auto refused = refuseIfColliding(*result.cadCheck, result.program.path().sourceFile,
+                                             spec.cad.force);
+            !refused) {
+            return refused;
+        }
+    }
     return writeFileAtomically(spec.outputProgram, result.rescheduled->programText, inputs);
+}
+
+// The demo blade as real CAD, written through OpenCASCADE, so the demo's outputs include the
+// surface the clearance check used (and the GUI or any CAD system can open it).
+Status writeDemoCad(const JobSpec& spec, const JobResult& result) {
+    if (!spec.demo || !result.cadCheck) {
+        return {};
+    }
+    return cad::writeCadFile(result.cadCheck->blade, spec.outputDir / "demo_blade.step",
+                             cad::CadFormat::Step);
 }
 
 Status createOutputFolder(const JobSpec& spec) {
@@ -140,6 +196,9 @@ Status writeReportFolder(const JobSpec& spec, const JobResult& result,
         if (auto status =
                 writeFileAtomically(spec.outputDir / kDemoProgramName, result.programText());
             !status) {
+            return status;
+        }
+        if (auto status = writeDemoCad(spec, result); !status) {
             return status;
         }
     }

@@ -71,6 +71,7 @@ struct RawOptions {
     bool batch = false, demo = false, json = false, quiet = false, version = false;
     bool analyseOnly = false;
     bool compare = false;
+    bool sweep = false;
     bool reproduce = false;
     int blades = 36;
 };
@@ -94,6 +95,8 @@ void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
                     "Analyse the program without re-scheduling it");
     group->add_flag("--compare", raw.compare,
                     "Also compare with the other methods: compare.json, compare.csv, report.html");
+    group->add_flag("--sweep", raw.sweep,
+                    "With --compare: machining times with the rotary-axis limits x0.5 ... x2");
     for (const job::ParameterInfo& info : job::scheduleParameterSchema()) {
         std::string help = info.help;
         if (!info.unit.empty()) {
@@ -199,7 +202,8 @@ Status applySchedule(const RawOptions& raw, BatchOptions& options) {
         options.job.outputProgram = raw.outputProgram;
     }
     options.job.reschedule = !raw.analyseOnly;
-    options.job.compare = raw.compare;
+    options.job.compare = raw.compare || raw.sweep;
+    options.job.sweepLimits = raw.sweep;
     if (raw.analyseOnly && !options.job.outputProgram.empty()) {
         return makeError(ErrorCode::InvalidArgument,
                          "--analyse-only and --output exclude each other");

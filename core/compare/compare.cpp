@@ -58,6 +58,10 @@ const MethodResult* Comparison::find(std::string_view method) const {
     return nullptr;
 }
 
+std::vector<double> defaultSweepFactors() {
+    return {0.5, 0.75, 1.0, 1.5, 2.0};
+}
+
 double reduction(double before, double after) {
     return before > 0.0 ? (before - after) / before : 0.0;
 }
@@ -86,6 +90,9 @@ Result<Comparison> compareMethods(EvaluationContext context, const CompareOption
                                         std::move(axes), seconds);
         if (!evaluated) {
             return std::unexpected(evaluated.error());
+        }
+        if (!options.sweepFactors.empty()) {
+            sweepRotaryLimits(context, options.sweepFactors, *evaluated);
         }
         comparison.methods.push_back(std::move(*evaluated));
         return {};

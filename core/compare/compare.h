@@ -13,7 +13,12 @@ namespace bladeaxis::compare {
 struct CompareOptions {
     scheduling::ScheduleParameters faithful = scheduling::faithfulPreset();
     scheduling::ScheduleParameters best = scheduling::bestPreset();
+    // Rotary-limit factors for the machining-time sweep; empty: no sweep.
+    std::vector<double> sweepFactors;
 };
+
+// The sweep of spec §8.3, x0.5 ... x2 on the rotary limits.
+std::vector<double> defaultSweepFactors();
 
 struct Comparison {
     scheduling::ScheduleResult reference; // stheta-best: its layers and channel frame the metrics

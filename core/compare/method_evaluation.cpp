@@ -70,4 +70,24 @@ Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::strin
     return result;
 }
 
+kinematics::MachineModel withRotaryLimitsScaled(const kinematics::MachineModel& machine,
+                                                double factor) {
+    kinematics::MachineModel scaled = machine;
+    kinematics::AxisLimits& a = scaled.limit(kinematics::AxisId::A);
+    a.velocity *= factor;
+    a.acceleration *= factor;
+    a.jerk *= factor;
+    return scaled;
+}
+
+void sweepRotaryLimits(const EvaluationContext& context, std::span<const double> factors,
+                       MethodResult& result) {
+    result.sweep.clear();
+    for (double factor : factors) {
+        const kinematics::MachineModel machine = withRotaryLimitsScaled(*context.machine, factor);
+        result.sweep.push_back(
+            {factor, analysis::constantFeedTime(result.profile, machine, false).time, {}});
+    }
+}
+
 } // namespace bladeaxis::compare

@@ -26,6 +26,14 @@ struct EvaluationContext {
     const scheduling::ScheduleResult* reference = nullptr; // the layers and channel of the engine
 };
 
+// Machining time with the rotary axis's velocity, acceleration and jerk limits scaled by
+// `factor` (spec §8.3: the ranking of methods depends on which axis binds).
+struct LimitSweepPoint {
+    double factor = 1.0;
+    double t1 = 0.0;          // s
+    std::optional<double> t2; // s, when the time-optimal model is computed
+};
+
 struct MethodResult {
     std::string method;  // original | quaternion | stheta-faithful | stheta-best | optimal-qp | ...
     std::string setting; // the variant or parameters used, for the report
@@ -35,8 +43,17 @@ struct MethodResult {
     analysis::ConstantFeedTime t1;
     std::optional<double> t2; // s, time-optimal under the machine limits, when computed
     ChannelMetrics channel;
-    double computeSeconds = 0.0; // wall time of the method itself (not of its evaluation)
+    std::vector<LimitSweepPoint> sweep; // empty unless requested
+    double computeSeconds = 0.0;        // wall time of the method itself (not of its evaluation)
 };
+
+// The machine with the rotary (A) limits multiplied by `factor`.
+kinematics::MachineModel withRotaryLimitsScaled(const kinematics::MachineModel& machine,
+                                                double factor);
+
+// T1 (and T2 when the result has one) for each factor.
+void sweepRotaryLimits(const EvaluationContext& context, std::span<const double> factors,
+                       MethodResult& result);
 
 // Ball centres of the pass, Q = O + R V.
 std::vector<Vec3> centresOf(const EvaluationContext& context);

@@ -209,6 +209,9 @@ Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& ca
     context.analysis.toolRadius = context.toolRadius;
     compare::CompareOptions options;
     options.best = spec.parameters;
+    if (spec.sweepLimits) {
+        options.sweepFactors = compare::defaultSweepFactors();
+    }
     auto comparison = compare::compareMethods(context, options, cancel);
     if (!comparison) {
         Error error = comparison.error();

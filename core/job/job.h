@@ -25,8 +25,9 @@ struct JobSpec {
     std::filesystem::path machineFile; // empty: the built-in default blade machine
     std::optional<double> toolRadius;  // mm; overrides the radius stated in a CL file
     analysis::AxisProfileOptions analysis;
-    bool reschedule = true; // false: analyse the input only (`--analyse-only`)
-    bool compare = false;   // also run and evaluate every comparison method (`--compare`)
+    bool reschedule = true;   // false: analyse the input only (`--analyse-only`)
+    bool compare = false;     // also run and evaluate every comparison method (`--compare`)
+    bool sweepLimits = false; // with compare: machining times with the rotary limits x0.5 ... x2
     scheduling::ScheduleParameters parameters = scheduling::bestPreset();
     std::string presetName = "best";     // recorded in the report; "custom" once edited
     std::filesystem::path outputProgram; // the re-scheduled program; empty: not written

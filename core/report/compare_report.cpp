@@ -72,6 +72,16 @@ nlohmann::json methodJson(const MethodResult& method, const compare::Comparison&
         {"peak_theta_dd_deg_mm2", units::radToDeg(method.channel.peakSecondDerivative)},
         {"theta_dd_energy", method.channel.secondDerivativeEnergy},
         {"theta_reversals", method.channel.thetaReversals}};
+    if (!method.sweep.empty()) {
+        json["rotary_limit_sweep"] = nlohmann::json::array();
+        for (const compare::LimitSweepPoint& point : method.sweep) {
+            nlohmann::json entry{{"factor", point.factor}, {"t1_s", point.t1}};
+            if (point.t2) {
+                entry["t2_s"] = *point.t2;
+            }
+            json["rotary_limit_sweep"].push_back(entry);
+        }
+    }
     json["timing"] = {{"compute_s", method.computeSeconds}};
     return json;
 }
@@ -190,6 +200,32 @@ Plot channelPlot(const compare::Comparison& comparison, std::size_t k) {
     return plot;
 }
 
+std::vector<std::string> sweepHeader(const MethodResult& original) {
+    std::vector<std::string> header{"method"};
+    for (const compare::LimitSweepPoint& point : original.sweep) {
+        header.push_back("T1 at x" + formatTrimmed(point.factor, 2) + " (s)");
+        if (point.t2) {
+            header.push_back("T2 at x" + formatTrimmed(point.factor, 2) + " (s)");
+        }
+    }
+    return header;
+}
+
+std::vector<std::vector<std::string>> sweepRows(const compare::Comparison& comparison) {
+    std::vector<std::vector<std::string>> rows;
+    for (const MethodResult& method : comparison.methods) {
+        std::vector<std::string> row{method.method};
+        for (const compare::LimitSweepPoint& point : method.sweep) {
+            row.push_back(formatFixed(point.t1, 2));
+            if (point.t2) {
+                row.push_back(formatFixed(*point.t2, 2));
+            }
+        }
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
 } // namespace
 
 nlohmann::json compareJson(const compare::Comparison& comparison) {
@@ -244,6 +280,12 @@ std::string compareHtml(const compare::Comparison& comparison, const std::string
         rows.push_back(tableRow(method, reference, original));
     }
     page.table(tableHeader(comparison), rows);
+    if (!original.sweep.empty()) {
+        page.heading("Machining time against the rotary-axis limits");
+        page.paragraph("The A-axis velocity, acceleration and jerk limits of the machine file "
+                       "scaled by the factor; the linear axes unchanged.");
+        page.table(sweepHeader(original), sweepRows(comparison));
+    }
     page.heading("A axis against time");
     for (int derivative = 0; derivative < 3; ++derivative) {
         page.figure(axisPlot(comparison, AxisId::A, derivative));

@@ -122,6 +122,28 @@ TEST(Compare, CancelledComparisonStops) {
     EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
 }
 
+TEST(Compare, LimitSweepTimesFallAsTheRotaryLimitsGrow) {
+    CompareOptions options;
+    options.sweepFactors = defaultSweepFactors();
+    auto comparison = compareMethods(demo().context(), options, CancelToken{});
+    ASSERT_TRUE(comparison.has_value()) << comparison.error().toString();
+    for (const MethodResult& method : comparison->methods) {
+        ASSERT_EQ(method.sweep.size(), options.sweepFactors.size()) << method.method;
+        for (std::size_t k = 0; k < method.sweep.size(); ++k) {
+            if (method.sweep[k].factor == 1.0) {
+                EXPECT_DOUBLE_EQ(method.sweep[k].t1, method.t1.time) << method.method;
+            }
+            if (k > 0) {
+                EXPECT_LE(method.sweep[k].t1, method.sweep[k - 1].t1 * (1.0 + 1e-12))
+                    << method.method << " factor " << method.sweep[k].factor;
+            }
+        }
+    }
+    // The original program is bound by the rotary axis: doubling its limits must help.
+    const MethodResult* original = comparison->find("original");
+    EXPECT_LT(original->sweep.back().t1, 0.9 * original->t1.time);
+}
+
 TEST(Reduction, IsThePapersOptimisationRatio) {
     EXPECT_DOUBLE_EQ(reduction(200.0, 50.0), 0.75);
     EXPECT_DOUBLE_EQ(reduction(0.0, 5.0), 0.0);

@@ -169,7 +169,8 @@ Result<TopoDS_Shape> transferModel(const fs::path& path, CadFormat format) {
 }
 
 // Exit codes of the reading child process.
-enum ChildExit : int { kShapeWritten = 0, kMalformed = 1, kNoGeometry = 2, kFailed = 3 };
+// Distinct from 1, which runtimes such as a sanitizer use when they end a process.
+enum ChildExit : int { kShapeWritten = 0, kMalformed = 65, kNoGeometry = 66, kFailed = 67 };
 
 constexpr std::chrono::seconds kReadTimeout{300};
 
@@ -228,6 +229,11 @@ Result<TopoDS_Shape> transferInChild(const fs::path& path, CadFormat format) {
                                               std::to_string(WTERMSIG(status)) + ")"));
     }
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : kFailed;
+    if (code != kShapeWritten && code != kMalformed && code != kNoGeometry && code != kFailed) {
+        fs::remove(handover, ignored);
+        return std::unexpected(childError(
+            path, format, "the reader process ended with exit code " + std::to_string(code)));
+    }
     if (code == kMalformed) {
         return std::unexpected(childError(path, format, "syntax errors"));
     }

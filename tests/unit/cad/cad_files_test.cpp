@@ -213,7 +213,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFile{"header_only.step", ErrorCode::Geometry, "no transferable"},
                       BadFile{"curves_only.step", ErrorCode::Geometry, "no face"},
                       BadFile{"curves_only.igs", ErrorCode::Geometry, "no face"},
-                      BadFile{"dangling_reference.step", ErrorCode::Parse, "crashed"},
+                      BadFile{"dangling_reference.step", ErrorCode::Parse, "malformed STEP file"},
                       BadFile{"garbage.igs", ErrorCode::Geometry,
                               "IGES file holds no transferable"}),
     [](const ::testing::TestParamInfo<BadFile>& param) {

@@ -1,0 +1,182 @@
+#include "core/analysis/time_optimal.h"
+
+#include "core/analysis/constant_feed.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace bladeaxis::analysis {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr std::size_t kAxes = kinematics::kAllAxes.size();
+
+bool limited(double limit) {
+    return std::isfinite(limit) && limit > 0.0;
+}
+
+// u >= slope * x + offset (lower) or u <= slope * x + offset (upper).
+struct Line {
+    double slope = 0.0, offset = 0.0;
+    double at(double x) const { return slope * x + offset; }
+};
+
+// The path derivatives of every axis at one grid point and the state bound from velocities.
+struct Stage {
+    std::array<double, kAxes> first{}, second{}; // q', q''
+    double maxState = kInfinity;                 // x bound from velocity, feed and q' = 0 axes
+};
+
+struct Bounds {
+    std::array<Line, kAxes + 1> lower, upper;
+    std::size_t lowers = 0, uppers = 0;
+};
+
+class Problem {
+  public:
+    Problem(const AxisProfile& profile, const kinematics::MachineModel& machine)
+        : m_s(profile.pathParameter), m_stages(profile.pathParameter.size()) {
+        const double feed = profile.feed;
+        for (std::size_t j = 0; j < kAxes; ++j) {
+            const auto& limits = machine.limit(kinematics::kAllAxes[j]);
+            m_acceleration[j] = limits.acceleration;
+            const AxisSeries& series = profile.axes[j];
+            for (std::size_t i = 0; i < m_stages.size(); ++i) {
+                Stage& stage = m_stages[i];
+                stage.first[j] = series.velocity[i] / feed;
+                stage.second[j] = series.acceleration[i] / (feed * feed);
+                const double q1 = std::abs(stage.first[j]);
+                if (limited(limits.velocity) && q1 > 0.0) {
+                    stage.maxState = std::min(stage.maxState, std::pow(limits.velocity / q1, 2));
+                }
+            }
+        }
+        for (Stage& stage : m_stages) {
+            stage.maxState = std::min(stage.maxState, feed * feed);
+            for (std::size_t j = 0; j < kAxes; ++j) {
+                if (limited(m_acceleration[j]) && !significant(stage.first[j]) &&
+                    stage.second[j] != 0.0) {
+                    // q' = 0: only the centripetal term q'' x remains.
+                    stage.maxState =
+                        std::min(stage.maxState, m_acceleration[j] / std::abs(stage.second[j]));
+                }
+            }
+        }
+    }
+
+    std::size_t size() const { return m_stages.size(); }
+    double step(std::size_t i) const { return m_s[i + 1] - m_s[i]; }
+    double maxState(std::size_t i) const { return m_stages[i].maxState; }
+
+    // The lines bounding u at stage i for a state x, with x_{i+1} in [0, next].
+    Bounds bounds(std::size_t i, double next) const {
+        Bounds b;
+        const Stage& stage = m_stages[i];
+        for (std::size_t j = 0; j < kAxes; ++j) {
+            if (!limited(m_acceleration[j]) || !significant(stage.first[j])) {
+                continue;
+            }
+            // -a <= q' u + q'' x <= a  ->  u in [(-a - q'' x) / q', (a - q'' x) / q'] (q' > 0).
+            const double q1 = stage.first[j], q2 = stage.second[j], a = m_acceleration[j];
+            const Line low{-q2 / q1, (q1 > 0.0 ? -a : a) / q1};
+            const Line high{-q2 / q1, (q1 > 0.0 ? a : -a) / q1};
+            b.lower[b.lowers++] = low;
+            b.upper[b.uppers++] = high;
+        }
+        const double twoStep = 2.0 * step(i);
+        b.lower[b.lowers++] = {-1.0 / twoStep, 0.0};            // x_{i+1} >= 0
+        b.upper[b.uppers++] = {-1.0 / twoStep, next / twoStep}; // x_{i+1} <= next
+        return b;
+    }
+
+    // The largest x in [0, maxState] for which some u satisfies every bound: every lower line
+    // must stay below every upper line, a condition linear in x for each pair.
+    double largestControllable(std::size_t i, double next) const {
+        const Bounds b = bounds(i, next);
+        double high = maxState(i);
+        for (std::size_t l = 0; l < b.lowers; ++l) {
+            for (std::size_t u = 0; u < b.uppers; ++u) {
+                const double slope = b.lower[l].slope - b.upper[u].slope;
+                const double room = b.upper[u].offset - b.lower[l].offset; // at x = 0, >= 0
+                if (slope > 0.0) {
+                    high = std::min(high, room / slope);
+                }
+            }
+        }
+        return std::max(high, 0.0);
+    }
+
+    // The largest feasible u at (i, x) with x_{i+1} <= next.
+    double largestControl(std::size_t i, double x, double next) const {
+        const Bounds b = bounds(i, next);
+        double u = kInfinity;
+        for (std::size_t k = 0; k < b.uppers; ++k) {
+            u = std::min(u, b.upper[k].at(x));
+        }
+        return u;
+    }
+
+  private:
+    static bool significant(double derivative) { return std::abs(derivative) > 1e-12; }
+
+    const std::vector<double>& m_s;
+    std::vector<Stage> m_stages;
+    std::array<double, kAxes> m_acceleration{};
+};
+
+Status validate(const AxisProfile& profile) {
+    if (profile.pathParameter.size() < 2) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "the time-optimal model needs at least 2 path samples");
+    }
+    if (!(profile.feed > 0.0) || !std::isfinite(profile.feed)) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "the time-optimal model needs a positive programmed feed");
+    }
+    for (const AxisSeries& series : profile.axes) {
+        if (series.velocity.size() != profile.pathParameter.size() ||
+            series.acceleration.size() != profile.pathParameter.size()) {
+            return makeError(ErrorCode::InvalidArgument, "axis profile sizes differ");
+        }
+    }
+    return {};
+}
+
+} // namespace
+
+Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
+                                        const kinematics::MachineModel& machine) {
+    if (auto status = validate(profile); !status) {
+        return std::unexpected(status.error());
+    }
+    const Problem problem(profile, machine);
+    const std::size_t n = problem.size();
+    std::vector<double> controllable(n, 0.0); // K_i = [0, controllable[i]]; rest at the end
+    for (std::size_t i = n - 1; i-- > 0;) {
+        controllable[i] = problem.largestControllable(i, controllable[i + 1]);
+    }
+    TimeOptimalTime result;
+    result.pathSpeed.assign(n, 0.0);
+    double x = 0.0;
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        const double u = problem.largestControl(i, x, controllable[i + 1]);
+        const double next = std::clamp(x + 2.0 * problem.step(i) * u, 0.0, controllable[i + 1]);
+        const double speeds = std::sqrt(x) + std::sqrt(next);
+        if (!(speeds > 0.0)) {
+            return makeError(ErrorCode::Geometry,
+                             "the axis limits do not let the tool move along the path near s = " +
+                                 std::to_string(profile.pathParameter[i]) + " mm");
+        }
+        result.time += 2.0 * problem.step(i) / speeds;
+        result.pathSpeed[i + 1] = std::sqrt(next);
+        x = next;
+    }
+    result.peakPathSpeed = *std::max_element(result.pathSpeed.begin(), result.pathSpeed.end());
+    result.constantFeedTime = constantFeedTime(profile, machine, false).time;
+    return result;
+}
+
+} // namespace bladeaxis::analysis

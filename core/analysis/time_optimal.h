@@ -1,0 +1,36 @@
+#pragma once
+// T2 of spec §8.3: the shortest time along the fixed path under per-axis velocity and
+// acceleration limits and the programmed feed, by reachability analysis (TOPP-RA, Pham & Pham
+// 2018) on the path grid of an axis profile. The tool starts and ends at rest.
+//
+// State x = sdot^2 per grid point, control u = sddot per interval, x_{i+1} = x_i + 2 Delta_i u_i.
+// Constraints at grid point i: x q_j'^2 <= v_j^2, x <= F^2, |q_j' u + q_j'' x| <= a_j.
+// Backward pass: the controllable sets K_i = [0, k_i] (0 is always controllable: standing
+// still). For a fixed x every constraint bounds u by a line in x, so the largest controllable
+// x is found exactly from the pairwise crossings of those lines (no LP solver, no bisection).
+// Forward pass: from x_0 = 0, the largest u that stays controllable. T2 = sum 2 Delta /
+// (sqrt x_i + sqrt x_{i+1}). Optimal up to the discretisation.
+
+#include "core/analysis/axis_profile.h"
+#include "core/base/error.h"
+#include "core/kinematics/machine_model.h"
+
+#include <vector>
+
+namespace bladeaxis::analysis {
+
+struct TimeOptimalTime {
+    double time = 0.0;             // s, T2
+    std::vector<double> pathSpeed; // sdot per profile sample, mm/s
+    double peakPathSpeed = 0.0;    // mm/s
+    double constantFeedTime = 0.0; // s, T1 at the same limits for reference
+};
+
+// The profile supplies the grid (pathParameter) and q', q'' per axis (velocity / F and
+// acceleration / F^2 at the samples). Limits <= 0 or non-finite are "unlimited". Errors:
+// InvalidArgument (fewer than 2 samples, no positive feed), Geometry (a path the limits cannot
+// move along, e.g. an axis that must jump).
+Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
+                                        const kinematics::MachineModel& machine);
+
+} // namespace bladeaxis::analysis

@@ -1,0 +1,148 @@
+// T2 (spec §8.3) against the analytic cases of §10.1 and the invariants of a time-optimal
+// parameterisation: every limit respected along the result, never slower than needed.
+
+#include "core/analysis/axis_profile.h"
+#include "core/analysis/constant_feed.h"
+#include "core/analysis/time_optimal.h"
+#include "tests/unit/analysis/test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace bladeaxis::analysis {
+namespace {
+
+using kinematics::AxisId;
+
+kinematics::MachineModel linearMachine(double velocity, double acceleration) {
+    kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    for (auto& limits : machine.limits) {
+        limits.velocity = 0.0; // unlimited
+        limits.acceleration = 0.0;
+        limits.jerk = 0.0;
+    }
+    machine.limit(AxisId::X).velocity = velocity;
+    machine.limit(AxisId::X).acceleration = acceleration;
+    return machine;
+}
+
+// X moves `length` mm along a straight line sampled `samples` times at feed F.
+AxisProfile straightLine(double length, std::size_t samples, double feed) {
+    testing::Program program;
+    for (std::size_t i = 0; i < samples; ++i) {
+        const double x = length * static_cast<double>(i) / static_cast<double>(samples - 1);
+        program.add(Vec3(x, 0.0, 0.0), 0.0, feed);
+    }
+    return *analyseAxisMotion(program.axes, program.records, {});
+}
+
+TEST(TimeOptimal, TrapezoidOnOneAxisMatchesTheClosedForm) {
+    const double length = 100.0, v = 50.0, a = 100.0;
+    const auto result = timeOptimalTime(straightLine(length, 4001, 1e4), linearMachine(v, a));
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    EXPECT_NEAR(result->time, length / v + v / a, 0.01 * (length / v + v / a));
+    EXPECT_NEAR(result->peakPathSpeed, v, 1e-6 * v);
+}
+
+TEST(TimeOptimal, TriangleWhenTheAxisCannotReachItsVelocity) {
+    const double length = 10.0, v = 50.0, a = 100.0; // v^2 / a = 25 mm > length
+    const auto result = timeOptimalTime(straightLine(length, 4001, 1e4), linearMachine(v, a));
+    ASSERT_TRUE(result.has_value());
+    EXPECT_NEAR(result->time, 2.0 * std::sqrt(length / a), 0.01 * 2.0 * std::sqrt(length / a));
+}
+
+TEST(TimeOptimal, FeedBoundsThePathSpeed) {
+    const double length = 200.0, feed = 10.0, a = 1e6;
+    const auto result = timeOptimalTime(straightLine(length, 2001, feed), linearMachine(1e3, a));
+    ASSERT_TRUE(result.has_value());
+    EXPECT_NEAR(result->time, length / feed, 1e-3 * length / feed);
+    EXPECT_LE(result->peakPathSpeed, feed * (1.0 + 1e-12));
+}
+
+// A circle in Y-Z with A turning: every axis moves, the limits bind in turn.
+AxisProfile helixLikeProfile() {
+    testing::Program program;
+    for (int i = 0; i <= 720; ++i) {
+        const double t = 0.01 * i;
+        program.add(Vec3(0.2 * t, 20.0 * std::cos(t), 20.0 * std::sin(t)),
+                    0.5 * t + 0.2 * std::sin(3.0 * t), 50.0);
+    }
+    return *analyseAxisMotion(program.axes, program.records, {});
+}
+
+kinematics::MachineModel bladeMachine() {
+    return kinematics::defaultBladeMachine();
+}
+
+TEST(TimeOptimal, EveryAxisStaysWithinItsLimits) {
+    const AxisProfile profile = helixLikeProfile();
+    const auto machine = bladeMachine();
+    const auto result = timeOptimalTime(profile, machine);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    const auto& s = profile.pathParameter;
+    for (std::size_t j = 0; j < kinematics::kAllAxes.size(); ++j) {
+        const auto& limits = machine.limit(kinematics::kAllAxes[j]);
+        const AxisSeries& series = profile.axes[j];
+        for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+            const double q1 = series.velocity[i] / profile.feed;
+            const double q2 = series.acceleration[i] / (profile.feed * profile.feed);
+            const double v = result->pathSpeed[i];
+            const double u =
+                (std::pow(result->pathSpeed[i + 1], 2) - v * v) / (2.0 * (s[i + 1] - s[i]));
+            ASSERT_LE(std::abs(q1 * v), limits.velocity * (1.0 + 1e-9)) << j << " " << i;
+            ASSERT_LE(std::abs(q1 * u + q2 * v * v), limits.acceleration * (1.0 + 1e-6) + 1e-9)
+                << j << " " << i;
+        }
+    }
+}
+
+TEST(TimeOptimal, IsNoSlowerThanConstantFeedBeyondTheStartAndStopRamps) {
+    const AxisProfile profile = helixLikeProfile();
+    const auto machine = bladeMachine();
+    const auto result = timeOptimalTime(profile, machine);
+    ASSERT_TRUE(result.has_value());
+    const ConstantFeedTime t1 = constantFeedTime(profile, machine, false);
+    EXPECT_DOUBLE_EQ(result->constantFeedTime, t1.time);
+    // Constant feed F* is feasible everywhere but at the ends, where T2 starts and stops at
+    // rest: it may lose at most a ramp to F* at each end, at the path acceleration the limits
+    // leave at F* (a_j - |q_j''| F*^2) / |q_j'|, taken at its smallest along the path.
+    const double feed = t1.achievableFeed;
+    double pathAcceleration = 1e300;
+    for (std::size_t j = 0; j < kinematics::kAllAxes.size(); ++j) {
+        const double a = machine.limit(kinematics::kAllAxes[j]).acceleration;
+        for (std::size_t i = 0; i < profile.pathParameter.size(); ++i) {
+            const double q1 = std::abs(profile.axes[j].velocity[i]) / profile.feed;
+            const double q2 = std::abs(profile.axes[j].acceleration[i]) / std::pow(profile.feed, 2);
+            if (q1 > 1e-9) {
+                pathAcceleration = std::min(pathAcceleration, (a - q2 * feed * feed) / q1);
+            }
+        }
+    }
+    ASSERT_GT(pathAcceleration, 0.0);
+    EXPECT_LE(result->time, t1.time + 2.0 * feed / pathAcceleration);
+    EXPECT_GT(result->time, t1.time * 0.5); // the same limits: no free lunch
+}
+
+TEST(TimeOptimal, HigherAccelerationLimitsNeverMakeItSlower) {
+    const AxisProfile profile = helixLikeProfile();
+    auto machine = bladeMachine();
+    const double before = timeOptimalTime(profile, machine)->time;
+    for (auto& limits : machine.limits) {
+        limits.acceleration *= 2.0;
+    }
+    EXPECT_LE(timeOptimalTime(profile, machine)->time, before * (1.0 + 1e-12));
+}
+
+TEST(TimeOptimal, TooShortOrFeedlessProfilesAreErrors) {
+    AxisProfile profile;
+    profile.pathParameter = {0.0};
+    profile.feed = 10.0;
+    EXPECT_FALSE(timeOptimalTime(profile, bladeMachine()).has_value());
+    AxisProfile line = straightLine(10.0, 11, 10.0);
+    line.feed = 0.0;
+    EXPECT_FALSE(timeOptimalTime(line, bladeMachine()).has_value());
+}
+
+} // namespace
+} // namespace bladeaxis::analysis

@@ -1,5 +1,6 @@
 #include "core/compare/method_evaluation.h"
 
+#include "core/analysis/time_optimal.h"
 #include "core/kinematics/kinematics.h"
 
 namespace bladeaxis::compare {
@@ -66,6 +67,9 @@ Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::strin
     result.machineAxes = std::move(solved.axes);
     result.profile = std::move(*profile);
     result.t1 = analysis::constantFeedTime(result.profile, *context.machine, false);
+    if (auto t2 = analysis::timeOptimalTime(result.profile, *context.machine)) {
+        result.t2 = t2->time;
+    }
     result.computeSeconds = computeSeconds;
     return result;
 }
@@ -85,8 +89,12 @@ void sweepRotaryLimits(const EvaluationContext& context, std::span<const double>
     result.sweep.clear();
     for (double factor : factors) {
         const kinematics::MachineModel machine = withRotaryLimitsScaled(*context.machine, factor);
-        result.sweep.push_back(
-            {factor, analysis::constantFeedTime(result.profile, machine, false).time, {}});
+        LimitSweepPoint point{
+            factor, analysis::constantFeedTime(result.profile, machine, false).time, std::nullopt};
+        if (auto t2 = analysis::timeOptimalTime(result.profile, machine)) {
+            point.t2 = t2->time;
+        }
+        result.sweep.push_back(point);
     }
 }
 

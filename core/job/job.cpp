@@ -1,6 +1,7 @@
 #include "core/job/job.h"
 
 #include "core/analysis/axis_profile.h"
+#include "core/analysis/time_optimal.h"
 #include "core/base/file_io.h"
 #include "core/blade/presets.h"
 #include "core/cad/blade_surface.h"
@@ -138,6 +139,9 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     }
     result.original = std::move(*profile);
     result.constantFeed = analysis::constantFeedTime(result.original, result.machine, false);
+    if (auto t2 = analysis::timeOptimalTime(result.original, result.machine)) {
+        result.timeOptimal = t2->time;
+    }
     return {};
 }
 
@@ -269,6 +273,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .axes = {},
                      .original = {},
                      .constantFeed = {},
+                     .timeOptimal = std::nullopt,
                      .rescheduled = std::nullopt,
                      .comparison = std::nullopt,
                      .cadCheck = std::nullopt,

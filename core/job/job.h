@@ -50,6 +50,7 @@ struct JobResult {
     std::vector<kinematics::MachineAxes> axes; // per record of the pass, A continuous
     analysis::AxisProfile original;
     analysis::ConstantFeedTime constantFeed;
+    std::optional<double> timeOptimal;             // s, T2 under the machine limits (spec §8.3)
     std::optional<RescheduleOutcome> rescheduled;  // when spec.reschedule
     std::optional<compare::Comparison> comparison; // when spec.compare
     std::optional<CadCheckResult> cadCheck;        // when CAD is given, and for the demo

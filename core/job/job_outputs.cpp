@@ -51,6 +51,13 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
     const double before = result.constantFeed.time;
     const double after = outcome.constantFeed.time;
     json["t1_reduction"] = before > 0.0 ? (before - after) / before : 0.0;
+    if (outcome.timeOptimal) {
+        json["analysis"]["time_optimal_s"] = *outcome.timeOptimal;
+        if (result.timeOptimal) {
+            json["t2_reduction"] =
+                (*result.timeOptimal - *outcome.timeOptimal) / *result.timeOptimal;
+        }
+    }
     json["checks"] = {
         {"max_centre_deviation_mm", outcome.maxCentreDeviationMm},
         {"max_reconstruction_error_mm", outcome.schedule.check.maxCentreErrorMm},
@@ -114,6 +121,9 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
         json["tool_radius_mm"] = *result.toolRadius;
     }
     json["original"] = report::analysisJson(result.original, result.constantFeed);
+    if (result.timeOptimal) {
+        json["original"]["time_optimal_s"] = *result.timeOptimal;
+    }
     if (result.rescheduled) {
         json["rescheduled"] = rescheduledJson(result, spec);
     }
@@ -281,6 +291,11 @@ std::string rescheduledSummary(const JobResult& result) {
     text += "T1           " + formatFixed(result.constantFeed.time, 1) + " -> " +
             formatFixed(outcome.constantFeed.time, 1) + " s (" +
             percent(result.constantFeed.time, outcome.constantFeed.time) + " shorter)\n";
+    if (result.timeOptimal && outcome.timeOptimal) {
+        text += "T2           " + formatFixed(*result.timeOptimal, 1) + " -> " +
+                formatFixed(*outcome.timeOptimal, 1) + " s (" +
+                percent(*result.timeOptimal, *outcome.timeOptimal) + " shorter, time-optimal)\n";
+    }
     text += "checks       ball centres kept within " +
             formatFixed(outcome.maxCentreDeviationMm * 1000.0, 2) +
             " um after re-reading; channel clearance >= " +

@@ -1,5 +1,6 @@
 #include "core/job/reschedule.h"
 
+#include "core/analysis/time_optimal.h"
 #include "core/base/number_io.h"
 #include "core/io/cl/apt.h"
 #include "core/io/nc/gcode.h"
@@ -215,6 +216,9 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         }
         outcome.profile = std::move(*profile);
         outcome.constantFeed = analysis::constantFeedTime(outcome.profile, *input.machine, false);
+        if (auto t2 = analysis::timeOptimalTime(outcome.profile, *input.machine)) {
+            outcome.timeOptimal = t2->time;
+        }
     }
     outcome.stageSeconds.analysis = clock.lap(); // what the analysis added after the check
     return outcome;

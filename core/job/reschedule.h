@@ -10,6 +10,7 @@
 #include "core/io/program.h"
 #include "core/scheduling/schedule.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,8 @@ struct RescheduleOutcome {
     std::vector<kinematics::MachineAxes> axes; // per pass record, A continuous
     analysis::AxisProfile profile;             // axis motion of the new program
     analysis::ConstantFeedTime constantFeed;
-    std::string programText; // the whole rewritten program
+    std::optional<double> timeOptimal; // s, T2 of the new motion
+    std::string programText;           // the whole rewritten program
     // Verification (spec §6.5 and the acceptance): ball centres of the re-read output
     // against the input's, and the smallest distance of the new orientation to the raw channel.
     double maxCentreDeviationMm = 0.0;

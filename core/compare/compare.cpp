@@ -1,6 +1,10 @@
 #include "core/compare/compare.h"
 
+#include "core/baselines/quaternion.h"
+
+#include <algorithm>
 #include <chrono>
+#include <limits>
 
 namespace bladeaxis::compare {
 
@@ -49,6 +53,42 @@ std::vector<Vec3> originalAxes(const EvaluationContext& context) {
 
 } // namespace
 
+std::vector<std::string> fairnessMetrics() {
+    std::vector<std::string> metrics;
+    for (const char* axis : {"X", "Y", "Z", "A"}) {
+        metrics.push_back(std::string(axis) + " peak velocity");
+        metrics.push_back(std::string(axis) + " peak acceleration");
+    }
+    metrics.insert(metrics.end(), {"T1", "T2"});
+    return metrics;
+}
+
+double metricValue(const MethodResult& method, std::string_view metric) {
+    if (metric == "T1") {
+        return method.t1.time;
+    }
+    if (metric == "T2") {
+        return method.t2.value_or(std::numeric_limits<double>::infinity());
+    }
+    kinematics::AxisId axis = kinematics::AxisId::A;
+    for (kinematics::AxisId id : kinematics::kAllAxes) {
+        if (metric.starts_with(kinematics::axisName(id))) {
+            axis = id;
+        }
+    }
+    const auto& series = method.profile.axis(axis);
+    return metric.ends_with("velocity") ? series.peakVelocity : series.peakAcceleration;
+}
+
+std::optional<double> Comparison::bestQuaternion(std::string_view metric) const {
+    for (const FairnessEntry& entry : quaternionFairness) {
+        if (entry.metric == metric) {
+            return entry.value;
+        }
+    }
+    return std::nullopt;
+}
+
 const MethodResult* Comparison::find(std::string_view method) const {
     for (const MethodResult& result : methods) {
         if (result.method == method) {
@@ -65,6 +105,64 @@ std::vector<double> defaultSweepFactors() {
 double reduction(double before, double after) {
     return before > 0.0 ? (before - after) / before : 0.0;
 }
+
+namespace {
+
+// Every setting of the fairness rule, evaluated like the other methods; the `quaternion` row is
+// the setting with the lowest peak A acceleration (the paper's headline metric), and each metric
+// is compared against its own best setting (spec §7.2).
+Status addQuaternion(const EvaluationContext& context, const scheduling::ScheduleInput& input,
+                     const CompareOptions& options, const CancelToken& cancel,
+                     Comparison& comparison) {
+    auto settings = baselines::fairnessSettings();
+    baselines::QuaternionSettings vector;
+    vector.mode = baselines::QuaternionMode::Vector;
+    settings.push_back(vector);
+    for (baselines::QuaternionSettings& setting : settings) {
+        setting.margin = options.best.marginRad;
+        if (cancel.isCancelled()) {
+            return makeError(ErrorCode::Cancelled, "comparison cancelled");
+        }
+        const auto start = Clock::now();
+        auto orientations = baselines::quaternionOrientations(input, comparison.reference, setting);
+        const double seconds = secondsSince(start);
+        if (!orientations) {
+            comparison.quaternionFailures.push_back(baselines::describe(setting) + ": " +
+                                                    orientations.error().message);
+            continue;
+        }
+        auto evaluated = evaluateMethod(context, "quaternion", baselines::describe(setting),
+                                        std::move(orientations->axes), seconds);
+        if (!evaluated) {
+            comparison.quaternionFailures.push_back(baselines::describe(setting) + ": " +
+                                                    evaluated.error().message);
+            continue;
+        }
+        if (!options.sweepFactors.empty()) {
+            sweepRotaryLimits(context, options.sweepFactors, *evaluated);
+        }
+        comparison.quaternionSettings.push_back(std::move(*evaluated));
+    }
+    auto& variants = comparison.quaternionSettings;
+    if (variants.empty()) {
+        return {};
+    }
+    auto lowest = [&](std::string_view metric) {
+        return std::min_element(variants.begin(), variants.end(),
+                                [&](const MethodResult& a, const MethodResult& b) {
+                                    return metricValue(a, metric) < metricValue(b, metric);
+                                });
+    };
+    for (const std::string& metric : fairnessMetrics()) {
+        const auto best = lowest(metric);
+        comparison.quaternionFairness.push_back(
+            {metric, best->setting, metricValue(*best, metric)});
+    }
+    comparison.methods.insert(comparison.methods.begin() + 1, *lowest("A peak acceleration"));
+    return {};
+}
+
+} // namespace
 
 Result<Comparison> compareMethods(EvaluationContext context, const CompareOptions& options,
                                   const CancelToken& cancel) {
@@ -108,6 +206,9 @@ Result<Comparison> compareMethods(EvaluationContext context, const CompareOption
     if (auto s = add("stheta-best", "exact epsilon, auto lead fraction",
                      comparison.reference.newAxes, best->seconds);
         !s) {
+        return std::unexpected(s.error());
+    }
+    if (auto s = addQuaternion(context, input, options, cancel, comparison); !s) {
         return std::unexpected(s.error());
     }
     return comparison;

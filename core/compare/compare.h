@@ -6,6 +6,8 @@
 #include "core/compare/method_evaluation.h"
 #include "core/scheduling/schedule_parameters.h"
 
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace bladeaxis::compare {
@@ -20,12 +22,30 @@ struct CompareOptions {
 // The sweep of spec §8.3, x0.5 ... x2 on the rotary limits.
 std::vector<double> defaultSweepFactors();
 
+// The fairness rule of spec §7.2: per metric, the best quaternion setting and its value.
+struct FairnessEntry {
+    std::string metric; // e.g. "A peak acceleration"
+    std::string setting;
+    double value = 0.0;
+};
+
 struct Comparison {
     scheduling::ScheduleResult reference; // stheta-best: its layers and channel frame the metrics
     std::vector<MethodResult> methods;    // original first, then in the order of the spec
+    std::vector<MethodResult> quaternionSettings; // every feasible setting of the fairness rule
+    std::vector<std::string> quaternionFailures;  // settings that could not be used, and why
+    std::vector<FairnessEntry> quaternionFairness;
 
     const MethodResult* find(std::string_view method) const;
+    // The quaternion baseline's best value of a metric over its settings (fairness rule);
+    // nullopt without a quaternion result.
+    std::optional<double> bestQuaternion(std::string_view metric) const;
 };
+
+// The metrics of the fairness rule and of Table 2: "X peak velocity" ... "A peak acceleration",
+// "T1", "T2". Velocities and accelerations in internal units (mm, rad, s).
+std::vector<std::string> fairnessMetrics();
+double metricValue(const MethodResult& method, std::string_view metric);
 
 // `context.reference` is ignored: the comparison schedules its own reference.
 Result<Comparison> compareMethods(EvaluationContext context, const CompareOptions& options,

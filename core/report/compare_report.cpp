@@ -49,12 +49,15 @@ nlohmann::json methodJson(const MethodResult& method, const compare::Comparison&
              compare::reduction(before.peakVelocity, series.peakVelocity)},
             {"acceleration_reduction_vs_original",
              compare::reduction(before.peakAcceleration, series.peakAcceleration)}};
-        if (const MethodResult* quaternion = comparison.find("quaternion")) {
-            const auto& q = quaternion->profile.axis(axis);
-            json["axes"][kinematics::axisName(axis)]["velocity_reduction_vs_quaternion"] =
-                compare::reduction(q.peakVelocity, series.peakVelocity);
-            json["axes"][kinematics::axisName(axis)]["acceleration_reduction_vs_quaternion"] =
-                compare::reduction(q.peakAcceleration, series.peakAcceleration);
+        const std::string name = kinematics::axisName(axis);
+        // Against the quaternion baseline's best setting for this very metric (fairness rule).
+        if (auto q = comparison.bestQuaternion(name + " peak velocity")) {
+            json["axes"][name]["velocity_reduction_vs_quaternion"] =
+                compare::reduction(*q, series.peakVelocity);
+        }
+        if (auto q = comparison.bestQuaternion(name + " peak acceleration")) {
+            json["axes"][name]["acceleration_reduction_vs_quaternion"] =
+                compare::reduction(*q, series.peakAcceleration);
         }
     }
     json["a_reversals"] = method.profile.aReversals.count;
@@ -90,8 +93,15 @@ std::string percent(double fraction) {
     return formatFixed(100.0 * fraction, 1) + " %";
 }
 
-std::vector<std::string> tableRow(const MethodResult& method, const MethodResult& reference,
-                                  const MethodResult& original) {
+// The reference value of a metric for the reductions: the quaternion baseline's best setting
+// for that metric when there is one, else the reference row's own value.
+double referenceValue(const compare::Comparison& comparison, const MethodResult& reference,
+                      std::string_view metric) {
+    return comparison.bestQuaternion(metric).value_or(compare::metricValue(reference, metric));
+}
+
+std::vector<std::string> tableRow(const compare::Comparison& comparison, const MethodResult& method,
+                                  const MethodResult& reference, const MethodResult& original) {
     std::vector<std::string> row{method.method};
     for (AxisId axis : kTableAxes) {
         const auto& series = method.profile.axis(axis);
@@ -99,10 +109,10 @@ std::vector<std::string> tableRow(const MethodResult& method, const MethodResult
         row.push_back(formatFixed(display(axis, series.peakAcceleration), 1));
     }
     const auto& a = method.profile.axis(AxisId::A);
-    row.push_back(percent(
-        compare::reduction(reference.profile.axis(AxisId::A).peakVelocity, a.peakVelocity)));
-    row.push_back(percent(compare::reduction(reference.profile.axis(AxisId::A).peakAcceleration,
-                                             a.peakAcceleration)));
+    row.push_back(percent(compare::reduction(
+        referenceValue(comparison, reference, "A peak velocity"), a.peakVelocity)));
+    row.push_back(percent(compare::reduction(
+        referenceValue(comparison, reference, "A peak acceleration"), a.peakAcceleration)));
     row.push_back(std::to_string(method.profile.aReversals.count));
     row.push_back(formatFixed(method.t1.time, 2));
     row.push_back(percent(compare::reduction(original.t1.time, method.t1.time)));
@@ -236,6 +246,15 @@ nlohmann::json compareJson(const compare::Comparison& comparison) {
     for (const MethodResult& method : comparison.methods) {
         json["methods"].push_back(methodJson(method, comparison));
     }
+    json["quaternion_settings"] = nlohmann::json::array();
+    for (const MethodResult& setting : comparison.quaternionSettings) {
+        json["quaternion_settings"].push_back(methodJson(setting, comparison));
+    }
+    for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
+        json["quaternion_fairness"][entry.metric] = {{"setting", entry.setting},
+                                                     {"value", entry.value}};
+    }
+    json["quaternion_failures"] = comparison.quaternionFailures;
     return json;
 }
 
@@ -275,11 +294,23 @@ std::string compareHtml(const compare::Comparison& comparison, const std::string
                    " mm/min, T1 by constant-feed scaling to the machine limits. Reductions are "
                    "(reference - method) / reference.");
     page.heading("Peaks, reversals and machining time");
+    if (!comparison.quaternionFairness.empty()) {
+        page.paragraph("The quaternion row is its setting with the lowest peak A acceleration; "
+                       "every reduction against the quaternion baseline uses its best setting "
+                       "for that metric (fairness rule, spec 7.2), listed below the table.");
+    }
     std::vector<std::vector<std::string>> rows;
     for (const MethodResult& method : comparison.methods) {
-        rows.push_back(tableRow(method, reference, original));
+        rows.push_back(tableRow(comparison, method, reference, original));
     }
     page.table(tableHeader(comparison), rows);
+    if (!comparison.quaternionFairness.empty()) {
+        std::vector<std::vector<std::string>> fairness;
+        for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
+            fairness.push_back({entry.metric, entry.setting, formatShortest(entry.value)});
+        }
+        page.table({"metric (internal units)", "best quaternion setting", "value"}, fairness);
+    }
     if (!original.sweep.empty()) {
         page.heading("Machining time against the rotary-axis limits");
         page.paragraph("The A-axis velocity, acceleration and jerk limits of the machine file "

@@ -144,6 +144,24 @@ TEST(Compare, LimitSweepTimesFallAsTheRotaryLimitsGrow) {
     EXPECT_LT(original->sweep.back().t1, 0.9 * original->t1.time);
 }
 
+TEST(Compare, QuaternionBaselineStillReciprocatesAndTheEngineBeatsItsBestSetting) {
+    const Comparison& comparison = demoComparison();
+    const MethodResult* quaternion = comparison.find("quaternion");
+    ASSERT_NE(quaternion, nullptr) << "no quaternion setting was usable";
+    EXPECT_EQ(quaternion->channel.samplesOutside, 0u);
+    EXPECT_GT(quaternion->profile.aReversals.count, 0u); // [L] Fig. 15b
+    EXPECT_GE(comparison.quaternionSettings.size(), 8u);
+    const auto bestAcceleration = comparison.bestQuaternion("A peak acceleration");
+    ASSERT_TRUE(bestAcceleration);
+    EXPECT_DOUBLE_EQ(*bestAcceleration, metricValue(*quaternion, "A peak acceleration"));
+    const MethodResult* engine = comparison.find("stheta-best");
+    // Issue 4 target: at most 0.35 x the best quaternion setting's peak A acceleration.
+    EXPECT_LT(metricValue(*engine, "A peak acceleration"), 0.35 * *bestAcceleration);
+    for (const MethodResult& setting : comparison.quaternionSettings) {
+        EXPECT_GE(metricValue(setting, "A peak acceleration"), *bestAcceleration);
+    }
+}
+
 TEST(Reduction, IsThePapersOptimisationRatio) {
     EXPECT_DOUBLE_EQ(reduction(200.0, 50.0), 0.75);
     EXPECT_DOUBLE_EQ(reduction(0.0, 5.0), 0.0);

@@ -1,6 +1,8 @@
 #include "core/compare/compare.h"
 
 #include "core/baselines/quaternion.h"
+#include "core/optimal/layer_optimum.h"
+#include "core/scheduling/plane_path.h"
 
 #include <algorithm>
 #include <chrono>
@@ -210,6 +212,23 @@ Result<Comparison> compareMethods(EvaluationContext context, const CompareOption
     }
     if (auto s = addQuaternion(context, input, options, cancel, comparison); !s) {
         return std::unexpected(s.error());
+    }
+    if (options.optimum) {
+        auto optimum = optimal::smoothestPath(comparison.reference);
+        if (!optimum) {
+            comparison.optimumFailure = optimum.error().message;
+        } else {
+            std::vector<Vec3> axes;
+            for (double theta : optimum->thetaAbsolute) {
+                axes.push_back(scheduling::axisFromPlaneAngle(theta, comparison.reference.tiltB0,
+                                                              comparison.reference.traversalSign));
+            }
+            if (auto s = add("optimal-qp", "minimum integral of theta''^2, ADMM", std::move(axes),
+                             optimum->seconds);
+                !s) {
+                return std::unexpected(s.error());
+            }
+        }
     }
     return comparison;
 }

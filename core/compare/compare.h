@@ -17,6 +17,7 @@ struct CompareOptions {
     scheduling::ScheduleParameters best = scheduling::bestPreset();
     // Rotary-limit factors for the machining-time sweep; empty: no sweep.
     std::vector<double> sweepFactors;
+    bool optimum = true; // the smoothest schedule in the same channel (spec §9, optimal-qp)
 };
 
 // The sweep of spec §8.3, x0.5 ... x2 on the rotary limits.
@@ -35,6 +36,7 @@ struct Comparison {
     std::vector<MethodResult> quaternionSettings; // every feasible setting of the fairness rule
     std::vector<std::string> quaternionFailures;  // settings that could not be used, and why
     std::vector<FairnessEntry> quaternionFairness;
+    std::string optimumFailure; // why optimal-qp is missing, when it is
 
     const MethodResult* find(std::string_view method) const;
     // The quaternion baseline's best value of a metric over its settings (fairness rule);

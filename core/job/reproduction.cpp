@@ -56,12 +56,14 @@ std::map<std::string, double> figuresOf(const MethodResult& method,
                 method.profile.axis(AxisId::A).peakAcceleration / q;
         }
     }
-    const MethodResult* lp = comparison.find("optimal-lp");
-    if (lp != nullptr && lp->channel.peakSecondDerivative > 0.0) {
-        figures["peak_theta_dd_ratio_to_optimal_lp"] =
-            method.channel.peakSecondDerivative / lp->channel.peakSecondDerivative;
-    }
     const MethodResult* qp = comparison.find("optimal-qp");
+    if (qp != nullptr && qp != &method && qp->channel.peakSecondDerivative > 0.0) {
+        // Gaps to the smoothest schedule in the same channel (spec §9.5).
+        figures["peak_theta_dd_ratio_to_optimal_qp"] =
+            method.channel.peakSecondDerivative / qp->channel.peakSecondDerivative;
+        figures["theta_dd_energy_ratio_to_optimal_qp"] =
+            method.channel.secondDerivativeEnergy / qp->channel.secondDerivativeEnergy;
+    }
     if (qp != nullptr && qp != &method && method.computeSeconds > 0.0) {
         figures["compute_speedup_vs_optimal_qp"] = qp->computeSeconds / method.computeSeconds;
     }

@@ -167,4 +167,33 @@ Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds, const AdmmSetting
     return optimum;
 }
 
+Result<PathOptimum> smoothestPath(const scheduling::ScheduleResult& reference) {
+    const auto started = std::chrono::steady_clock::now();
+    const std::size_t n = reference.thetaAbsolute.size();
+    PathOptimum path;
+    path.thetaAbsolute.assign(n, std::numeric_limits<double>::quiet_NaN());
+    const auto& layers = reference.layers;
+    for (std::size_t k = 0; k < layers.size(); ++k) {
+        auto optimum = smoothestLayer(boundsOf(layers[k], k == 0, k + 1 == layers.size()));
+        if (!optimum) {
+            Error error = optimum.error();
+            error.message = "layer " + std::to_string(k + 1) + ": " + error.message;
+            return std::unexpected(error);
+        }
+        for (std::size_t j = 0; j < layers[k].inputIndex.size(); ++j) {
+            path.thetaAbsolute[layers[k].inputIndex[j]] =
+                layers[k].junctionAngle + optimum->theta[j];
+        }
+        ++path.layers;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (std::isnan(path.thetaAbsolute[i])) { // a merged duplicate: its sample precedes it
+            path.thetaAbsolute[i] = i > 0 ? path.thetaAbsolute[i - 1] : reference.thetaAbsolute[i];
+        }
+    }
+    path.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return path;
+}
+
 } // namespace bladeaxis::optimal

@@ -37,6 +37,15 @@ struct LayerOptimum {
 // did not converge to a feasible point).
 Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds, const AdmmSettings& settings = {});
 
+// The smoothest schedule of a whole path: every layer of the engine's result optimised, as an
+// absolute in-plane angle per input sample (merged duplicates share their sample's angle).
+struct PathOptimum {
+    std::vector<double> thetaAbsolute;
+    double seconds = 0.0; // wall time of all layers
+    std::size_t layers = 0;
+};
+Result<PathOptimum> smoothestPath(const scheduling::ScheduleResult& reference);
+
 // D2_i of spec §9.1 at the interior samples (ends 0), and the two objectives of any schedule.
 std::vector<double> secondDifferences(std::span<const double> s, std::span<const double> theta);
 double peakSecondDifference(std::span<const double> s, std::span<const double> theta);

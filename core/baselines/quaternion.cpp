@@ -97,11 +97,15 @@ class Interpolator {
         const Quaternion sa = squadControl(toolFrame(keyTheta[previous], m_f), qa, qb);
         const Quaternion sb = squadControl(qa, qb, toolFrame(keyTheta[next], m_f));
         const double length = m_f.s[b] - m_f.s[a];
+        // Unwrapped along the curve from the key, as the rotary axis follows it: SQUAD with few
+        // keys can swing far from the straight interpolation, and unwrapping near that guess
+        // would fold such a swing back into the channel.
+        double along = ta;
         for (std::size_t i = a + 1; i < b; ++i) {
             const double u = length > 0.0 ? (m_f.s[i] - m_f.s[a]) / length : 0.0;
             const Vec3 axis = axisAt(qa, qb, sa, sb, ta, tb, u);
-            const double guess = ta + u * (tb - ta);
-            theta[i] = geometry::unwrapNear(scheduling::planeAngle(axis, m_f.sign), guess);
+            along = geometry::unwrapNear(scheduling::planeAngle(axis, m_f.sign), along);
+            theta[i] = along;
         }
     }
 

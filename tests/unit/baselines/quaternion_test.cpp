@@ -112,6 +112,38 @@ TEST(QuaternionBaseline, SquadPassesThroughTheKeysAndBendsBetweenThem) {
     EXPECT_GT(largestDifference, 1e-3);
 }
 
+// Followed sample by sample as the rotary axis does (not folded near the keys' straight line),
+// every setting stays in the raw channel on a family blade where sparse SQUAD keys overshoot.
+TEST(QuaternionBaseline, RepairHoldsWhenTheCurveIsFollowedContinuously) {
+    auto family = blade::syntheticFamily(2022, 1);
+    ASSERT_TRUE(family.has_value());
+    const auto& member = family->front();
+    auto bladeModel = blade::Blade::create(member.blade);
+    auto path = blade::generateHelicalPath(*bladeModel, member.path);
+    scheduling::ScheduleInput input;
+    input.toolRadius = member.path.toolRadius;
+    input.centres = path->centre;
+    for (const auto& record : path->path.records) {
+        input.axes.push_back(record.axis);
+    }
+    const auto reference = *scheduling::schedule(input, scheduling::bestPreset());
+    for (const QuaternionSettings& setting : fairnessSettings()) {
+        auto result = quaternionOrientations(input, reference, setting);
+        ASSERT_TRUE(result.has_value()) << describe(setting);
+        for (const auto& layer : reference.layers) {
+            double theta = layer.thetaOriginal.front();
+            for (std::size_t j = 0; j < layer.inputIndex.size(); ++j) {
+                const Vec3& axis = result->axes[layer.inputIndex[j]];
+                theta = geometry::unwrapNear(scheduling::planeAngle(axis, reference.traversalSign) -
+                                                 layer.junctionAngle,
+                                             theta);
+                ASSERT_GE(theta, layer.thetaMin[j] - 1e-9) << describe(setting) << " " << j;
+                ASSERT_LE(theta, layer.thetaMax[j] + 1e-9) << describe(setting) << " " << j;
+            }
+        }
+    }
+}
+
 TEST(QuaternionBaseline, KeysHalfATurnApartAreRefused) {
     QuaternionSettings sparse;
     sparse.keysPerLayer = 1; // one key per revolution: about 360 deg between keys

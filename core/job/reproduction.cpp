@@ -33,6 +33,27 @@ void addReductions(const MethodResult& method, const MethodResult& reference,
     }
 }
 
+// Against the quaternion baseline's best setting for each metric (the fairness rule, §7.2).
+void addQuaternionReductions(const MethodResult& method, const compare::Comparison& comparison,
+                             std::map<std::string, double>& figures) {
+    for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z, AxisId::A}) {
+        const std::string name = kinematics::axisName(axis);
+        std::string lower = name;
+        lower[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(lower[0])));
+        for (const char* quantity : {"velocity", "acceleration"}) {
+            const std::string metric = name + " peak " + quantity;
+            if (auto best = comparison.bestQuaternion(metric)) {
+                figures[lower + "_peak_" + quantity + "_reduction_vs_quaternion"] =
+                    compare::reduction(*best, compare::metricValue(method, metric));
+            }
+        }
+    }
+    if (auto best = comparison.bestQuaternion("A peak acceleration"); best && *best > 0.0) {
+        figures["a_peak_acceleration_ratio_to_quaternion"] =
+            compare::metricValue(method, "A peak acceleration") / *best;
+    }
+}
+
 std::map<std::string, double> figuresOf(const MethodResult& method,
                                         const compare::Comparison& comparison) {
     std::map<std::string, double> figures;
@@ -47,14 +68,8 @@ std::map<std::string, double> figuresOf(const MethodResult& method,
     if (method.t2 && original.t2) {
         figures["t2_gain_vs_original"] = compare::reduction(*original.t2, *method.t2);
     }
-    const MethodResult* quaternion = comparison.find("quaternion");
-    if (quaternion != nullptr && quaternion != &method) {
-        addReductions(method, *quaternion, "quaternion", figures);
-        const double q = quaternion->profile.axis(AxisId::A).peakAcceleration;
-        if (q > 0.0) {
-            figures["a_peak_acceleration_ratio_to_quaternion"] =
-                method.profile.axis(AxisId::A).peakAcceleration / q;
-        }
+    if (method.method != "quaternion") {
+        addQuaternionReductions(method, comparison, figures);
     }
     const MethodResult* qp = comparison.find("optimal-qp");
     if (qp != nullptr && qp != &method && qp->channel.peakSecondDerivative > 0.0) {

@@ -8,6 +8,7 @@
 #include "core/cad/cad_files.h"
 #include "core/cad/clearance.h"
 #include "core/cad/tool_geometry.h"
+#include "core/job/section_check.h"
 
 #include <filesystem>
 #include <optional>
@@ -32,6 +33,7 @@ struct CadCheckResult {
     std::size_t triangles = 0;
     cad::ClearanceReport original;
     std::optional<cad::ClearanceReport> rescheduled;
+    std::vector<SectionComparison> sections; // CAD vs toolpath concave exits, per base point
 };
 
 struct CuttingPassView {

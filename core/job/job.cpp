@@ -186,6 +186,18 @@ Status cadCheckInto(JobResult& result, const JobSpec& spec) {
         return std::unexpected(checked.error());
     }
     result.cadCheck = std::move(*checked);
+    if (result.rescheduled) {
+        std::vector<Vec3> centres;
+        for (const auto& record : view.original) {
+            centres.push_back(record.tip + *result.toolRadius * record.axis.normalized());
+        }
+        auto sections =
+            compareConcaveExits(*shape, result.rescheduled->schedule, centres, *result.toolRadius);
+        if (!sections) {
+            return std::unexpected(sections.error());
+        }
+        result.cadCheck->sections = std::move(*sections);
+    }
     const auto& inputIssues = result.cadCheck->original.issues;
     if (!inputIssues.empty()) {
         result.warnings.push_back(

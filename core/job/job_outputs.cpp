@@ -107,6 +107,19 @@ nlohmann::json clearanceJson(const CadCheckResult& check, const std::string& fil
         json["introduced_issues"] = introducedIssues(check).size();
     }
     json["sampling_error_mm"] = check.original.samplingError;
+    json["concave_exits"] = nlohmann::json::array();
+    for (const SectionComparison& section : check.sections) {
+        nlohmann::json entry{{"base_point", section.basePoint},
+                             {"x_mm", section.x},
+                             {"toolpath_exit_deg", section.engineExitDeg},
+                             {"toolpath_fallback", section.engineFallback},
+                             {"cad_concave_runs", section.cadConcaveRuns},
+                             {"difference_deg", section.differenceDeg}};
+        if (section.cadExitDeg) {
+            entry["cad_exit_deg"] = *section.cadExitDeg;
+        }
+        json["concave_exits"].push_back(entry);
+    }
     return json;
 }
 

@@ -67,6 +67,15 @@ TEST(CadCheck, DemoJobChecksItsOwnBladeAndWritesItAsStep) {
     ASSERT_TRUE(result->cadCheck->rescheduled);
     EXPECT_EQ(result->cadCheck->original.records.size(), result->pass.count);
     EXPECT_TRUE(introducedIssues(*result->cadCheck).empty());
+    // The CAD sections turn concave where the toolpath said they do (within a degree).
+    const auto& sections = result->cadCheck->sections;
+    ASSERT_EQ(sections.size(), result->rescheduled->schedule.basePoints.size());
+    for (const SectionComparison& section : sections) {
+        EXPECT_FALSE(section.engineFallback);
+        EXPECT_GE(section.cadConcaveRuns, 1u) << "x = " << section.x;
+        ASSERT_TRUE(section.cadExitDeg.has_value());
+        EXPECT_LT(section.differenceDeg, 1.0) << "x = " << section.x;
+    }
     ASSERT_TRUE(writeJobOutputs(spec, *result));
     auto step = cad::readCadFile(spec.outputDir / "demo_blade.step");
     ASSERT_TRUE(step.has_value()) << step.error().toString();

@@ -164,6 +164,34 @@ Status addQuaternion(const EvaluationContext& context, const scheduling::Schedul
     return {};
 }
 
+// optimal-qp and optimal-lp (spec §9): the smoothest and the lowest-peak schedules in the same
+// channel. A layer the solver cannot finish leaves the method out, with the reason.
+template <class Add>
+Status addOptimum(Add& add, Comparison& comparison) {
+    const std::pair<const char*, optimal::Objective> methods[] = {
+        {"optimal-qp", optimal::Objective::SmoothestQp},
+        {"optimal-lp", optimal::Objective::MinimumPeakLp}};
+    for (const auto& [name, objective] : methods) {
+        auto optimum = optimal::optimalPath(comparison.reference, objective);
+        if (!optimum) {
+            comparison.optimumFailure += std::string(name) + ": " + optimum.error().message + "; ";
+            continue;
+        }
+        std::vector<Vec3> axes;
+        for (double theta : optimum->thetaAbsolute) {
+            axes.push_back(scheduling::axisFromPlaneAngle(theta, comparison.reference.tiltB0,
+                                                          comparison.reference.traversalSign));
+        }
+        const char* setting = objective == optimal::Objective::SmoothestQp
+                                  ? "minimum integral of theta''^2, ADMM"
+                                  : "minimum peak theta'', interior point";
+        if (auto s = add(name, setting, std::move(axes), optimum->seconds); !s) {
+            return s;
+        }
+    }
+    return {};
+}
+
 } // namespace
 
 Result<Comparison> compareMethods(EvaluationContext context, const CompareOptions& options,
@@ -214,20 +242,8 @@ Result<Comparison> compareMethods(EvaluationContext context, const CompareOption
         return std::unexpected(s.error());
     }
     if (options.optimum) {
-        auto optimum = optimal::smoothestPath(comparison.reference);
-        if (!optimum) {
-            comparison.optimumFailure = optimum.error().message;
-        } else {
-            std::vector<Vec3> axes;
-            for (double theta : optimum->thetaAbsolute) {
-                axes.push_back(scheduling::axisFromPlaneAngle(theta, comparison.reference.tiltB0,
-                                                              comparison.reference.traversalSign));
-            }
-            if (auto s = add("optimal-qp", "minimum integral of theta''^2, ADMM", std::move(axes),
-                             optimum->seconds);
-                !s) {
-                return std::unexpected(s.error());
-            }
+        if (auto s = addOptimum(add, comparison); !s) {
+            return std::unexpected(s.error());
         }
     }
     return comparison;

@@ -71,6 +71,11 @@ std::map<std::string, double> figuresOf(const MethodResult& method,
     if (method.method != "quaternion") {
         addQuaternionReductions(method, comparison, figures);
     }
+    const MethodResult* lp = comparison.find("optimal-lp");
+    if (lp != nullptr && lp != &method && lp->channel.peakSecondDerivative > 0.0) {
+        figures["peak_theta_dd_ratio_to_optimal_lp"] =
+            method.channel.peakSecondDerivative / lp->channel.peakSecondDerivative;
+    }
     const MethodResult* qp = comparison.find("optimal-qp");
     if (qp != nullptr && qp != &method && qp->channel.peakSecondDerivative > 0.0) {
         // Gaps to the smoothest schedule in the same channel (spec §9.5).

@@ -1,5 +1,7 @@
 #include "core/optimal/layer_optimum.h"
 
+#include "core/optimal/interior_point_lp.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -78,6 +80,61 @@ QpProblem smoothestQp(const LayerBounds& b) {
     qp.lower = Eigen::Map<const Vector>(rows.lower.data(), rows.count);
     qp.upper = Eigen::Map<const Vector>(rows.upper.data(), rows.count);
     return qp;
+}
+
+// Epigraph form: variables (theta, t), minimise t with -t <= (L^2 / 4) D2_i theta <= t. The
+// scale makes t the angle a bang-bang profile of that peak covers over the layer (the §9.4
+// oracle), i.e. of the order of the angles, which keeps the interior point well conditioned.
+SparseLp minimumPeakLp(const LayerBounds& b) {
+    const auto n = static_cast<Eigen::Index>(b.s.size());
+    const double length = b.s.back() - b.s.front();
+    const double scale = 0.25 * length * length;
+    std::vector<Triplet> inequality, equality;
+    std::vector<double> rhs, equalityRhs;
+    auto addRow = [&](std::vector<Triplet>& rows, std::vector<double>& values,
+                      std::initializer_list<std::pair<Eigen::Index, double>> entries,
+                      double value) {
+        const auto row = static_cast<Eigen::Index>(values.size());
+        for (const auto& [col, coefficient] : entries) {
+            rows.emplace_back(row, col, coefficient);
+        }
+        values.push_back(value);
+    };
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        addRow(inequality, rhs, {{i, 1.0}}, b.upper[k]);
+        addRow(inequality, rhs, {{i, -1.0}}, -b.lower[k]);
+        if (i + 1 < n) {
+            addRow(inequality, rhs, {{i, 1.0}, {i + 1, -1.0}}, 0.0); // monotone
+        }
+    }
+    for (std::size_t i = 1; i + 1 < b.s.size(); ++i) {
+        for (double sign : {1.0, -1.0}) {
+            const auto row = static_cast<Eigen::Index>(rhs.size());
+            addSecondDifferenceRow(b.s, i, sign * scale, row, inequality);
+            inequality.emplace_back(row, n, -1.0);
+            rhs.push_back(0.0);
+        }
+    }
+    if (!b.freeStart) {
+        addRow(equality, equalityRhs, {{0, 1.0}}, b.start);
+        addRow(equality, equalityRhs, {{0, -1.0}, {1, 1.0}}, 0.0);
+    }
+    if (!b.freeEnd) {
+        addRow(equality, equalityRhs, {{n - 1, 1.0}}, b.end);
+        addRow(equality, equalityRhs, {{n - 2, -1.0}, {n - 1, 1.0}}, 0.0);
+    }
+    SparseLp lp;
+    lp.c = Vector::Zero(n + 1);
+    lp.c[n] = 1.0;
+    lp.A.resize(static_cast<Eigen::Index>(rhs.size()), n + 1);
+    lp.A.setFromTriplets(inequality.begin(), inequality.end());
+    lp.b = Eigen::Map<const Vector>(rhs.data(), static_cast<Eigen::Index>(rhs.size()));
+    lp.E.resize(static_cast<Eigen::Index>(equalityRhs.size()), n + 1);
+    lp.E.setFromTriplets(equality.begin(), equality.end());
+    lp.d =
+        Eigen::Map<const Vector>(equalityRhs.data(), static_cast<Eigen::Index>(equalityRhs.size()));
+    return lp;
 }
 
 Status validate(const LayerBounds& b) {
@@ -167,14 +224,37 @@ Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds, const AdmmSetting
     return optimum;
 }
 
-Result<PathOptimum> smoothestPath(const scheduling::ScheduleResult& reference) {
+Result<LayerOptimum> minimumPeakLayer(const LayerBounds& bounds) {
+    if (auto status = validate(bounds); !status) {
+        return std::unexpected(status.error());
+    }
+    const auto started = std::chrono::steady_clock::now();
+    auto solution = solveLp(minimumPeakLp(bounds));
+    if (!solution) {
+        return std::unexpected(solution.error());
+    }
+    LayerOptimum optimum;
+    const auto n = static_cast<Eigen::Index>(bounds.s.size());
+    optimum.theta.assign(solution->x.data(), solution->x.data() + n);
+    optimum.peakSecondDifference = peakSecondDifference(bounds.s, optimum.theta);
+    optimum.secondDifferenceEnergy = secondDifferenceEnergy(bounds.s, optimum.theta);
+    optimum.solver.iterations = solution->iterations;
+    optimum.solver.converged = solution->converged;
+    optimum.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return optimum;
+}
+
+Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Objective objective) {
     const auto started = std::chrono::steady_clock::now();
     const std::size_t n = reference.thetaAbsolute.size();
     PathOptimum path;
     path.thetaAbsolute.assign(n, std::numeric_limits<double>::quiet_NaN());
     const auto& layers = reference.layers;
     for (std::size_t k = 0; k < layers.size(); ++k) {
-        auto optimum = smoothestLayer(boundsOf(layers[k], k == 0, k + 1 == layers.size()));
+        const LayerBounds bounds = boundsOf(layers[k], k == 0, k + 1 == layers.size());
+        auto optimum =
+            objective == Objective::SmoothestQp ? smoothestLayer(bounds) : minimumPeakLayer(bounds);
         if (!optimum) {
             Error error = optimum.error();
             error.message = "layer " + std::to_string(k + 1) + ": " + error.message;

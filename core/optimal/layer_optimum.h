@@ -1,10 +1,9 @@
 #pragma once
-// The physical-limit baseline of spec §9: per layer, the smoothest theta(S) (minimum
-// sum w_i D2_i^2, about the integral of theta''^2; `optimal-qp`) under the same hull,
-// monotonicity and junction/end-slope constraints as the S-theta engine, solved by the ADMM of
-// admm.h. The min-peak LP (`optimal-lp`) is not provided: this ADMM does not converge on it to
-// a useful accuracy (no curvature; tried with row scaling and 4e5 iterations), and a simplex or
-// interior-point LP solver of our own was out of this change's scope.
+// The physical-limit baseline of spec §9: per layer, the best theta(S) under the same hull,
+// monotonicity and junction/end-slope constraints as the S-theta engine: `optimal-qp`, the
+// smoothest (minimum sum w_i D2_i^2, about the integral of theta''^2), solved by the ADMM of
+// admm.h; and `optimal-lp`, the minimum peak |D2_i|, solved by the interior-point method of
+// interior_point_lp.h (the ADMM does not reach an LP's vertex to a useful accuracy).
 
 #include "core/base/error.h"
 #include "core/optimal/admm.h"
@@ -17,6 +16,8 @@ namespace bladeaxis::optimal {
 
 // Spec §9.1 for one layer: hull bounds, the engine's junction values, zero end slopes; the first
 // and last layers of a path keep their outer end free (§3.3).
+enum class Objective { SmoothestQp, MinimumPeakLp };
+
 struct LayerBounds {
     std::vector<double> s, lower, upper; // mm, rad (relative to the layer's junction angle)
     double start = 0.0, end = 0.0;       // junction values, rad
@@ -36,15 +37,16 @@ struct LayerOptimum {
 // Errors: InvalidArgument (fewer than 4 samples, sizes, an empty hull), Infeasible (the solver
 // did not converge to a feasible point).
 Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds, const AdmmSettings& settings = {});
+Result<LayerOptimum> minimumPeakLayer(const LayerBounds& bounds);
 
-// The smoothest schedule of a whole path: every layer of the engine's result optimised, as an
+// The optimal schedule of a whole path: every layer of the engine's result optimised, as an
 // absolute in-plane angle per input sample (merged duplicates share their sample's angle).
 struct PathOptimum {
     std::vector<double> thetaAbsolute;
     double seconds = 0.0; // wall time of all layers
     std::size_t layers = 0;
 };
-Result<PathOptimum> smoothestPath(const scheduling::ScheduleResult& reference);
+Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Objective objective);
 
 // D2_i of spec §9.1 at the interior samples (ends 0), and the two objectives of any schedule.
 std::vector<double> secondDifferences(std::span<const double> s, std::span<const double> theta);

@@ -38,6 +38,17 @@ TEST(OptimalLayer, SmoothestIsTheCubicOracle) {
     }
 }
 
+TEST(OptimalLayer, MinimumPeakIsTheBangBangOracle) {
+    const double length = 40.0, thetaEnd = 1.0;
+    auto lp = minimumPeakLayer(wideLayer(length, thetaEnd, 161));
+    ASSERT_TRUE(lp.has_value()) << lp.error().toString();
+    // Discretely the zero end slopes take one step at each end: the oracle 4 theta_e / S_e^2
+    // on the length between them, to within the grid.
+    const double inner = length - 2.0 * length / 160.0;
+    const double oracle = 4.0 * thetaEnd / (inner * inner);
+    EXPECT_NEAR(lp->peakSecondDifference, oracle, 0.02 * oracle);
+}
+
 struct DemoLayers {
     std::vector<scheduling::LayerResult> layers;
     DemoLayers() {
@@ -64,6 +75,13 @@ TEST(OptimalLayer, TheEngineNeverBeatsTheOptimumOnTheDemoBlade) {
         const LayerBounds bounds = boundsOf(layers[k], k == 0, k + 1 == layers.size());
         auto qp = smoothestLayer(bounds);
         ASSERT_TRUE(qp.has_value()) << k << ": " << qp.error().toString();
+        auto lp = minimumPeakLayer(bounds);
+        ASSERT_TRUE(lp.has_value()) << k << ": " << lp.error().toString();
+        EXPECT_GE(peakSecondDifference(layers[k].s, layers[k].theta),
+                  0.99 * lp->peakSecondDifference)
+            << "layer " << k;
+        EXPECT_LE(lp->peakSecondDifference, qp->peakSecondDifference * (1.0 + 1e-6))
+            << "the min-peak optimum has the lowest peak, layer " << k;
         const double engineEnergy = secondDifferenceEnergy(layers[k].s, layers[k].theta);
         // The engine's end slope is zero analytically, not in the first difference: 1 % slack.
         EXPECT_GE(engineEnergy, 0.99 * qp->secondDifferenceEnergy) << "layer " << k;

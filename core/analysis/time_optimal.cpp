@@ -37,44 +37,45 @@ struct Bounds {
 
 class Problem {
   public:
+    // Stages are computed when needed, not stored: a million-sample path would otherwise hold
+    // ~90 MB of derivatives that the profile already has.
     Problem(const AxisProfile& profile, const kinematics::MachineModel& machine)
-        : m_s(profile.pathParameter), m_stages(profile.pathParameter.size()) {
-        const double feed = profile.feed;
+        : m_profile(profile), m_s(profile.pathParameter) {
         for (std::size_t j = 0; j < kAxes; ++j) {
             const auto& limits = machine.limit(kinematics::kAllAxes[j]);
+            m_velocity[j] = limits.velocity;
             m_acceleration[j] = limits.acceleration;
-            const AxisSeries& series = profile.axes[j];
-            for (std::size_t i = 0; i < m_stages.size(); ++i) {
-                Stage& stage = m_stages[i];
-                stage.first[j] = series.velocity[i] / feed;
-                stage.second[j] = series.acceleration[i] / (feed * feed);
-                const double q1 = std::abs(stage.first[j]);
-                if (limited(limits.velocity) && q1 > 0.0) {
-                    stage.maxState = std::min(stage.maxState, std::pow(limits.velocity / q1, 2));
-                }
-            }
-        }
-        for (Stage& stage : m_stages) {
-            stage.maxState = std::min(stage.maxState, feed * feed);
-            for (std::size_t j = 0; j < kAxes; ++j) {
-                if (limited(m_acceleration[j]) && !significant(stage.first[j]) &&
-                    stage.second[j] != 0.0) {
-                    // q' = 0: only the centripetal term q'' x remains.
-                    stage.maxState =
-                        std::min(stage.maxState, m_acceleration[j] / std::abs(stage.second[j]));
-                }
-            }
         }
     }
 
-    std::size_t size() const { return m_stages.size(); }
+    Stage stage(std::size_t i) const {
+        Stage stage;
+        const double feed = m_profile.feed;
+        for (std::size_t j = 0; j < kAxes; ++j) {
+            const AxisSeries& series = m_profile.axes[j];
+            stage.first[j] = series.velocity[i] / feed;
+            stage.second[j] = series.acceleration[i] / (feed * feed);
+            const double q1 = std::abs(stage.first[j]);
+            if (limited(m_velocity[j]) && q1 > 0.0) {
+                stage.maxState = std::min(stage.maxState, std::pow(m_velocity[j] / q1, 2));
+            }
+            if (limited(m_acceleration[j]) && !significant(stage.first[j]) &&
+                stage.second[j] != 0.0) {
+                // q' = 0: only the centripetal term q'' x remains.
+                stage.maxState =
+                    std::min(stage.maxState, m_acceleration[j] / std::abs(stage.second[j]));
+            }
+        }
+        stage.maxState = std::min(stage.maxState, feed * feed);
+        return stage;
+    }
+
+    std::size_t size() const { return m_s.size(); }
     double step(std::size_t i) const { return m_s[i + 1] - m_s[i]; }
-    double maxState(std::size_t i) const { return m_stages[i].maxState; }
 
     // The lines bounding u at stage i for a state x, with x_{i+1} in [0, next].
-    Bounds bounds(std::size_t i, double next) const {
+    Bounds bounds(std::size_t i, const Stage& stage, double next) const {
         Bounds b;
-        const Stage& stage = m_stages[i];
         for (std::size_t j = 0; j < kAxes; ++j) {
             if (!limited(m_acceleration[j]) || !significant(stage.first[j])) {
                 continue;
@@ -95,8 +96,9 @@ class Problem {
     // The largest x in [0, maxState] for which some u satisfies every bound: every lower line
     // must stay below every upper line, a condition linear in x for each pair.
     double largestControllable(std::size_t i, double next) const {
-        const Bounds b = bounds(i, next);
-        double high = maxState(i);
+        const Stage s = stage(i);
+        const Bounds b = bounds(i, s, next);
+        double high = s.maxState;
         for (std::size_t l = 0; l < b.lowers; ++l) {
             for (std::size_t u = 0; u < b.uppers; ++u) {
                 const double slope = b.lower[l].slope - b.upper[u].slope;
@@ -111,7 +113,7 @@ class Problem {
 
     // The largest feasible u at (i, x) with x_{i+1} <= next.
     double largestControl(std::size_t i, double x, double next) const {
-        const Bounds b = bounds(i, next);
+        const Bounds b = bounds(i, stage(i), next);
         double u = kInfinity;
         for (std::size_t k = 0; k < b.uppers; ++k) {
             u = std::min(u, b.upper[k].at(x));
@@ -122,9 +124,9 @@ class Problem {
   private:
     static bool significant(double derivative) { return std::abs(derivative) > 1e-12; }
 
+    const AxisProfile& m_profile;
     const std::vector<double>& m_s;
-    std::vector<Stage> m_stages;
-    std::array<double, kAxes> m_acceleration{};
+    std::array<double, kAxes> m_velocity{}, m_acceleration{};
 };
 
 Status validate(const AxisProfile& profile) {

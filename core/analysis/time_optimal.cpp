@@ -40,13 +40,19 @@ class Problem {
     // Stages are computed when needed, not stored: a million-sample path would otherwise hold
     // ~90 MB of derivatives that the profile already has.
     Problem(const AxisProfile& profile, const kinematics::MachineModel& machine)
-        : m_profile(profile), m_s(profile.pathParameter) {
+        : m_profile(profile), m_s(profile.pathParameter),
+          m_stateScale(profile.pathParameter.size(), 1.0) {
         for (std::size_t j = 0; j < kAxes; ++j) {
             const auto& limits = machine.limit(kinematics::kAllAxes[j]);
             m_velocity[j] = limits.velocity;
             m_acceleration[j] = limits.acceleration;
+            m_jerk[j] = limits.jerk;
         }
     }
+
+    // The jerk heuristic's local reduction of the state bound.
+    void scaleState(std::size_t i, double factor) { m_stateScale[i] *= factor; }
+    double jerkLimit(std::size_t j) const { return m_jerk[j]; }
 
     Stage stage(std::size_t i) const {
         Stage stage;
@@ -66,7 +72,7 @@ class Problem {
                     std::min(stage.maxState, m_acceleration[j] / std::abs(stage.second[j]));
             }
         }
-        stage.maxState = std::min(stage.maxState, feed * feed);
+        stage.maxState = std::min(stage.maxState, feed * feed) * m_stateScale[i];
         return stage;
     }
 
@@ -126,7 +132,8 @@ class Problem {
 
     const AxisProfile& m_profile;
     const std::vector<double>& m_s;
-    std::array<double, kAxes> m_velocity{}, m_acceleration{};
+    std::vector<double> m_stateScale;
+    std::array<double, kAxes> m_velocity{}, m_acceleration{}, m_jerk{};
 };
 
 Status validate(const AxisProfile& profile) {
@@ -147,14 +154,8 @@ Status validate(const AxisProfile& profile) {
     return {};
 }
 
-} // namespace
-
-Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
-                                        const kinematics::MachineModel& machine) {
-    if (auto status = validate(profile); !status) {
-        return std::unexpected(status.error());
-    }
-    const Problem problem(profile, machine);
+// Backward and forward passes: T2 and the path speed per sample for the problem's bounds.
+Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& profile) {
     const std::size_t n = problem.size();
     std::vector<double> controllable(n, 0.0); // K_i = [0, controllable[i]]; rest at the end
     for (std::size_t i = n - 1; i-- > 0;) {
@@ -177,7 +178,73 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
         x = next;
     }
     result.peakPathSpeed = *std::max_element(result.pathSpeed.begin(), result.pathSpeed.end());
-    result.constantFeedTime = constantFeedTime(profile, machine, false).time;
+    return result;
+}
+
+// Marks the samples where an axis's numerical jerk exceeds its limit (and lowers their state
+// bound by x0.9); returns whether any did.
+bool lowerWhereJerky(Problem& problem, const TimeOptimalTime& result) {
+    const std::size_t n = problem.size();
+    std::vector<std::array<double, kAxes>> acceleration(n);
+    std::vector<double> time(n, 0.0);
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        const double v0 = result.pathSpeed[i], v1 = result.pathSpeed[i + 1];
+        const double u = (v1 * v1 - v0 * v0) / (2.0 * problem.step(i));
+        const Stage stage = problem.stage(i);
+        for (std::size_t j = 0; j < kAxes; ++j) {
+            acceleration[i][j] = stage.first[j] * u + stage.second[j] * v0 * v0;
+        }
+        time[i + 1] = time[i] + (v0 + v1 > 0.0 ? 2.0 * problem.step(i) / (v0 + v1) : 0.0);
+    }
+    bool lowered = false;
+    for (std::size_t i = 0; i + 2 < n; ++i) {
+        const double dt = time[i + 1] - time[i];
+        for (std::size_t j = 0; j < kAxes && dt > 0.0; ++j) {
+            const double jerk = (acceleration[i + 1][j] - acceleration[i][j]) / dt;
+            if (limited(problem.jerkLimit(j)) && std::abs(jerk) > problem.jerkLimit(j)) {
+                problem.scaleState(i, 0.9);
+                problem.scaleState(i + 1, 0.9);
+                lowered = true;
+                break;
+            }
+        }
+    }
+    return lowered;
+}
+
+} // namespace
+
+Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
+                                        const kinematics::MachineModel& machine,
+                                        const TimeOptimalOptions& options) {
+    if (auto status = validate(profile); !status) {
+        return std::unexpected(status.error());
+    }
+    Problem problem(profile, machine);
+    auto result = parameterise(problem, profile);
+    if (!result) {
+        return result;
+    }
+    if (options.jerkHeuristic) {
+        result->jerkWithinLimits = false;
+        while (result->jerkRounds < options.maxJerkRounds) {
+            if (!lowerWhereJerky(problem, *result)) {
+                result->jerkWithinLimits = true;
+                break;
+            }
+            const int rounds = result->jerkRounds + 1;
+            result = parameterise(problem, profile);
+            if (!result) {
+                return result;
+            }
+            result->jerkRounds = rounds;
+            result->jerkWithinLimits = false;
+        }
+        if (result->jerkRounds == options.maxJerkRounds) {
+            result->jerkWithinLimits = !lowerWhereJerky(problem, *result);
+        }
+    }
+    result->constantFeedTime = constantFeedTime(profile, machine, false).time;
     return result;
 }
 

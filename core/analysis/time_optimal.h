@@ -19,11 +19,21 @@
 
 namespace bladeaxis::analysis {
 
+struct TimeOptimalOptions {
+    // Spec §8.3 "T2+J (heuristic)": where the numerical axis jerk of the result exceeds a jerk
+    // limit, lower the state bound there by x0.9 and repeat (third-order path constraints are
+    // non-convex; this is a heuristic, not an optimum).
+    bool jerkHeuristic = false;
+    int maxJerkRounds = 20;
+};
+
 struct TimeOptimalTime {
     double time = 0.0;             // s, T2
     std::vector<double> pathSpeed; // sdot per profile sample, mm/s
     double peakPathSpeed = 0.0;    // mm/s
     double constantFeedTime = 0.0; // s, T1 at the same limits for reference
+    int jerkRounds = 0;            // rounds of the jerk heuristic run
+    bool jerkWithinLimits = true;  // false: the heuristic stopped with jerk above a limit
 };
 
 // The profile supplies the grid (pathParameter) and q', q'' per axis (velocity / F and
@@ -31,6 +41,7 @@ struct TimeOptimalTime {
 // InvalidArgument (fewer than 2 samples, no positive feed), Geometry (a path the limits cannot
 // move along, e.g. an axis that must jump).
 Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
-                                        const kinematics::MachineModel& machine);
+                                        const kinematics::MachineModel& machine,
+                                        const TimeOptimalOptions& options = {});
 
 } // namespace bladeaxis::analysis

@@ -70,6 +70,10 @@ Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::strin
     if (auto t2 = analysis::timeOptimalTime(result.profile, *context.machine)) {
         result.t2 = t2->time;
     }
+    if (auto t2j = analysis::timeOptimalTime(result.profile, *context.machine,
+                                             {.jerkHeuristic = true, .maxJerkRounds = 20})) {
+        result.t2Jerk = t2j->time;
+    }
     result.computeSeconds = computeSeconds;
     return result;
 }

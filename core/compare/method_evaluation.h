@@ -41,7 +41,8 @@ struct MethodResult {
     std::vector<kinematics::MachineAxes> machineAxes; // per pass record, A continuous
     analysis::AxisProfile profile;
     analysis::ConstantFeedTime t1;
-    std::optional<double> t2; // s, time-optimal under the machine limits, when computed
+    std::optional<double> t2;     // s, time-optimal under the machine limits, when computed
+    std::optional<double> t2Jerk; // s, T2 with the jerk heuristic (spec §8.3 "T2+J")
     ChannelMetrics channel;
     std::vector<LimitSweepPoint> sweep; // empty unless requested
     double computeSeconds = 0.0;        // wall time of the method itself (not of its evaluation)

@@ -64,6 +64,9 @@ nlohmann::json methodJson(const MethodResult& method, const compare::Comparison&
     json["a_travel_deg"] = units::radToDeg(method.profile.aReversals.travel);
     json["t1_s"] = method.t1.time;
     json["t1_gain_vs_original"] = compare::reduction(original.t1.time, method.t1.time);
+    if (method.t2Jerk) {
+        json["t2_jerk_heuristic_s"] = *method.t2Jerk;
+    }
     if (method.t2 && original.t2) {
         json["t2_s"] = *method.t2;
         json["t2_gain_vs_original"] = compare::reduction(*original.t2, *method.t2);

@@ -134,6 +134,24 @@ TEST(TimeOptimal, HigherAccelerationLimitsNeverMakeItSlower) {
     EXPECT_LE(timeOptimalTime(profile, machine)->time, before * (1.0 + 1e-12));
 }
 
+TEST(TimeOptimal, JerkHeuristicOnlyEverSlowsDownAndIdlesWithoutJerkLimits) {
+    const AxisProfile profile = helixLikeProfile();
+    auto machine = bladeMachine();
+    const auto plain = timeOptimalTime(profile, machine);
+    const auto limited = timeOptimalTime(profile, machine, {.jerkHeuristic = true});
+    ASSERT_TRUE(plain && limited);
+    EXPECT_GE(limited->time, plain->time * (1.0 - 1e-12));
+    EXPECT_GT(limited->jerkRounds, 0) << "the blade machine's jerk limits bind on this path";
+    for (auto& limits : machine.limits) {
+        limits.jerk = 0.0; // unlimited
+    }
+    const auto unlimited = timeOptimalTime(profile, machine, {.jerkHeuristic = true});
+    ASSERT_TRUE(unlimited.has_value());
+    EXPECT_EQ(unlimited->jerkRounds, 0);
+    EXPECT_TRUE(unlimited->jerkWithinLimits);
+    EXPECT_DOUBLE_EQ(unlimited->time, timeOptimalTime(profile, machine)->time);
+}
+
 TEST(TimeOptimal, TooShortOrFeedlessProfilesAreErrors) {
     AxisProfile profile;
     profile.pathParameter = {0.0};

@@ -40,10 +40,9 @@ std::mutex& dataExchangeMutex() {
         // a unit before that would be silently ignored.
         STEPControl_Controller::Init();
         IGESControl_Controller::Init();
-        const Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->Printers();
-        for (Message_SequenceOfPrinters::Iterator it(printers); it.More(); it.Next()) {
-            it.Value()->SetTraceLevel(Message_Fail);
-        }
+        // OpenCASCADE reports through its messenger, to standard output: our errors carry what
+        // the user needs, and standard output belongs to the batch report (--json).
+        Message::DefaultMessenger()->ChangePrinters().Clear();
         return true;
     }();
     (void)ready;

@@ -233,9 +233,9 @@ Status writeReportFolder(const JobSpec& spec, const JobResult& result,
         return status;
     }
     if (result.rescheduled) {
-        if (auto status =
-                writeFileAtomically(spec.outputDir / "layers.csv",
-                                    report::layersCsv(result.rescheduled->schedule), inputs);
+        if (auto status = writeFileAtomically(
+                spec.outputDir / "layers.csv",
+                report::layersCsv(result.rescheduled->schedule, passLines(result)), inputs);
             !status) {
             return status;
         }

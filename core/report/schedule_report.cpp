@@ -64,9 +64,9 @@ double reduction(double before, double after) {
 
 } // namespace
 
-std::string layersCsv(const scheduling::ScheduleResult& schedule) {
+std::string layersCsv(const scheduling::ScheduleResult& schedule, std::span<const int> lines) {
     std::string csv =
-        "record,layer,s_mm,theta_original_deg,theta_min_deg,theta_max_deg,lo_deg,hi_deg,"
+        "record,line,layer,s_mm,theta_original_deg,theta_min_deg,theta_max_deg,lo_deg,hi_deg,"
         "theta_deg,dtheta_deg_mm,ddtheta_deg_mm2\n";
     std::string row;
     for (std::size_t k = 0; k < schedule.layers.size(); ++k) {
@@ -75,7 +75,9 @@ std::string layersCsv(const scheduling::ScheduleResult& schedule) {
         const bool lastLayer = k + 1 == schedule.layers.size();
         const std::size_t count = layer.s.size() - (lastLayer ? 0 : 1);
         for (std::size_t i = 0; i < count; ++i) {
-            row = std::to_string(layer.inputIndex[i]) + ',' + std::to_string(k);
+            const std::size_t record = layer.inputIndex[i];
+            const int line = record < lines.size() ? lines[record] : 0;
+            row = std::to_string(record) + ',' + std::to_string(line) + ',' + std::to_string(k);
             appendCell(row, layer.s[i]);
             for (const auto* series :
                  {&layer.thetaOriginal, &layer.thetaMin, &layer.thetaMax, &layer.lo, &layer.hi,

@@ -13,9 +13,11 @@
 
 namespace bladeaxis::report {
 
-// Columns: record, layer, s_mm, theta_original_deg, theta_min_deg, theta_max_deg, lo_deg,
+// Columns: record, line, layer, s_mm, theta_original_deg, theta_min_deg, theta_max_deg, lo_deg,
 // hi_deg, theta_deg, dtheta_deg_mm, ddtheta_deg_mm2 (theta relative to the layer's start).
-std::string layersCsv(const scheduling::ScheduleResult& schedule);
+// `lines` (optional, per input sample) adds the source line of every CL point, so a reviewer can
+// find it in the program.
+std::string layersCsv(const scheduling::ScheduleResult& schedule, std::span<const int> lines = {});
 
 struct BeforeAfter {
     const analysis::AxisProfile* before = nullptr;

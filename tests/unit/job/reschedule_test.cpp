@@ -144,7 +144,8 @@ TEST_F(RescheduleOutputs, WritesProgramLayersAndReport) {
     ASSERT_TRUE(writeJobOutputs(spec, *result));
     EXPECT_EQ(*readTextFile(spec.outputProgram), result->rescheduled->programText);
     const std::string layers = *readTextFile(spec.outputDir / "layers.csv");
-    EXPECT_EQ(layers.rfind("record,layer,s_mm,theta_original_deg", 0), 0u) << layers.substr(0, 200);
+    EXPECT_EQ(layers.rfind("record,line,layer,s_mm,theta_original_deg", 0), 0u)
+        << layers.substr(0, 200);
     EXPECT_TRUE(fs::exists(spec.outputDir / "report.json"));
     EXPECT_EQ(*readTextFile(m_input), m_inputText);
 }

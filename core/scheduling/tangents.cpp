@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
 
 namespace bladeaxis::scheduling {
 
@@ -25,7 +28,8 @@ double medianChord(std::span<const Vec2> points) {
 struct Chord {
     Vec2 vector = Vec2::Zero(); // e+_i, or e-_i pointing forward (q_i - q_j)
     double norm = 0.0;
-    bool found = false; // false when every chord on that side is degenerate
+    bool found = false;  // false when every chord on that side is degenerate
+    std::size_t end = 0; // j, the far end of the chord
 };
 
 Vec2 chordTo(std::span<const Vec2> points, std::size_t i, std::size_t j, int step) {
@@ -41,7 +45,7 @@ Chord farthestChord(std::span<const Vec2> points, std::size_t i, int step) {
         const Vec2 chord = chordTo(points, i, j, step);
         const double norm = chord.norm();
         if (norm > kDegenerateChordMm && (!farthest.found || norm > farthest.norm)) {
-            farthest = {chord, norm, true};
+            farthest = {chord, norm, true, j};
         }
     }
     return farthest;
@@ -59,7 +63,7 @@ Chord chordFrom(std::span<const Vec2> points, std::size_t i, int step, double le
         const Vec2 chord = chordTo(points, i, j, step);
         const double squared = chord.squaredNorm();
         if (squared >= surelyLonger || (squared > surelyShorter && std::sqrt(squared) >= length)) {
-            return {chord, std::sqrt(squared), true};
+            return {chord, std::sqrt(squared), true, j};
         }
     }
     return farthestChord(points, i, step);
@@ -77,27 +81,50 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
     if (n < 2) {
         return makeError(ErrorCode::Geometry, "tangents need at least 2 points");
     }
+    constexpr std::uint32_t kNoChord = std::numeric_limits<std::uint32_t>::max();
     TangentField field;
     field.chordLengthMm = std::max(minChordMm, medianFactor * medianChord(points));
     field.forwardAngle.resize(n); // first the wrapped angles, unwrapped in place below
     field.turning.resize(n);
-    field.curvature.resize(n);
+    field.curvature.resize(n); // holds |e+_i| between the two passes
+    // Pass 1: the forward chords e+_i, their angles and far ends.
+    std::vector<std::uint32_t> forwardEnd(n, kNoChord);
     for (std::size_t i = 0; i < n; ++i) {
         const Chord forward = chordFrom(points, i, +1, field.chordLengthMm);
+        if (forward.found) {
+            field.forwardAngle[i] = angleOf(forward.vector);
+            field.curvature[i] = forward.norm;
+            forwardEnd[i] = static_cast<std::uint32_t>(forward.end);
+        }
+    }
+    // Pass 2: the backward chords e-_i. On evenly sampled paths e-_i (q_i - q_j) is mostly the
+    // very same vector as e+_j, whose angle pass 1 computed: reusing it saves an atan2 per
+    // point and gives bit-identical values.
+    for (std::size_t i = 0; i < n; ++i) {
         const Chord backward = chordFrom(points, i, -1, field.chordLengthMm);
-        if (!forward.found && !backward.found) {
+        const bool hasForward = forwardEnd[i] != kNoChord;
+        if (!hasForward && !backward.found) {
             return makeError(ErrorCode::Geometry,
                              "the projected path is degenerate at point " + std::to_string(i));
         }
+        double minusAngle = 0.0;
+        if (backward.found) {
+            minusAngle = forwardEnd[backward.end] == i ? field.forwardAngle[backward.end]
+                                                       : angleOf(backward.vector);
+        }
         // [A] At the ends one side is missing: use the other, so tau = 0 there.
-        const Chord& ePlus = forward.found ? forward : backward;
-        const Chord& eMinus = backward.found ? backward : forward;
-        field.forwardAngle[i] = angleOf(ePlus.vector);
-        field.turning[i] = detail::wrapAngle(field.forwardAngle[i] - angleOf(eMinus.vector));
+        const double plusAngle = hasForward ? field.forwardAngle[i] : minusAngle;
+        const double plusNorm = hasForward ? field.curvature[i] : backward.norm;
+        if (!backward.found) {
+            minusAngle = plusAngle;
+        }
+        const double minusNorm = backward.found ? backward.norm : plusNorm;
+        field.forwardAngle[i] = plusAngle;
+        field.turning[i] = detail::wrapAngle(plusAngle - minusAngle);
         // [A] Normalised curvature: the chords' directions are the tangents at their
         // mid-points, so tau spans (|e+| + |e-|)/2 of arc. This keeps kappa_h in 1/mm
         // independent of the point density (the literal sum of tau / w of §1.6 is not).
-        field.curvature[i] = 2.0 * field.turning[i] / (ePlus.norm + eMinus.norm);
+        field.curvature[i] = 2.0 * field.turning[i] / (plusNorm + minusNorm);
     }
     // Unwrapped along the whole path (geometry::unwrap, with the fast wrap), in place: each
     // step reads the wrapped value at i before overwriting it.

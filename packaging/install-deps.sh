@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
     build-essential cmake ninja-build pkg-config git
     libeigen3-dev nlohmann-json3-dev libcli11-dev
-    libgtest-dev libgmock-dev libbenchmark-dev libalglib-dev
+    libgtest-dev libgmock-dev libbenchmark-dev libalglib-dev libglpk-dev
     qt6-base-dev qt6-charts-dev libgl-dev
     libvtk9-dev
     libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-visualization-dev

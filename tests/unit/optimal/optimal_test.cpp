@@ -123,6 +123,14 @@ TEST(OptimalLayer, BadBoundsAreErrors) {
     LayerBounds nan = wideLayer(10.0, 1.0, 10);
     nan.s[4] = std::nan("");
     EXPECT_FALSE(smoothestLayer(nan).has_value());
+    EXPECT_FALSE(smoothestLayer(LayerBounds{}).has_value());
+    EXPECT_FALSE(minimumPeakLayer(LayerBounds{}).has_value());
+    EXPECT_FALSE(minimumPeakLayer(b).has_value());
+    EXPECT_FALSE(minimumPeakLayer(nan).has_value());
+    LayerBounds nanBound = wideLayer(10.0, 1.0, 10);
+    nanBound.upper[5] = std::nan("");
+    EXPECT_FALSE(smoothestLayer(nanBound).has_value());
+    EXPECT_FALSE(minimumPeakLayer(nanBound).has_value());
 }
 
 } // namespace

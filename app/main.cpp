@@ -1,9 +1,11 @@
-// bladeaxis: the batch front end. Any exception that escapes the core is a bug; it is caught
-// here, reported and mapped to exit code 1 (style guide §8d). Set
+// bladeaxis: the desktop application, or with `--batch` (or --help/--version) the batch front
+// end, which never creates a QApplication and so needs no display. Any exception that escapes the
+// core is a bug; it is caught here, reported and mapped to exit code 1 (style guide §8d). Set
 // BLADEAXIS_TESTING_DISABLE_CATCH_ALL=1 to let it reach the debugger instead.
 
 #include "app/batch/batch_runner.h"
 #include "app/batch/exit_codes.h"
+#include "ui/run_gui.h"
 
 #include <cstdlib>
 #include <exception>
@@ -11,8 +13,26 @@
 #include <string>
 #include <vector>
 
+namespace {
+
+bool wantsBatch(const std::vector<std::string>& arguments) {
+    for (std::size_t index = 1; index < arguments.size(); ++index) {
+        const std::string& argument = arguments[index];
+        if (argument == "--batch" || argument == "--help" || argument == "-h" ||
+            argument == "--version") {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
     const std::vector<std::string> arguments(argv, argv + argc);
+    if (!wantsBatch(arguments)) {
+        return bladeaxis::ui::runGui(argc, argv);
+    }
     if (std::getenv("BLADEAXIS_TESTING_DISABLE_CATCH_ALL") != nullptr) {
         return bladeaxis::app::runBatchCommandLine(arguments, std::cout, std::cerr);
     }

@@ -1,0 +1,71 @@
+// The main window on the demo job: the layer list shows the result's layers, selection is
+// published, and a screenshot of the window is not blank.
+
+#include "ui/main_window.h"
+
+#include <QImage>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTest>
+#include <set>
+
+namespace {
+
+constexpr int kJobTimeoutMs = 240'000;
+
+// Distinct colours in the image: a blank (unpainted) window has one or two.
+std::size_t distinctColours(const QImage& image) {
+    std::set<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 2) {
+        for (int x = 0; x < image.width(); x += 2) {
+            colours.insert(image.pixel(x, y));
+        }
+    }
+    return colours.size();
+}
+
+} // namespace
+
+class MainWindowTest final : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void initTestCase() {
+        m_window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&m_window));
+        QSignalSpy finished(&m_window, &bladeaxis::ui::MainWindow::jobFinished);
+        m_window.runDemo();
+        QVERIFY(m_window.isRunning());
+        QVERIFY(finished.wait(kJobTimeoutMs));
+        QCOMPARE(finished.front().front().toBool(), true);
+    }
+
+    void layerListShowsEveryLayerOfTheResult() {
+        QVERIFY(m_window.result().has_value());
+        QVERIFY(m_window.result()->rescheduled.has_value());
+        const auto layerCount = m_window.result()->rescheduled->schedule.layers.size();
+        QVERIFY(layerCount > 0);
+        QCOMPARE(static_cast<std::size_t>(m_window.layerTable()->rowCount()), layerCount);
+    }
+
+    void selectingALayerPublishesIt() {
+        QSignalSpy selected(&m_window, &bladeaxis::ui::MainWindow::layerSelected);
+        const int target = m_window.layerTable()->rowCount() / 2;
+        m_window.selectLayer(target);
+        QCOMPARE(m_window.selectedLayer(), target);
+        QVERIFY(!selected.isEmpty());
+        QCOMPARE(selected.back().front().toInt(), target);
+    }
+
+    void screenshotOfTheMainWindowIsNotBlank() {
+        const QImage image = m_window.grab().toImage();
+        QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window.png")));
+        QVERIFY(distinctColours(image) > 10);
+    }
+
+  private:
+    bladeaxis::ui::MainWindow m_window;
+};
+
+QTEST_MAIN(MainWindowTest)
+#include "main_window_test.moc"

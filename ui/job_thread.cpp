@@ -1,0 +1,45 @@
+#include "ui/job_thread.h"
+
+#include <string>
+#include <utility>
+
+namespace bladeaxis::ui {
+namespace {
+
+// Emits signals from the worker thread; Qt queues them to the receivers' (GUI) thread.
+class SignalProgressSink final : public ProgressSink {
+  public:
+    explicit SignalProgressSink(JobThread& thread) : m_thread(thread) {}
+    void progress(double fraction, std::string_view stage) override {
+        emit m_thread.progressed(
+            fraction, QString::fromUtf8(stage.data(), static_cast<qsizetype>(stage.size())));
+    }
+    void warning(std::string_view message) override {
+        emit m_thread.warned(
+            QString::fromUtf8(message.data(), static_cast<qsizetype>(message.size())));
+    }
+
+  private:
+    JobThread& m_thread;
+};
+
+} // namespace
+
+JobThread::JobThread(job::JobSpec spec, QObject* parent)
+    : QThread(parent), m_spec(std::move(spec)) {}
+
+void JobThread::run() {
+    SignalProgressSink sink(*this);
+    m_result.emplace(job::runJob(m_spec, sink, m_cancel));
+}
+
+Result<job::JobResult> JobThread::takeResult() {
+    if (!m_result) {
+        return makeError(ErrorCode::Cancelled, "the job did not finish");
+    }
+    Result<job::JobResult> result = std::move(*m_result);
+    m_result.reset();
+    return result;
+}
+
+} // namespace bladeaxis::ui

@@ -1,0 +1,37 @@
+#pragma once
+// Runs core/job's runJob off the GUI thread. Progress is marshalled to the GUI thread as a
+// queued signal, so widgets are only touched there.
+
+#include "core/base/progress.h"
+#include "core/job/job.h"
+
+#include <QThread>
+#include <memory>
+#include <optional>
+
+namespace bladeaxis::ui {
+
+class JobThread final : public QThread {
+    Q_OBJECT
+
+  public:
+    explicit JobThread(job::JobSpec spec, QObject* parent = nullptr);
+
+    void requestCancel() { m_cancel.requestCancel(); }
+    // Valid once finished() was emitted; moved out, so call once.
+    Result<job::JobResult> takeResult();
+
+  signals:
+    void progressed(double fraction, QString stage);
+    void warned(QString message);
+
+  protected:
+    void run() override;
+
+  private:
+    job::JobSpec m_spec;
+    CancelToken m_cancel;
+    std::optional<Result<job::JobResult>> m_result;
+};
+
+} // namespace bladeaxis::ui

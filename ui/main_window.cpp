@@ -1,0 +1,275 @@
+#include "ui/main_window.h"
+
+#include "ui/job_thread.h"
+
+#include <QAction>
+#include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QKeySequence>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QToolBar>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+
+namespace bladeaxis::ui {
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+const char* const kRecentKey = "recentFiles";
+
+QString layerStatusText(const scheduling::LayerResult& layer) {
+    QStringList names;
+    for (const scheduling::LayerStatus status : layer.flags) {
+        names << QString::fromUtf8(scheduling::toString(status));
+    }
+    return names.isEmpty() ? QStringLiteral("Ok") : names.join(QStringLiteral(", "));
+}
+
+QTableWidgetItem* numberItem(double value, int decimals) {
+    auto* item = new QTableWidgetItem(QString::number(value, 'f', decimals));
+    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    return item;
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setWindowTitle(QStringLiteral("BladeAxis"));
+    setAcceptDrops(true);
+    m_layers = new QTableWidget(0, 5, this);
+    m_layers->setHorizontalHeaderLabels({tr("Layer"), tr("Status"), tr("Samples"),
+                                         tr("Min clearance [mrad]"), tr("Peak θ'' [rad/mm²]")});
+    m_layers->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_layers->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_layers->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_layers->horizontalHeader()->setStretchLastSection(true);
+    m_layers->setToolTip(tr("Layers of the re-scheduled toolpath; selecting one selects it "
+                            "in every view"));
+    connect(m_layers, &QTableWidget::itemSelectionChanged, this,
+            [this] { emit layerSelected(selectedLayer()); });
+    setCentralWidget(m_layers);
+    buildActions();
+    buildStatusBar();
+    resize(1000, 700);
+}
+
+MainWindow::~MainWindow() {
+    if (m_thread != nullptr) {
+        m_thread->requestCancel();
+        m_thread->wait();
+    }
+}
+
+void MainWindow::buildActions() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* open = file->addAction(tr("&Open program…"), this, &MainWindow::openProgramDialog);
+    open->setShortcut(QKeySequence::Open);
+    open->setToolTip(tr("Open an NC program (G-code) or CL data (APT/CLSF) and re-schedule it"));
+    QAction* machine = file->addAction(tr("Open &machine…"), this, &MainWindow::openMachineDialog);
+    machine->setShortcut(QKeySequence(tr("Ctrl+M")));
+    machine->setToolTip(tr("Machine file (JSON); default: the built-in blade machine"));
+    QAction* demo = file->addAction(tr("Run &demo"), this, &MainWindow::runDemo);
+    demo->setShortcut(QKeySequence(tr("Ctrl+D")));
+    demo->setToolTip(tr("Re-schedule the built-in demo blade program"));
+    m_recentMenu = file->addMenu(tr("&Recent programs"));
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+    rebuildRecentMenu();
+
+    QToolBar* bar = addToolBar(tr("Job"));
+    bar->addAction(open);
+    bar->addAction(demo);
+    bar->addWidget(new QLabel(tr(" Tool radius: "), bar));
+    m_toolRadius = new QDoubleSpinBox(bar);
+    m_toolRadius->setRange(0.0, 100.0);
+    m_toolRadius->setDecimals(3);
+    m_toolRadius->setSuffix(tr(" mm"));
+    m_toolRadius->setSpecialValueText(tr("from file"));
+    m_toolRadius->setToolTip(tr("Ball radius R; 'from file' uses the radius the CL file states"));
+    bar->addWidget(m_toolRadius);
+    m_machineLabel = new QLabel(tr(" Machine: built-in"), bar);
+    bar->addWidget(m_machineLabel);
+}
+
+void MainWindow::buildStatusBar() {
+    m_progress = new QProgressBar(this);
+    m_progress->setRange(0, 1000);
+    m_progress->setMaximumWidth(220);
+    m_progress->setVisible(false);
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setToolTip(tr("Stop the running job"));
+    m_cancel->setVisible(false);
+    connect(m_cancel, &QPushButton::clicked, this, [this] {
+        if (m_thread != nullptr) {
+            m_thread->requestCancel();
+        }
+    });
+    statusBar()->addPermanentWidget(m_progress);
+    statusBar()->addPermanentWidget(m_cancel);
+    statusBar()->showMessage(tr("Open a program (Ctrl+O) or run the demo (Ctrl+D)"));
+}
+
+void MainWindow::runDemo() {
+    job::JobSpec spec;
+    spec.demo = true;
+    startJob(std::move(spec));
+}
+
+void MainWindow::runProgram(const QString& programPath) {
+    job::JobSpec spec;
+    spec.program = programPath.toStdString();
+    rememberRecent(programPath);
+    startJob(std::move(spec));
+}
+
+void MainWindow::setMachineFile(const QString& machinePath) {
+    m_machinePath = machinePath;
+    m_machineLabel->setText(tr(" Machine: %1").arg(QFileInfo(machinePath).fileName()));
+}
+
+void MainWindow::startJob(job::JobSpec spec) {
+    if (m_thread != nullptr) {
+        statusBar()->showMessage(tr("A job is already running"), 3000);
+        return;
+    }
+    if (!m_machinePath.isEmpty()) {
+        spec.machineFile = m_machinePath.toStdString();
+    }
+    if (m_toolRadius->value() > 0.0) {
+        spec.toolRadius = m_toolRadius->value();
+    }
+    m_spec = spec;
+    m_thread = new JobThread(std::move(spec), this);
+    connect(m_thread, &JobThread::progressed, this, [this](double fraction, const QString& stage) {
+        m_progress->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
+        statusBar()->showMessage(tr("Running: %1").arg(stage));
+    });
+    connect(m_thread, &QThread::finished, this, &MainWindow::onJobFinished);
+    m_progress->setValue(0);
+    m_progress->setVisible(true);
+    m_cancel->setVisible(true);
+    m_thread->start();
+}
+
+void MainWindow::onJobFinished() {
+    Result<job::JobResult> outcome = m_thread->takeResult();
+    m_thread->deleteLater();
+    m_thread = nullptr;
+    m_progress->setVisible(false);
+    m_cancel->setVisible(false);
+    if (!outcome) {
+        statusBar()->showMessage(tr("Job failed"));
+        if (outcome.error().code != ErrorCode::Cancelled) {
+            QMessageBox::warning(this, tr("BladeAxis"),
+                                 QString::fromStdString(outcome.error().toString()));
+        }
+        emit jobFinished(false);
+        return;
+    }
+    m_result = std::move(*outcome);
+    showLayers();
+    statusBar()->showMessage(tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2));
+    emit jobFinished(true);
+}
+
+void MainWindow::showLayers() {
+    m_layers->setRowCount(0);
+    if (!m_result || !m_result->rescheduled) {
+        return;
+    }
+    const auto& layers = m_result->rescheduled->schedule.layers;
+    m_layers->setRowCount(static_cast<int>(layers.size()));
+    for (std::size_t index = 0; index < layers.size(); ++index) {
+        const auto& layer = layers[index];
+        const int row = static_cast<int>(index);
+        m_layers->setItem(row, 0, numberItem(static_cast<double>(index), 0));
+        m_layers->setItem(row, 1, new QTableWidgetItem(layerStatusText(layer)));
+        m_layers->setItem(row, 2, numberItem(static_cast<double>(layer.s.size()), 0));
+        m_layers->setItem(row, 3, numberItem(layer.minClearance * 1000.0, 2));
+        m_layers->setItem(row, 4, numberItem(layer.peakSecondDerivative, 4));
+    }
+}
+
+int MainWindow::selectedLayer() const {
+    const QList<QTableWidgetItem*> items = m_layers->selectedItems();
+    return items.isEmpty() ? -1 : items.front()->row();
+}
+
+void MainWindow::selectLayer(int layer) {
+    if (layer >= 0 && layer < m_layers->rowCount()) {
+        m_layers->selectRow(layer);
+    }
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) {
+        event->acceptProposedAction();
+    }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (!urls.isEmpty() && urls.front().isLocalFile()) {
+        const QString path = urls.front().toLocalFile();
+        if (path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
+            setMachineFile(path);
+        } else {
+            runProgram(path);
+        }
+    }
+}
+
+void MainWindow::openProgramDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open program"), QString(),
+        tr("Programs (*.nc *.ngc *.gcode *.tap *.cl *.apt *.cls);;All files (*)"));
+    if (!path.isEmpty()) {
+        runProgram(path);
+    }
+}
+
+void MainWindow::openMachineDialog() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open machine"), QString(),
+                                                      tr("Machine files (*.json)"));
+    if (!path.isEmpty()) {
+        setMachineFile(path);
+    }
+}
+
+void MainWindow::rememberRecent(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value(kRecentKey).toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecentFiles) {
+        recent.removeLast();
+    }
+    settings.setValue(kRecentKey, recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value(kRecentKey).toStringList();
+    for (const QString& path : recent) {
+        m_recentMenu->addAction(path, this, [this, path] { runProgram(path); });
+    }
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+} // namespace bladeaxis::ui

@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "ui/job_thread.h"
+#include "ui/s_theta_editor.h"
 
 #include <QAction>
 #include <QDoubleSpinBox>
@@ -17,6 +18,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QSplitter>
 #include <QStatusBar>
 #include <QTableWidget>
 #include <QToolBar>
@@ -61,7 +63,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                             "in every view"));
     connect(m_layers, &QTableWidget::itemSelectionChanged, this,
             [this] { emit layerSelected(selectedLayer()); });
-    setCentralWidget(m_layers);
+    m_editor = new SThetaEditor(this);
+    connect(this, &MainWindow::layerSelected, this, &MainWindow::showSelectedLayer);
+    auto* splitter = new QSplitter(this);
+    splitter->addWidget(m_layers);
+    splitter->addWidget(m_editor);
+    splitter->setStretchFactor(1, 2);
+    setCentralWidget(splitter);
     buildActions();
     buildStatusBar();
     resize(1000, 700);
@@ -90,6 +98,14 @@ void MainWindow::buildActions() {
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
     rebuildRecentMenu();
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_editor->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    edit->addAction(undo);
+    QAction* redo = m_editor->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(redo);
 
     QToolBar* bar = addToolBar(tr("Job"));
     bar->addAction(open);
@@ -202,6 +218,17 @@ void MainWindow::showLayers() {
         m_layers->setItem(row, 2, numberItem(static_cast<double>(layer.s.size()), 0));
         m_layers->setItem(row, 3, numberItem(layer.minClearance * 1000.0, 2));
         m_layers->setItem(row, 4, numberItem(layer.peakSecondDerivative, 4));
+    }
+}
+
+void MainWindow::showSelectedLayer(int layer) {
+    if (!m_result || !m_result->rescheduled || layer < 0) {
+        m_editor->clearLayer();
+        return;
+    }
+    const auto& layers = m_result->rescheduled->schedule.layers;
+    if (static_cast<std::size_t>(layer) < layers.size()) {
+        m_editor->setLayer(layers[static_cast<std::size_t>(layer)], m_spec.parameters);
     }
 }
 

@@ -17,6 +17,7 @@ class QTableWidget;
 namespace bladeaxis::ui {
 
 class JobThread;
+class SThetaEditor;
 
 class MainWindow final : public QMainWindow {
     Q_OBJECT
@@ -33,6 +34,7 @@ class MainWindow final : public QMainWindow {
     // The last successful result; empty before the first job finishes.
     const std::optional<job::JobResult>& result() const { return m_result; }
     QTableWidget* layerTable() const { return m_layers; }
+    SThetaEditor* editor() const { return m_editor; }
     int selectedLayer() const;
     void selectLayer(int layer);
 
@@ -50,6 +52,7 @@ class MainWindow final : public QMainWindow {
     void startJob(job::JobSpec spec);
     void onJobFinished();
     void showLayers();
+    void showSelectedLayer(int layer);
     void rememberRecent(const QString& path);
     void rebuildRecentMenu();
     void openProgramDialog();
@@ -60,6 +63,7 @@ class MainWindow final : public QMainWindow {
     QString m_machinePath;
     JobThread* m_thread = nullptr;
     QTableWidget* m_layers = nullptr;
+    SThetaEditor* m_editor = nullptr;
     QDoubleSpinBox* m_toolRadius = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;

@@ -1,0 +1,237 @@
+#include "ui/s_theta_editor.h"
+
+#include "core/scheduling/layer_edit.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QUndoCommand>
+#include <algorithm>
+#include <utility>
+
+namespace bladeaxis::ui {
+namespace {
+
+constexpr double kMargin = 30.0;
+constexpr double kPickRadius = 8.0;
+
+class EditKeyPoints final : public QUndoCommand {
+  public:
+    EditKeyPoints(SThetaEditor& editor, std::vector<Vec2> before, std::vector<Vec2> after,
+                  const QString& text)
+        : QUndoCommand(text), m_editor(editor), m_before(std::move(before)),
+          m_after(std::move(after)) {}
+    void undo() override { m_editor.applyVertices(m_before); }
+    void redo() override { m_editor.applyVertices(m_after); }
+
+  private:
+    SThetaEditor& m_editor;
+    std::vector<Vec2> m_before, m_after;
+};
+
+} // namespace
+
+SThetaEditor::SThetaEditor(QWidget* parent) : QWidget(parent) {
+    setMinimumSize(320, 200);
+    setMouseTracking(false);
+    setToolTip(tr("Drag a key point to re-shape theta(S); double-click adds a key point, "
+                  "right-click deletes one. Ctrl+Z undoes."));
+}
+
+void SThetaEditor::setLayer(const scheduling::LayerResult& layer,
+                            const scheduling::ScheduleParameters& parameters) {
+    m_layer = layer;
+    m_parameters = parameters;
+    m_undo.clear();
+    m_refusal.clear();
+    m_thetaLow = layer.thetaMin.empty() ? 0.0 : std::ranges::min(layer.thetaMin);
+    m_thetaHigh = layer.thetaMax.empty() ? 1.0 : std::ranges::max(layer.thetaMax);
+    if (m_thetaHigh <= m_thetaLow) {
+        m_thetaHigh = m_thetaLow + 1.0;
+    }
+    update();
+}
+
+void SThetaEditor::clearLayer() {
+    m_layer.reset();
+    m_undo.clear();
+    update();
+}
+
+QPointF SThetaEditor::toWidget(double s, double theta) const {
+    const double s0 = m_layer->s.front();
+    const double s1 = std::max(m_layer->s.back(), s0 + 1e-9);
+    const double x = kMargin + (s - s0) / (s1 - s0) * (width() - 2.0 * kMargin);
+    const double y = height() - kMargin -
+                     (theta - m_thetaLow) / (m_thetaHigh - m_thetaLow) * (height() - 2.0 * kMargin);
+    return {x, y};
+}
+
+Vec2 SThetaEditor::fromWidget(QPointF point) const {
+    const double s0 = m_layer->s.front();
+    const double s1 = std::max(m_layer->s.back(), s0 + 1e-9);
+    const double s = s0 + (point.x() - kMargin) / (width() - 2.0 * kMargin) * (s1 - s0);
+    const double theta = m_thetaLow + (height() - kMargin - point.y()) /
+                                          (height() - 2.0 * kMargin) * (m_thetaHigh - m_thetaLow);
+    return {s, theta};
+}
+
+QPointF SThetaEditor::vertexPosition(std::size_t index) const {
+    const Vec2& vertex = m_layer->polyline.at(index);
+    return toWidget(vertex.x(), vertex.y());
+}
+
+std::optional<std::size_t> SThetaEditor::vertexNear(QPointF point) const {
+    if (!m_layer) {
+        return std::nullopt;
+    }
+    for (std::size_t i = 0; i < m_layer->polyline.size(); ++i) {
+        const QPointF delta = vertexPosition(i) - point;
+        if (QPointF::dotProduct(delta, delta) <= kPickRadius * kPickRadius) {
+            return i;
+        }
+    }
+    return std::nullopt;
+}
+
+bool SThetaEditor::applyVertices(const std::vector<Vec2>& vertices) {
+    if (!m_layer) {
+        return false;
+    }
+    Result<scheduling::LayerResult> edited =
+        scheduling::resmoothLayer(*m_layer, vertices, m_parameters);
+    if (!edited) {
+        m_refusal = QString::fromStdString(edited.error().message);
+        update();
+        return false;
+    }
+    m_refusal.clear();
+    m_layer = std::move(*edited);
+    update();
+    emit layerEdited();
+    return true;
+}
+
+void SThetaEditor::pushEdit(std::vector<Vec2> before, std::vector<Vec2> after,
+                            const QString& text) {
+    m_undo.push(new EditKeyPoints(*this, std::move(before), std::move(after), text));
+}
+
+void SThetaEditor::mousePressEvent(QMouseEvent* event) {
+    if (!m_layer) {
+        return;
+    }
+    const std::optional<std::size_t> vertex = vertexNear(event->position());
+    const bool interior = vertex && *vertex > 0 && *vertex + 1 < m_layer->polyline.size();
+    if (!interior) {
+        return;
+    }
+    if (event->button() == Qt::RightButton) {
+        std::vector<Vec2> before = m_layer->polyline;
+        std::vector<Vec2> after = before;
+        after.erase(after.begin() + static_cast<std::ptrdiff_t>(*vertex));
+        if (scheduling::resmoothLayer(*m_layer, after, m_parameters)) {
+            pushEdit(std::move(before), std::move(after), tr("Delete key point"));
+        } else {
+            applyVertices(after); // shows the refusal
+        }
+        return;
+    }
+    m_dragged = vertex;
+    m_dragStart = m_layer->polyline;
+}
+
+void SThetaEditor::mouseMoveEvent(QMouseEvent* event) {
+    if (!m_dragged || !m_layer) {
+        return;
+    }
+    std::vector<Vec2> moved = m_layer->polyline;
+    moved[*m_dragged] = fromWidget(event->position());
+    applyVertices(moved);
+}
+
+void SThetaEditor::mouseReleaseEvent(QMouseEvent* event) {
+    if (!m_dragged || !m_layer) {
+        return;
+    }
+    mouseMoveEvent(event);
+    m_dragged.reset();
+    if (m_layer->polyline != m_dragStart) {
+        std::vector<Vec2> after = m_layer->polyline;
+        // The command's first redo re-applies `after`, which is already shown.
+        pushEdit(std::exchange(m_dragStart, {}), std::move(after), tr("Move key point"));
+    }
+}
+
+void SThetaEditor::mouseDoubleClickEvent(QMouseEvent* event) {
+    if (!m_layer) {
+        return;
+    }
+    const Vec2 point = fromWidget(event->position());
+    std::vector<Vec2> before = m_layer->polyline;
+    std::vector<Vec2> after = before;
+    const auto at = std::upper_bound(after.begin(), after.end(), point,
+                                     [](const Vec2& a, const Vec2& b) { return a.x() < b.x(); });
+    after.insert(at, point);
+    if (scheduling::resmoothLayer(*m_layer, after, m_parameters)) {
+        pushEdit(std::move(before), std::move(after), tr("Add key point"));
+    } else {
+        applyVertices(after);
+    }
+}
+
+void SThetaEditor::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.fillRect(rect(), palette().base());
+    if (!m_layer || m_layer->s.empty()) {
+        painter.drawText(rect(), Qt::AlignCenter, tr("Select a layer"));
+        return;
+    }
+    const auto& l = *m_layer;
+    auto bandOf = [&](const std::vector<double>& low, const std::vector<double>& high) {
+        QPolygonF polygon;
+        for (std::size_t i = 0; i < l.s.size(); ++i) {
+            polygon << toWidget(l.s[i], high[i]);
+        }
+        for (std::size_t i = l.s.size(); i-- > 0;) {
+            polygon << toWidget(l.s[i], low[i]);
+        }
+        return polygon;
+    };
+    auto curveOf = [&](const std::vector<double>& theta) {
+        QPolygonF polygon;
+        for (std::size_t i = 0; i < l.s.size() && i < theta.size(); ++i) {
+            polygon << toWidget(l.s[i], theta[i]);
+        }
+        return polygon;
+    };
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(120, 160, 220, 70));
+    painter.drawPolygon(bandOf(l.thetaMin, l.thetaMax));
+    painter.setBrush(QColor(80, 180, 120, 90));
+    painter.drawPolygon(bandOf(l.lo, l.hi));
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(QColor(150, 150, 150), 1.0, Qt::DashLine));
+    painter.drawPolyline(curveOf(l.thetaOriginal));
+    painter.setPen(QPen(QColor(230, 140, 30), 1.0));
+    QPolygonF polyline;
+    for (const Vec2& vertex : l.polyline) {
+        polyline << toWidget(vertex.x(), vertex.y());
+    }
+    painter.drawPolyline(polyline);
+    painter.setPen(QPen(QColor(200, 40, 40), 2.0));
+    painter.drawPolyline(curveOf(l.theta));
+    painter.setBrush(QColor(230, 140, 30));
+    for (const QPointF& point : polyline) {
+        painter.drawEllipse(point, 4.0, 4.0);
+    }
+    if (!m_refusal.isEmpty()) {
+        painter.setPen(QPen(Qt::red, 3.0));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(rect().adjusted(1, 1, -2, -2));
+        painter.drawText(QPointF(kMargin, kMargin - 8.0), tr("Refused: %1").arg(m_refusal));
+    }
+}
+
+} // namespace bladeaxis::ui

@@ -1,0 +1,59 @@
+#pragma once
+// The S-theta editor of one layer: raw channel and monotone hull as bands, the original
+// theta(S), the key points, the polyline and the smoothed theta(S). Dragging a key point
+// re-smooths the layer live through core's resmoothLayer; an edit the core refuses (not
+// monotone, outside the hull) is shown in red and not applied. Every edit is one undo step.
+
+#include "core/scheduling/schedule.h"
+#include "core/scheduling/schedule_parameters.h"
+
+#include <QUndoStack>
+#include <QWidget>
+#include <optional>
+#include <vector>
+
+namespace bladeaxis::ui {
+
+class SThetaEditor final : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit SThetaEditor(QWidget* parent = nullptr);
+
+    void setLayer(const scheduling::LayerResult& layer,
+                  const scheduling::ScheduleParameters& parameters);
+    void clearLayer();
+    const std::optional<scheduling::LayerResult>& layer() const { return m_layer; }
+    QUndoStack* undoStack() { return &m_undo; }
+    // Widget position of polyline vertex `index` (for tests and tooltips).
+    QPointF vertexPosition(std::size_t index) const;
+    QString refusal() const { return m_refusal; }
+    // Re-smooths with these vertices; false (and the reason in refusal()) when refused.
+    bool applyVertices(const std::vector<Vec2>& vertices);
+
+  signals:
+    void layerEdited();
+
+  protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+
+  private:
+    QPointF toWidget(double s, double theta) const;
+    Vec2 fromWidget(QPointF point) const;
+    std::optional<std::size_t> vertexNear(QPointF point) const;
+    void pushEdit(std::vector<Vec2> before, std::vector<Vec2> after, const QString& text);
+
+    std::optional<scheduling::LayerResult> m_layer;
+    scheduling::ScheduleParameters m_parameters;
+    double m_thetaLow = 0.0, m_thetaHigh = 1.0;
+    std::optional<std::size_t> m_dragged;
+    std::vector<Vec2> m_dragStart;
+    QString m_refusal;
+    QUndoStack m_undo;
+};
+
+} // namespace bladeaxis::ui

@@ -150,6 +150,19 @@ Status validate(const AxisProfile& profile) {
             series.acceleration.size() != profile.pathParameter.size()) {
             return makeError(ErrorCode::InvalidArgument, "axis profile sizes differ");
         }
+        // A NaN would silently pass every comparison of the passes and poison T2.
+        for (std::size_t i = 0; i < series.velocity.size(); ++i) {
+            if (!std::isfinite(series.velocity[i]) || !std::isfinite(series.acceleration[i])) {
+                return makeError(ErrorCode::InvalidArgument,
+                                 "the time-optimal model needs finite axis derivatives");
+            }
+        }
+    }
+    for (const double s : profile.pathParameter) {
+        if (!std::isfinite(s)) {
+            return makeError(ErrorCode::InvalidArgument,
+                             "the time-optimal model needs a finite path parameter");
+        }
     }
     return {};
 }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace bladeaxis::analysis {
 namespace {
@@ -160,6 +161,15 @@ TEST(TimeOptimal, TooShortOrFeedlessProfilesAreErrors) {
     AxisProfile line = straightLine(10.0, 11, 10.0);
     line.feed = 0.0;
     EXPECT_FALSE(timeOptimalTime(line, bladeMachine()).has_value());
+}
+
+TEST(TimeOptimal, NonFiniteProfileValuesAreErrors) {
+    AxisProfile derivative = straightLine(10.0, 11, 10.0);
+    derivative.axes[0].velocity[5] = std::nan("");
+    EXPECT_FALSE(timeOptimalTime(derivative, bladeMachine()).has_value());
+    AxisProfile parameter = straightLine(10.0, 11, 10.0);
+    parameter.pathParameter[3] = std::numeric_limits<double>::infinity();
+    EXPECT_FALSE(timeOptimalTime(parameter, bladeMachine()).has_value());
 }
 
 } // namespace

@@ -93,6 +93,10 @@ void MainWindow::buildActions() {
     QAction* demo = file->addAction(tr("Run &demo"), this, &MainWindow::runDemo);
     demo->setShortcut(QKeySequence(tr("Ctrl+D")));
     demo->setToolTip(tr("Re-schedule the built-in demo blade program"));
+    QAction* exportAction =
+        file->addAction(tr("&Export program…"), this, &MainWindow::exportProgramDialog);
+    exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
+    exportAction->setToolTip(tr("Write the re-scheduled program (refused if a check failed)"));
     m_recentMenu = file->addMenu(tr("&Recent programs"));
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
@@ -276,6 +280,32 @@ void MainWindow::openMachineDialog() {
     if (!path.isEmpty()) {
         setMachineFile(path);
     }
+}
+
+Status MainWindow::exportProgram(const QString& path) {
+    if (!m_result || !m_result->rescheduled) {
+        return makeError(ErrorCode::InvalidArgument, "no re-scheduled program to export yet");
+    }
+    job::JobSpec spec = m_spec;
+    spec.outputProgram = path.toStdString();
+    spec.outputDir.clear();
+    return job::writeJobOutputs(spec, *m_result);
+}
+
+void MainWindow::exportProgramDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export program"));
+    if (path.isEmpty()) {
+        return;
+    }
+    const Status written = exportProgram(path);
+    if (!written) {
+        QMessageBox::warning(this, tr("Export refused"),
+                             QString::fromStdString(written.error().toString()));
+        return;
+    }
+    // Editor changes are a preview until they are applied to the whole job.
+    statusBar()->showMessage(
+        tr("Exported %1 (the job's schedule; editor changes not applied)").arg(path));
 }
 
 void MainWindow::rememberRecent(const QString& path) {

@@ -36,6 +36,9 @@ class MainWindow final : public QMainWindow {
     QTableWidget* layerTable() const { return m_layers; }
     SThetaEditor* editor() const { return m_editor; }
     int selectedLayer() const;
+    // Writes the re-scheduled program of the last result exactly as `--batch -o` would (through
+    // core's writeJobOutputs, which refuses when a check failed).
+    Status exportProgram(const QString& path);
     void selectLayer(int layer);
 
   signals:
@@ -57,6 +60,7 @@ class MainWindow final : public QMainWindow {
     void rebuildRecentMenu();
     void openProgramDialog();
     void openMachineDialog();
+    void exportProgramDialog();
 
     job::JobSpec m_spec;
     std::optional<job::JobResult> m_result;

@@ -1,6 +1,7 @@
 // The main window on the demo job: the layer list shows the result's layers, selection is
 // published, and a screenshot of the window is not blank.
 
+#include "app/batch/batch_runner.h"
 #include "ui/main_window.h"
 #include "ui/s_theta_editor.h"
 
@@ -8,7 +9,13 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTest>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <set>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -23,6 +30,11 @@ std::size_t distinctColours(const QImage& image) {
         }
     }
     return colours.size();
+}
+
+std::string fileBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 } // namespace
@@ -102,6 +114,22 @@ class MainWindowTest final : public QObject {
         QVERIFY(editor->layer()->theta == before);
         editor->undoStack()->redo();
         QVERIFY(editor->layer()->theta == after);
+    }
+
+    void exportedProgramIsByteIdenticalToTheBatchExport() {
+        const std::string gui = BLADEAXIS_GUI_OUTPUT_DIR "/gui_demo.nc";
+        const std::string batch = BLADEAXIS_GUI_OUTPUT_DIR "/batch_demo.nc";
+        std::remove(gui.c_str());
+        std::remove(batch.c_str());
+        const bladeaxis::Status written = m_window.exportProgram(QString::fromStdString(gui));
+        QVERIFY2(written.has_value(), written ? "" : written.error().toString().c_str());
+        std::ostringstream out, err;
+        const int exitCode = bladeaxis::app::runBatchCommandLine(
+            {"bladeaxis", "--batch", "--demo", "--quiet", "-o", batch}, out, err);
+        QVERIFY2(exitCode == 0, err.str().c_str());
+        const std::string guiBytes = fileBytes(gui);
+        QVERIFY(!guiBytes.empty());
+        QVERIFY(guiBytes == fileBytes(batch));
     }
 
     void screenshotOfTheMainWindowIsNotBlank() {

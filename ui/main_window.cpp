@@ -1,9 +1,11 @@
 #include "ui/main_window.h"
 
 #include "ui/job_thread.h"
+#include "ui/profile_plots.h"
 #include "ui/s_theta_editor.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -15,11 +17,14 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPalette>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QStyleFactory>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QToolBar>
 #include <cmath>
@@ -67,7 +72,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(this, &MainWindow::layerSelected, this, &MainWindow::showSelectedLayer);
     auto* splitter = new QSplitter(this);
     splitter->addWidget(m_layers);
-    splitter->addWidget(m_editor);
+    m_plots = new ProfilePlots(this);
+    auto* tabs = new QTabWidget(this);
+    tabs->addTab(m_editor, tr("S-θ editor"));
+    tabs->addTab(m_plots, tr("Axis motion"));
+    splitter->addWidget(tabs);
     splitter->setStretchFactor(1, 2);
     setCentralWidget(splitter);
     buildActions();
@@ -102,6 +111,12 @@ void MainWindow::buildActions() {
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
     rebuildRecentMenu();
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QAction* dark = view->addAction(tr("&Dark palette"));
+    dark->setCheckable(true);
+    dark->setShortcut(QKeySequence(tr("Ctrl+Shift+D")));
+    connect(dark, &QAction::toggled, this, &MainWindow::setDarkPalette);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = m_editor->undoStack()->createUndoAction(this, tr("&Undo"));
@@ -203,6 +218,10 @@ void MainWindow::onJobFinished() {
     }
     m_result = std::move(*outcome);
     showLayers();
+    m_plots->setProfiles(m_result->original,
+                         m_result->rescheduled
+                             ? std::optional<analysis::AxisProfile>(m_result->rescheduled->profile)
+                             : std::nullopt);
     statusBar()->showMessage(tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2));
     emit jobFinished(true);
 }
@@ -306,6 +325,27 @@ void MainWindow::exportProgramDialog() {
     // Editor changes are a preview until they are applied to the whole job.
     statusBar()->showMessage(
         tr("Exported %1 (the job's schedule; editor changes not applied)").arg(path));
+}
+
+void MainWindow::setDarkPalette(bool dark) {
+    QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+    if (!dark) {
+        QApplication::setPalette(QApplication::style()->standardPalette());
+        return;
+    }
+    QPalette palette;
+    palette.setColor(QPalette::Window, QColor(45, 45, 48));
+    palette.setColor(QPalette::WindowText, QColor(220, 220, 220));
+    palette.setColor(QPalette::Base, QColor(30, 30, 32));
+    palette.setColor(QPalette::AlternateBase, QColor(45, 45, 48));
+    palette.setColor(QPalette::Text, QColor(220, 220, 220));
+    palette.setColor(QPalette::Button, QColor(55, 55, 58));
+    palette.setColor(QPalette::ButtonText, QColor(220, 220, 220));
+    palette.setColor(QPalette::Highlight, QColor(42, 130, 218));
+    palette.setColor(QPalette::HighlightedText, Qt::white);
+    palette.setColor(QPalette::ToolTipBase, QColor(55, 55, 58));
+    palette.setColor(QPalette::ToolTipText, QColor(220, 220, 220));
+    QApplication::setPalette(palette);
 }
 
 void MainWindow::rememberRecent(const QString& path) {

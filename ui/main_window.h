@@ -17,6 +17,7 @@ class QTableWidget;
 namespace bladeaxis::ui {
 
 class JobThread;
+class ProfilePlots;
 class SThetaEditor;
 
 class MainWindow final : public QMainWindow {
@@ -35,6 +36,8 @@ class MainWindow final : public QMainWindow {
     const std::optional<job::JobResult>& result() const { return m_result; }
     QTableWidget* layerTable() const { return m_layers; }
     SThetaEditor* editor() const { return m_editor; }
+    ProfilePlots* plots() const { return m_plots; }
+    void setDarkPalette(bool dark);
     int selectedLayer() const;
     // Writes the re-scheduled program of the last result exactly as `--batch -o` would (through
     // core's writeJobOutputs, which refuses when a check failed).
@@ -68,6 +71,7 @@ class MainWindow final : public QMainWindow {
     JobThread* m_thread = nullptr;
     QTableWidget* m_layers = nullptr;
     SThetaEditor* m_editor = nullptr;
+    ProfilePlots* m_plots = nullptr;
     QDoubleSpinBox* m_toolRadius = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;

@@ -3,6 +3,7 @@
 
 #include "app/batch/batch_runner.h"
 #include "ui/main_window.h"
+#include "ui/profile_plots.h"
 #include "ui/s_theta_editor.h"
 
 #include <QImage>
@@ -136,6 +137,19 @@ class MainWindowTest final : public QObject {
         const QImage image = m_window.grab().toImage();
         QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window.png")));
         QVERIFY(distinctColours(image) > 10);
+    }
+
+    void beforeAfterPlotsAndDarkPaletteRender() {
+        bladeaxis::ui::ProfilePlots* plots = m_window.plots();
+        plots->resize(800, 600);
+        const QImage light = plots->grab().toImage();
+        QVERIFY(light.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/axis_motion.png")));
+        QVERIFY(distinctColours(light) > 10);
+        m_window.setDarkPalette(true);
+        const QImage dark = m_window.grab().toImage();
+        QVERIFY(dark.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window_dark.png")));
+        QVERIFY(distinctColours(dark) > 10);
+        m_window.setDarkPalette(false);
     }
 
   private:

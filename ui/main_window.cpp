@@ -3,6 +3,7 @@
 #include "ui/job_thread.h"
 #include "ui/profile_plots.h"
 #include "ui/s_theta_editor.h"
+#include "ui/toolpath_view.h"
 
 #include <QAction>
 #include <QApplication>
@@ -76,6 +77,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     auto* tabs = new QTabWidget(this);
     tabs->addTab(m_editor, tr("S-θ editor"));
     tabs->addTab(m_plots, tr("Axis motion"));
+    m_view3d = new ToolpathView(this);
+    tabs->addTab(m_view3d, tr("3D view"));
     splitter->addWidget(tabs);
     splitter->setStretchFactor(1, 2);
     setCentralWidget(splitter);
@@ -222,6 +225,9 @@ void MainWindow::onJobFinished() {
                          m_result->rescheduled
                              ? std::optional<analysis::AxisProfile>(m_result->rescheduled->profile)
                              : std::nullopt);
+    if (m_result->rescheduled) {
+        m_view3d->setSchedule(m_result->rescheduled->schedule);
+    }
     statusBar()->showMessage(tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2));
     emit jobFinished(true);
 }
@@ -245,6 +251,7 @@ void MainWindow::showLayers() {
 }
 
 void MainWindow::showSelectedLayer(int layer) {
+    m_view3d->setSelectedLayer(layer);
     if (!m_result || !m_result->rescheduled || layer < 0) {
         m_editor->clearLayer();
         return;

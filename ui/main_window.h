@@ -19,6 +19,7 @@ namespace bladeaxis::ui {
 class JobThread;
 class ProfilePlots;
 class SThetaEditor;
+class ToolpathView;
 
 class MainWindow final : public QMainWindow {
     Q_OBJECT
@@ -37,6 +38,7 @@ class MainWindow final : public QMainWindow {
     QTableWidget* layerTable() const { return m_layers; }
     SThetaEditor* editor() const { return m_editor; }
     ProfilePlots* plots() const { return m_plots; }
+    ToolpathView* view3d() const { return m_view3d; }
     void setDarkPalette(bool dark);
     int selectedLayer() const;
     // Writes the re-scheduled program of the last result exactly as `--batch -o` would (through
@@ -72,6 +74,7 @@ class MainWindow final : public QMainWindow {
     QTableWidget* m_layers = nullptr;
     SThetaEditor* m_editor = nullptr;
     ProfilePlots* m_plots = nullptr;
+    ToolpathView* m_view3d = nullptr;
     QDoubleSpinBox* m_toolRadius = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;

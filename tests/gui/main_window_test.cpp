@@ -5,6 +5,7 @@
 #include "ui/main_window.h"
 #include "ui/profile_plots.h"
 #include "ui/s_theta_editor.h"
+#include "ui/toolpath_view.h"
 
 #include <QImage>
 #include <QSignalSpy>
@@ -150,6 +151,24 @@ class MainWindowTest final : public QObject {
         QVERIFY(dark.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window_dark.png")));
         QVERIFY(distinctColours(dark) > 10);
         m_window.setDarkPalette(false);
+    }
+
+    void threeDViewShowsTheToolpath() {
+        bladeaxis::ui::ToolpathView* view = m_window.view3d();
+        view->resize(800, 600);
+        const QImage image = view->renderFrame();
+        QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/view3d.png")));
+        const QRgb background = image.pixel(0, 0);
+        std::size_t covered = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                covered += image.pixel(x, y) != background ? 1U : 0U;
+            }
+        }
+        const double share =
+            static_cast<double>(covered) / static_cast<double>(image.width() * image.height());
+        qInfo("3D view: %.1f %% of the pixels show the toolpath", 100.0 * share);
+        QVERIFY(share > 0.02);
     }
 
   private:

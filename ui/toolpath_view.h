@@ -1,0 +1,35 @@
+#pragma once
+// 3D view of the toolpath with VTK. Debian's VTK Qt module is built against Qt5, so VTK renders
+// off-screen in its own context and the image is painted by this plain Qt6 widget
+// (docs/product.md, approach 2). VTK types stay in the .cpp file.
+
+#include "core/scheduling/schedule.h"
+
+#include <QImage>
+#include <QWidget>
+#include <memory>
+
+namespace bladeaxis::ui {
+
+class ToolpathView final : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit ToolpathView(QWidget* parent = nullptr);
+    ~ToolpathView() override;
+
+    // Tips coloured by layer, the re-scheduled tool axes as short glyphs.
+    void setSchedule(const scheduling::ScheduleResult& schedule);
+    void setSelectedLayer(int layer);
+    // Renders now and returns the frame (also what paintEvent shows).
+    QImage renderFrame();
+
+  protected:
+    void paintEvent(QPaintEvent* event) override;
+
+  private:
+    struct Scene;
+    std::unique_ptr<Scene> m_scene;
+};
+
+} // namespace bladeaxis::ui

@@ -1,11 +1,16 @@
 #include "ui/toolpath_view.h"
 
+#include <QMouseEvent>
 #include <QPainter>
+#include <QWheelEvent>
 #include <algorithm>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -26,6 +31,8 @@ struct ToolpathView::Scene {
     vtkNew<vtkPolyData> glyphs;
     vtkNew<vtkPolyDataMapper> glyphMapper;
     vtkNew<vtkActor> glyphActor;
+    vtkNew<vtkGenericRenderWindowInteractor> interactor;
+    vtkNew<vtkInteractorStyleTrackballCamera> style;
     std::vector<std::pair<std::size_t, std::size_t>> layerRanges;
     int selected = -1;
     bool hasData = false;
@@ -56,6 +63,10 @@ ToolpathView::ToolpathView(QWidget* parent) : QWidget(parent), m_scene(std::make
     m_scene->glyphActor->GetProperty()->SetColor(0.85, 0.85, 0.85);
     m_scene->renderer->AddActor(m_scene->pathActor);
     m_scene->renderer->AddActor(m_scene->glyphActor);
+    m_scene->interactor->SetRenderWindow(m_scene->window);
+    m_scene->interactor->SetInteractorStyle(m_scene->style);
+    // The widget repaints on every event; VTK must not try to render into a window of its own.
+    m_scene->interactor->EnableRenderOff();
 }
 
 ToolpathView::~ToolpathView() = default;
@@ -131,6 +142,62 @@ QImage ToolpathView::renderFrame() {
     QImage image(reinterpret_cast<const uchar*>(pixels->GetPointer(0)), w, h, 4 * w,
                  QImage::Format_RGBX8888);
     return image.mirrored();
+}
+
+void ToolpathView::forward(QMouseEvent* event, unsigned long vtkEvent) {
+    const QPointF position = event->position();
+    m_scene->window->SetSize(std::max(width(), 16), std::max(height(), 16));
+    m_scene->interactor->SetSize(std::max(width(), 16), std::max(height(), 16));
+    m_scene->interactor->SetEventInformationFlipY(
+        static_cast<int>(position.x()), static_cast<int>(position.y()),
+        (event->modifiers() & Qt::ControlModifier) ? 1 : 0,
+        (event->modifiers() & Qt::ShiftModifier) ? 1 : 0);
+    m_scene->interactor->InvokeEvent(vtkEvent, nullptr);
+    update();
+}
+
+void ToolpathView::mousePressEvent(QMouseEvent* event) {
+    switch (event->button()) {
+    case Qt::LeftButton:
+        forward(event, vtkCommand::LeftButtonPressEvent);
+        break;
+    case Qt::RightButton:
+        forward(event, vtkCommand::RightButtonPressEvent);
+        break;
+    case Qt::MiddleButton:
+        forward(event, vtkCommand::MiddleButtonPressEvent);
+        break;
+    default:
+        break;
+    }
+}
+
+void ToolpathView::mouseReleaseEvent(QMouseEvent* event) {
+    switch (event->button()) {
+    case Qt::LeftButton:
+        forward(event, vtkCommand::LeftButtonReleaseEvent);
+        break;
+    case Qt::RightButton:
+        forward(event, vtkCommand::RightButtonReleaseEvent);
+        break;
+    case Qt::MiddleButton:
+        forward(event, vtkCommand::MiddleButtonReleaseEvent);
+        break;
+    default:
+        break;
+    }
+}
+
+void ToolpathView::mouseMoveEvent(QMouseEvent* event) {
+    forward(event, vtkCommand::MouseMoveEvent);
+}
+
+void ToolpathView::wheelEvent(QWheelEvent* event) {
+    m_scene->interactor->InvokeEvent(event->angleDelta().y() > 0
+                                         ? vtkCommand::MouseWheelForwardEvent
+                                         : vtkCommand::MouseWheelBackwardEvent,
+                                     nullptr);
+    update();
 }
 
 void ToolpathView::paintEvent(QPaintEvent*) {

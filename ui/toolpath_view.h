@@ -26,8 +26,16 @@ class ToolpathView final : public QWidget {
 
   protected:
     void paintEvent(QPaintEvent* event) override;
+    // Forwarded to VTK's trackball camera style: left drag rotates, right drag zooms, middle
+    // drag pans, the wheel zooms.
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
 
   private:
+    void forward(QMouseEvent* event, unsigned long vtkEvent);
+
     struct Scene;
     std::unique_ptr<Scene> m_scene;
 };

@@ -169,6 +169,13 @@ class MainWindowTest final : public QObject {
             static_cast<double>(covered) / static_cast<double>(image.width() * image.height());
         qInfo("3D view: %.1f %% of the pixels show the toolpath", 100.0 * share);
         QVERIFY(share > 0.02);
+
+        // A left drag rotates the camera: the next frame differs.
+        QTest::mousePress(view, Qt::LeftButton, {}, QPoint(400, 300));
+        QTest::mouseMove(view, QPoint(430, 310));
+        QTest::mouseMove(view, QPoint(480, 320));
+        QTest::mouseRelease(view, Qt::LeftButton, {}, QPoint(480, 320));
+        QVERIFY(view->renderFrame() != image);
     }
 
   private:

@@ -22,12 +22,14 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QStyleFactory>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QToolBar>
+#include <QVBoxLayout>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -77,8 +79,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     auto* tabs = new QTabWidget(this);
     tabs->addTab(m_editor, tr("S-θ editor"));
     tabs->addTab(m_plots, tr("Axis motion"));
-    m_view3d = new ToolpathView(this);
-    tabs->addTab(m_view3d, tr("3D view"));
+    auto* view3dPage = new QWidget(this);
+    auto* view3dLayout = new QVBoxLayout(view3dPage);
+    m_view3d = new ToolpathView(view3dPage);
+    m_toolSlider = new QSlider(Qt::Horizontal, view3dPage);
+    m_toolSlider->setToolTip(tr("Scrub along the toolpath: shows the tool at that point"));
+    m_toolSlider->setEnabled(false);
+    connect(m_toolSlider, &QSlider::valueChanged, this,
+            [this](int sample) { m_view3d->showToolAt(static_cast<std::size_t>(sample)); });
+    view3dLayout->addWidget(m_view3d, 1);
+    view3dLayout->addWidget(m_toolSlider);
+    tabs->addTab(view3dPage, tr("3D view"));
     splitter->addWidget(tabs);
     splitter->setStretchFactor(1, 2);
     setCentralWidget(splitter);
@@ -226,7 +237,11 @@ void MainWindow::onJobFinished() {
                              ? std::optional<analysis::AxisProfile>(m_result->rescheduled->profile)
                              : std::nullopt);
     if (m_result->rescheduled) {
+        m_view3d->setToolRadius(m_result->toolRadius.value_or(0.0));
         m_view3d->setSchedule(m_result->rescheduled->schedule);
+        const auto samples = static_cast<int>(m_result->rescheduled->schedule.newTips.size());
+        m_toolSlider->setRange(0, std::max(samples - 1, 0));
+        m_toolSlider->setEnabled(samples > 0);
     }
     statusBar()->showMessage(tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2));
     emit jobFinished(true);

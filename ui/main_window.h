@@ -12,6 +12,7 @@ class QLabel;
 class QMenu;
 class QProgressBar;
 class QPushButton;
+class QSlider;
 class QTableWidget;
 
 namespace bladeaxis::ui {
@@ -39,6 +40,7 @@ class MainWindow final : public QMainWindow {
     SThetaEditor* editor() const { return m_editor; }
     ProfilePlots* plots() const { return m_plots; }
     ToolpathView* view3d() const { return m_view3d; }
+    QSlider* toolSlider() const { return m_toolSlider; }
     void setDarkPalette(bool dark);
     int selectedLayer() const;
     // Writes the re-scheduled program of the last result exactly as `--batch -o` would (through
@@ -75,6 +77,7 @@ class MainWindow final : public QMainWindow {
     SThetaEditor* m_editor = nullptr;
     ProfilePlots* m_plots = nullptr;
     ToolpathView* m_view3d = nullptr;
+    QSlider* m_toolSlider = nullptr;
     QDoubleSpinBox* m_toolRadius = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;

@@ -11,6 +11,7 @@
 #include <vtkCommand.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkLineSource.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -18,6 +19,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkSphereSource.h>
 #include <vtkUnsignedCharArray.h>
 
 namespace bladeaxis::ui {
@@ -33,6 +35,14 @@ struct ToolpathView::Scene {
     vtkNew<vtkActor> glyphActor;
     vtkNew<vtkGenericRenderWindowInteractor> interactor;
     vtkNew<vtkInteractorStyleTrackballCamera> style;
+    vtkNew<vtkSphereSource> ball;
+    vtkNew<vtkPolyDataMapper> ballMapper;
+    vtkNew<vtkActor> ballActor;
+    vtkNew<vtkLineSource> shank;
+    vtkNew<vtkPolyDataMapper> shankMapper;
+    vtkNew<vtkActor> shankActor;
+    std::vector<Vec3> tips, axes;
+    double toolRadius = 4.0;
     std::vector<std::pair<std::size_t, std::size_t>> layerRanges;
     int selected = -1;
     bool hasData = false;
@@ -63,6 +73,19 @@ ToolpathView::ToolpathView(QWidget* parent) : QWidget(parent), m_scene(std::make
     m_scene->glyphActor->GetProperty()->SetColor(0.85, 0.85, 0.85);
     m_scene->renderer->AddActor(m_scene->pathActor);
     m_scene->renderer->AddActor(m_scene->glyphActor);
+    m_scene->ball->SetThetaResolution(24);
+    m_scene->ball->SetPhiResolution(16);
+    m_scene->ballMapper->SetInputConnection(m_scene->ball->GetOutputPort());
+    m_scene->ballActor->SetMapper(m_scene->ballMapper);
+    m_scene->ballActor->GetProperty()->SetColor(0.9, 0.75, 0.3);
+    m_scene->shankMapper->SetInputConnection(m_scene->shank->GetOutputPort());
+    m_scene->shankActor->SetMapper(m_scene->shankMapper);
+    m_scene->shankActor->GetProperty()->SetColor(0.9, 0.75, 0.3);
+    m_scene->shankActor->GetProperty()->SetLineWidth(6.0);
+    m_scene->ballActor->VisibilityOff();
+    m_scene->shankActor->VisibilityOff();
+    m_scene->renderer->AddActor(m_scene->ballActor);
+    m_scene->renderer->AddActor(m_scene->shankActor);
     m_scene->interactor->SetRenderWindow(m_scene->window);
     m_scene->interactor->SetInteractorStyle(m_scene->style);
     // The widget repaints on every event; VTK must not try to render into a window of its own.
@@ -106,6 +129,8 @@ void ToolpathView::setSchedule(const scheduling::ScheduleResult& schedule) {
     }
     scene.glyphs->SetPoints(glyphPoints);
     scene.glyphs->SetLines(glyphLines);
+    scene.tips = schedule.newTips;
+    scene.axes = schedule.newAxes;
     scene.hasData = !schedule.newTips.empty();
     setSelectedLayer(scene.selected);
     scene.renderer->ResetCamera();
@@ -128,6 +153,32 @@ void ToolpathView::setSelectedLayer(int layer) {
     }
     scene.path->GetCellData()->SetScalars(colours);
     scene.path->Modified();
+    update();
+}
+
+void ToolpathView::setToolRadius(double radius) {
+    m_scene->toolRadius = radius > 0.0 ? radius : 4.0;
+}
+
+void ToolpathView::showToolAt(std::size_t sample) {
+    Scene& scene = *m_scene;
+    if (sample >= scene.tips.size() || sample >= scene.axes.size()) {
+        scene.ballActor->VisibilityOff();
+        scene.shankActor->VisibilityOff();
+        update();
+        return;
+    }
+    // The tip is the lowest point of the ball; its centre sits one radius up the tool axis.
+    constexpr double kShankLengthMm = 40.0;
+    const Vec3 centre = scene.tips[sample] + scene.toolRadius * scene.axes[sample];
+    const Vec3 top = centre + kShankLengthMm * scene.axes[sample];
+    scene.ball->SetCenter(centre.x(), centre.y(), centre.z());
+    scene.ball->SetRadius(scene.toolRadius);
+    scene.shank->SetPoint1(centre.x(), centre.y(), centre.z());
+    scene.shank->SetPoint2(top.x(), top.y(), top.z());
+    scene.ballActor->VisibilityOn();
+    scene.shankActor->VisibilityOn();
+    scene.renderer->ResetCameraClippingRange();
     update();
 }
 

@@ -21,6 +21,9 @@ class ToolpathView final : public QWidget {
     // Tips coloured by layer, the re-scheduled tool axes as short glyphs.
     void setSchedule(const scheduling::ScheduleResult& schedule);
     void setSelectedLayer(int layer);
+    // Shows the tool (ball of `radius` mm and shank) at path sample `sample`.
+    void setToolRadius(double radius);
+    void showToolAt(std::size_t sample);
     // Renders now and returns the frame (also what paintEvent shows).
     QImage renderFrame();
 

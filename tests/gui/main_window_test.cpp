@@ -9,6 +9,7 @@
 
 #include <QImage>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTableWidget>
 #include <QTest>
 #include <cstdio>
@@ -175,7 +176,16 @@ class MainWindowTest final : public QObject {
         QTest::mouseMove(view, QPoint(430, 310));
         QTest::mouseMove(view, QPoint(480, 320));
         QTest::mouseRelease(view, Qt::LeftButton, {}, QPoint(480, 320));
-        QVERIFY(view->renderFrame() != image);
+        const QImage rotated = view->renderFrame();
+        QVERIFY(rotated != image);
+
+        // Scrubbing shows the tool: the frame changes again.
+        QSlider* slider = m_window.toolSlider();
+        QVERIFY(slider->isEnabled());
+        slider->setValue(slider->maximum() / 2);
+        const QImage withTool = view->renderFrame();
+        QVERIFY(withTool.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/view3d_tool.png")));
+        QVERIFY(withTool != rotated);
     }
 
   private:

@@ -5,9 +5,8 @@
 #include <string>
 
 namespace bladeaxis::analysis {
-namespace {
-
-kinematics::MachineModel scaledRotary(const kinematics::MachineModel& machine, double factor) {
+kinematics::MachineModel scaledRotaryLimits(const kinematics::MachineModel& machine,
+                                            double factor) {
     kinematics::MachineModel scaled = machine;
     for (const auto axis : {kinematics::AxisId::A, kinematics::AxisId::B}) {
         auto& limits = scaled.limit(axis);
@@ -18,8 +17,6 @@ kinematics::MachineModel scaledRotary(const kinematics::MachineModel& machine, d
     }
     return scaled;
 }
-
-} // namespace
 
 std::vector<double> defaultRotarySweepFactors() {
     return {0.5, 0.75, 1.0, 1.5, 2.0};
@@ -36,7 +33,7 @@ Result<std::vector<LimitSweepPoint>> sweepRotaryLimits(const AxisProfile& profil
             return makeError(ErrorCode::InvalidArgument,
                              "rotary limit factor must be positive, got " + std::to_string(factor));
         }
-        const auto t2 = timeOptimalTime(profile, scaledRotary(machine, factor), options);
+        const auto t2 = timeOptimalTime(profile, scaledRotaryLimits(machine, factor), options);
         points.push_back({factor, t2 ? t2->time : std::numeric_limits<double>::quiet_NaN()});
     }
     return points;

@@ -16,6 +16,10 @@ struct LimitSweepPoint {
 // The factors 0.5, 0.75, 1, 1.5, 2 of the spec's sweep.
 std::vector<double> defaultRotarySweepFactors();
 
+// The machine with the rotary (A, B) velocity, acceleration and jerk limits x factor; an
+// unlimited (<= 0) limit stays unlimited.
+kinematics::MachineModel scaledRotaryLimits(const kinematics::MachineModel& machine, double factor);
+
 // T2 for each factor (in the given order). A factor <= 0 or non-finite is an InvalidArgument
 // error; a T2 failure at one factor is reported as a NaN time so the other points survive.
 Result<std::vector<LimitSweepPoint>> sweepRotaryLimits(const AxisProfile& profile,

@@ -100,10 +100,6 @@ const MethodResult* Comparison::find(std::string_view method) const {
     return nullptr;
 }
 
-std::vector<double> defaultSweepFactors() {
-    return {0.5, 0.75, 1.0, 1.5, 2.0};
-}
-
 double reduction(double before, double after) {
     return before > 0.0 ? (before - after) / before : 0.0;
 }
@@ -197,7 +193,10 @@ Status addOptimum(Add& add, Comparison& comparison) {
 Result<Comparison> compareMethods(EvaluationContext context, const CompareOptions& options,
                                   const CancelToken& cancel) {
     const scheduling::ScheduleInput input = scheduleInputOf(context);
-    auto best = runEngine(input, options.best, cancel);
+    auto best =
+        options.bestSchedule != nullptr
+            ? Result<Scheduled>(Scheduled{*options.bestSchedule, options.bestScheduleSeconds})
+            : runEngine(input, options.best, cancel);
     if (!best) {
         return std::unexpected(best.error());
     }

@@ -18,10 +18,11 @@ struct CompareOptions {
     // Rotary-limit factors for the machining-time sweep; empty: no sweep.
     std::vector<double> sweepFactors;
     bool optimum = true; // the smoothest schedule in the same channel (spec §9, optimal-qp)
+    // The caller's own schedule of the same centres with `best` (a job has just made it) and
+    // its wall time: reused as the stheta-best row instead of being scheduled again.
+    const scheduling::ScheduleResult* bestSchedule = nullptr;
+    double bestScheduleSeconds = 0.0;
 };
-
-// The sweep of spec §8.3, x0.5 ... x2 on the rotary limits.
-std::vector<double> defaultSweepFactors();
 
 // The fairness rule of spec §7.2: per metric, the best quaternion setting and its value.
 struct FairnessEntry {

@@ -1,6 +1,7 @@
 #include "core/compare/method_evaluation.h"
 
 #include "core/analysis/time_optimal.h"
+#include "core/analysis/time_optimal_sweep.h"
 #include "core/kinematics/kinematics.h"
 
 namespace bladeaxis::compare {
@@ -78,21 +79,12 @@ Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::strin
     return result;
 }
 
-kinematics::MachineModel withRotaryLimitsScaled(const kinematics::MachineModel& machine,
-                                                double factor) {
-    kinematics::MachineModel scaled = machine;
-    kinematics::AxisLimits& a = scaled.limit(kinematics::AxisId::A);
-    a.velocity *= factor;
-    a.acceleration *= factor;
-    a.jerk *= factor;
-    return scaled;
-}
-
 void sweepRotaryLimits(const EvaluationContext& context, std::span<const double> factors,
                        MethodResult& result) {
     result.sweep.clear();
     for (double factor : factors) {
-        const kinematics::MachineModel machine = withRotaryLimitsScaled(*context.machine, factor);
+        const kinematics::MachineModel machine =
+            analysis::scaledRotaryLimits(*context.machine, factor);
         LimitSweepPoint point{
             factor, analysis::constantFeedTime(result.profile, machine, false).time, std::nullopt};
         if (auto t2 = analysis::timeOptimalTime(result.profile, machine)) {

@@ -48,10 +48,6 @@ struct MethodResult {
     double computeSeconds = 0.0;        // wall time of the method itself (not of its evaluation)
 };
 
-// The machine with the rotary (A) limits multiplied by `factor`.
-kinematics::MachineModel withRotaryLimitsScaled(const kinematics::MachineModel& machine,
-                                                double factor);
-
 // T1 (and T2 when the result has one) for each factor.
 void sweepRotaryLimits(const EvaluationContext& context, std::span<const double> factors,
                        MethodResult& result);

@@ -2,6 +2,7 @@
 
 #include "core/analysis/axis_profile.h"
 #include "core/analysis/time_optimal.h"
+#include "core/analysis/time_optimal_sweep.h"
 #include "core/base/file_io.h"
 #include "core/blade/presets.h"
 #include "core/cad/blade_surface.h"
@@ -225,8 +226,12 @@ Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& ca
     context.analysis.toolRadius = context.toolRadius;
     compare::CompareOptions options;
     options.best = spec.parameters;
+    if (result.rescheduled) { // the job's schedule: same centres, same parameters
+        options.bestSchedule = &result.rescheduled->schedule;
+        options.bestScheduleSeconds = result.rescheduled->stageSeconds.schedule;
+    }
     if (spec.sweepLimits) {
-        options.sweepFactors = compare::defaultSweepFactors();
+        options.sweepFactors = analysis::defaultRotarySweepFactors();
     }
     auto comparison = compare::compareMethods(context, options, cancel);
     if (!comparison) {

@@ -1,5 +1,6 @@
 #include "core/scheduling/layer_edit.h"
 
+#include "core/scheduling/layer_scheduler.h"
 #include "core/scheduling/linearisation.h"
 #include "core/scheduling/smoothing.h"
 
@@ -92,18 +93,6 @@ Status checkInsideHull(const LayerResult& layer, std::span<const PolyVertex> ver
     return {};
 }
 
-LayerResult::Corner::Bound boundOf(CornerLimit limit) {
-    switch (limit) {
-    case CornerLimit::Geometry:
-        return LayerResult::Corner::Bound::Geometry;
-    case CornerLimit::Channel:
-        return LayerResult::Corner::Bound::Channel;
-    case CornerLimit::None:
-        break;
-    }
-    return LayerResult::Corner::Bound::None;
-}
-
 } // namespace
 
 Result<LayerResult> resmoothLayer(const LayerResult& layer, std::span<const Vec2> vertices,
@@ -137,7 +126,7 @@ Result<LayerResult> resmoothLayer(const LayerResult& layer, std::span<const Vec2
     }
     edited.corners.clear();
     for (const SmoothedCorner& corner : smooth.corners) {
-        edited.corners.push_back({corner.s, corner.epsilon, boundOf(corner.limitedBy)});
+        edited.corners.push_back({corner.s, corner.epsilon, cornerBound(corner.limitedBy)});
     }
     PathSamples samples = evaluateSmoothedPath(smooth, layer.s);
     edited.theta = std::move(samples.theta);

@@ -123,18 +123,6 @@ Attempt bestAttempt(const LayerProblem& p, const ScheduleParameters& parameters)
     return search.takeBest();
 }
 
-LayerResult::Corner::Bound boundOf(CornerLimit limit) {
-    switch (limit) {
-    case CornerLimit::Geometry:
-        return LayerResult::Corner::Bound::Geometry;
-    case CornerLimit::Channel:
-        return LayerResult::Corner::Bound::Channel;
-    case CornerLimit::None:
-        break;
-    }
-    return LayerResult::Corner::Bound::None;
-}
-
 // The problem's per-sample vectors become the result's diagnostics (moved, not copied).
 void fillCommon(LayerResult& r, LayerProblem&& p) {
     r.s = std::move(p.s);
@@ -155,7 +143,7 @@ void fillSchedule(LayerResult& r, const Attempt& a, const LayerProblem& p) {
         r.polyline.emplace_back(v.s, v.theta);
     }
     for (const SmoothedCorner& c : a.smooth.corners) {
-        r.corners.push_back({c.s, c.epsilon, boundOf(c.limitedBy)});
+        r.corners.push_back({c.s, c.epsilon, cornerBound(c.limitedBy)});
     }
     PathSamples samples = evaluateSmoothedPath(a.smooth, p.s);
     r.theta = std::move(samples.theta);
@@ -262,6 +250,18 @@ LayerOutcome scheduleLayer(LayerProblem problem, const ScheduleParameters& param
     r.minClearance = minClearance(r);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return out;
+}
+
+LayerResult::Corner::Bound cornerBound(CornerLimit limit) {
+    switch (limit) {
+    case CornerLimit::Geometry:
+        return LayerResult::Corner::Bound::Geometry;
+    case CornerLimit::Channel:
+        return LayerResult::Corner::Bound::Channel;
+    case CornerLimit::None:
+        break;
+    }
+    return LayerResult::Corner::Bound::None;
 }
 
 } // namespace bladeaxis::scheduling

@@ -4,11 +4,15 @@
 
 #include "core/scheduling/layer_problem.h"
 #include "core/scheduling/schedule.h"
+#include "core/scheduling/smoothing.h"
 
 #include <string>
 #include <vector>
 
 namespace bladeaxis::scheduling {
+
+// The reviewer-facing name of what limited a corner's size (LayerResult::Corner).
+LayerResult::Corner::Bound cornerBound(CornerLimit limit);
 
 struct LayerOutcome {
     LayerResult result;

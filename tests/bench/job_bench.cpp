@@ -14,6 +14,7 @@
 #include "core/job/job.h"
 #include "core/job/reschedule.h"
 #include "core/kinematics/machine_model.h"
+#include "tests/bench/million_tile.h"
 
 #include <benchmark/benchmark.h>
 
@@ -29,8 +30,8 @@ namespace {
 using namespace bladeaxis;
 namespace fs = std::filesystem;
 
-constexpr double kToolRadius = 8.0; // mm, the demo path's ball
-constexpr int kTiles = 128;         // 1,007,361 records
+constexpr double kToolRadius = 8.0;          // mm, the demo path's ball
+constexpr int kTiles = bench::kMillionTiles; // 1,007,361 records
 
 [[noreturn]] void fail(const char* what, const Error& error) {
     std::fprintf(stderr, "%s: %s\n", what, error.toString().c_str());
@@ -38,13 +39,8 @@ constexpr int kTiles = 128;         // 1,007,361 records
 }
 
 toolpath::Toolpath tiledPath() {
-    blade::BladeSpec bladeSpec = blade::demoBladeSpec();
-    bladeSpec.staggerEnd = bladeSpec.staggerStart;
-    blade::HelicalPathSpec pathSpec = blade::demoPathSpec();
-    pathSpec.pitch = 0.5;
-    pathSpec.revolutions = 10;
-    pathSpec.chordalTolerance = 0.002;
-    pathSpec.maxStep = 0.25;
+    const blade::BladeSpec bladeSpec = bench::twistFreeDemoBlade();
+    const blade::HelicalPathSpec pathSpec = bench::fineTilePath();
     auto bladeModel = blade::Blade::create(bladeSpec);
     if (!bladeModel) {
         fail("blade", bladeModel.error());

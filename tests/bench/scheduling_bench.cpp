@@ -10,6 +10,7 @@
 
 #include "core/blade/presets.h"
 #include "core/scheduling/schedule.h"
+#include "tests/bench/million_tile.h"
 
 #include <benchmark/benchmark.h>
 
@@ -58,16 +59,10 @@ const scheduling::ScheduleInput& demoInput() {
 // tiled 128 times along x: 1280 revolutions, ~1,000,000 points, generated in about a second.
 const scheduling::ScheduleInput& millionInput() {
     static const scheduling::ScheduleInput input = [] {
-        blade::BladeSpec bladeSpec = blade::demoBladeSpec();
-        bladeSpec.staggerEnd = bladeSpec.staggerStart;
-        blade::HelicalPathSpec pathSpec = blade::demoPathSpec();
-        pathSpec.pitch = 0.5;
-        pathSpec.revolutions = 10;
-        pathSpec.chordalTolerance = 0.002;
-        pathSpec.maxStep = 0.25;
-        const scheduling::ScheduleInput tile = generate(bladeSpec, pathSpec);
+        const blade::HelicalPathSpec pathSpec = bench::fineTilePath();
+        const scheduling::ScheduleInput tile = generate(bench::twistFreeDemoBlade(), pathSpec);
         const double advance = pathSpec.pitch * pathSpec.revolutions;
-        constexpr int kTiles = 128;
+        constexpr int kTiles = bench::kMillionTiles;
         scheduling::ScheduleInput tiled;
         tiled.toolRadius = tile.toolRadius;
         for (int t = 0; t < kTiles; ++t) {

@@ -1,3 +1,4 @@
+#include "core/analysis/time_optimal_sweep.h"
 #include "core/blade/presets.h"
 #include "core/compare/compare.h"
 #include "core/kinematics/kinematics.h"
@@ -124,7 +125,7 @@ TEST(Compare, CancelledComparisonStops) {
 
 TEST(Compare, LimitSweepTimesFallAsTheRotaryLimitsGrow) {
     CompareOptions options;
-    options.sweepFactors = defaultSweepFactors();
+    options.sweepFactors = analysis::defaultRotarySweepFactors();
     auto comparison = compareMethods(demo().context(), options, CancelToken{});
     ASSERT_TRUE(comparison.has_value()) << comparison.error().toString();
     for (const MethodResult& method : comparison->methods) {

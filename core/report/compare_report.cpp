@@ -6,6 +6,10 @@
 #include "core/report/html_page.h"
 
 #include <algorithm>
+#include <array>
+#include <functional>
+#include <string_view>
+#include <utility>
 
 namespace bladeaxis::report {
 
@@ -103,40 +107,232 @@ double referenceValue(const compare::Comparison& comparison, const MethodResult&
     return comparison.bestQuaternion(metric).value_or(compare::metricValue(reference, metric));
 }
 
-std::vector<std::string> tableRow(const compare::Comparison& comparison, const MethodResult& method,
-                                  const MethodResult& reference, const MethodResult& original) {
-    std::vector<std::string> row{method.method};
-    for (AxisId axis : kTableAxes) {
-        const auto& series = method.profile.axis(axis);
-        row.push_back(formatFixed(display(axis, series.peakVelocity), 2));
-        row.push_back(formatFixed(display(axis, series.peakAcceleration), 1));
-    }
-    const auto& a = method.profile.axis(AxisId::A);
-    row.push_back(percent(compare::reduction(
-        referenceValue(comparison, reference, "A peak velocity"), a.peakVelocity)));
-    row.push_back(percent(compare::reduction(
-        referenceValue(comparison, reference, "A peak acceleration"), a.peakAcceleration)));
-    row.push_back(std::to_string(method.profile.aReversals.count));
-    row.push_back(formatFixed(method.t1.time, 2));
-    row.push_back(percent(compare::reduction(original.t1.time, method.t1.time)));
-    row.push_back(method.t2 ? formatFixed(*method.t2, 2) : "-");
-    row.push_back(formatFixed(units::radToDeg(method.channel.minClearance), 3));
-    row.push_back(formatFixed(1000.0 * method.computeSeconds, 2));
-    return row;
+CompareTableCell numberCell(double value, std::string text, std::string note = {}) {
+    return {value, std::move(text), std::move(note)};
 }
 
-std::vector<std::string> tableHeader(const compare::Comparison& comparison) {
-    std::vector<std::string> header{"method"};
+CompareTableCell emptyCell() {
+    return {std::nullopt, "-", {}};
+}
+
+// A fairness entry in display units: "A peak velocity: <setting> (203.45 deg/s)".
+std::string describeFairness(const compare::FairnessEntry& entry) {
+    std::string unit = "s";
+    double value = entry.value;
+    for (AxisId axis : kTableAxes) {
+        if (entry.metric.starts_with(kinematics::axisName(axis))) {
+            value = display(axis, value);
+            unit = entry.metric.ends_with("velocity") ? velocityUnit(axis) : accelerationUnit(axis);
+        }
+    }
+    return entry.metric + ": " + entry.setting + " (" + formatShortest(value) + " " + unit + ")";
+}
+
+std::string methodNote(const compare::Comparison& comparison, const MethodResult& method) {
+    std::string note = "setting: " + method.setting;
+    if (method.method == "quaternion" && !comparison.quaternionFairness.empty()) {
+        note += " (the setting with the lowest A peak acceleration)\nbest quaternion setting "
+                "per metric (fairness rule, spec 7.2):";
+        for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
+            note += "\n  " + describeFairness(entry);
+        }
+    }
+    return note;
+}
+
+// A peak's reductions against the original and the quaternion baseline's best setting.
+std::string peakNote(const compare::Comparison& comparison, const std::string& metric,
+                     double value) {
+    const MethodResult& original = comparison.methods.front();
+    std::string note = "reduction vs original: " +
+                       percent(compare::reduction(compare::metricValue(original, metric), value));
+    if (auto best = comparison.bestQuaternion(metric)) {
+        note += "\nreduction vs quaternion: " + percent(compare::reduction(*best, value));
+    }
+    return note;
+}
+
+using CellOf = std::function<CompareTableCell(const MethodResult&)>;
+
+struct ColumnDefinition {
+    CompareTableColumn column;
+    CellOf cell;
+};
+
+void addPeakColumns(const compare::Comparison& comparison, std::vector<ColumnDefinition>& columns) {
     for (AxisId axis : kTableAxes) {
         const std::string name = kinematics::axisName(axis);
-        header.push_back(name + " peak vel. (" + velocityUnit(axis) + ")");
-        header.push_back(name + " peak acc. (" + accelerationUnit(axis) + ")");
+        columns.push_back(
+            {{name + "_peak_velocity", name + " peak vel. (" + velocityUnit(axis) + ")",
+              name + " peak velocity at the programmed feed"},
+             [&comparison, axis, name](const MethodResult& method) {
+                 const double peak = method.profile.axis(axis).peakVelocity;
+                 return numberCell(display(axis, peak), formatFixed(display(axis, peak), 2),
+                                   peakNote(comparison, name + " peak velocity", peak));
+             }});
+        columns.push_back(
+            {{name + "_peak_acceleration", name + " peak acc. (" + accelerationUnit(axis) + ")",
+              name + " peak acceleration at the programmed feed"},
+             [&comparison, axis, name](const MethodResult& method) {
+                 const double peak = method.profile.axis(axis).peakAcceleration;
+                 return numberCell(display(axis, peak), formatFixed(display(axis, peak), 1),
+                                   peakNote(comparison, name + " peak acceleration", peak));
+             }});
     }
-    const std::string against = tableReference(comparison).method;
-    header.insert(header.end(), {"A vel. reduction vs " + against, "A acc. reduction vs " + against,
-                                 "A reversals", "T1 (s)", "T1 gain vs original", "T2 (s)",
-                                 "min channel clearance (deg)", "compute (ms)"});
-    return header;
+}
+
+void addReductionColumns(const compare::Comparison& comparison,
+                         std::vector<ColumnDefinition>& columns) {
+    const MethodResult& reference = tableReference(comparison);
+    const MethodResult& original = comparison.methods.front();
+    const std::string against = reference.method;
+    for (const auto& [quantity, shortName] :
+         {std::pair<std::string, std::string>{"velocity", "vel."}, {"acceleration", "acc."}}) {
+        const std::string metric = "A peak " + quantity;
+        columns.push_back(
+            {{"A_" + quantity + "_reduction_vs_reference",
+              "A " + shortName + " reduction vs " + against,
+              "(reference - method) / reference; the quaternion reference is its best setting "
+              "for this metric"},
+             [&comparison, &reference, metric](const MethodResult& method) {
+                 const double value =
+                     compare::reduction(referenceValue(comparison, reference, metric),
+                                        compare::metricValue(method, metric));
+                 return numberCell(value, percent(value));
+             }});
+        if (&reference == &original) {
+            continue; // the reference already is the original
+        }
+        columns.push_back(
+            {{"A_" + quantity + "_reduction_vs_original",
+              "A " + shortName + " reduction vs original", "(original - method) / original"},
+             [&original, metric](const MethodResult& method) {
+                 const double value = compare::reduction(compare::metricValue(original, metric),
+                                                         compare::metricValue(method, metric));
+                 return numberCell(value, percent(value));
+             }});
+    }
+}
+
+void addTimeColumns(const compare::Comparison& comparison, std::vector<ColumnDefinition>& columns) {
+    const MethodResult& original = comparison.methods.front();
+    columns.push_back({{"a_reversals", "A reversals", "sign changes of the A velocity"},
+                       [](const MethodResult& method) {
+                           const std::size_t count = method.profile.aReversals.count;
+                           return numberCell(static_cast<double>(count), std::to_string(count));
+                       }});
+    columns.push_back({{"t1_s", "T1 (s)", "constant-feed machining time under the machine limits"},
+                       [](const MethodResult& method) {
+                           return numberCell(method.t1.time, formatFixed(method.t1.time, 2));
+                       }});
+    columns.push_back({{"t1_gain_vs_original", "T1 gain vs original", "(original - T1) / original"},
+                       [&original](const MethodResult& method) {
+                           const double gain = compare::reduction(original.t1.time, method.t1.time);
+                           return numberCell(gain, percent(gain));
+                       }});
+    columns.push_back({{"t2_s", "T2 (s)", "time-optimal machining time under the machine limits"},
+                       [](const MethodResult& method) {
+                           return method.t2 ? numberCell(*method.t2, formatFixed(*method.t2, 2))
+                                            : emptyCell();
+                       }});
+    columns.push_back({{"t2_gain_vs_original", "T2 gain vs original", "(original - T2) / original"},
+                       [&original](const MethodResult& method) {
+                           if (!method.t2 || !original.t2) {
+                               return emptyCell();
+                           }
+                           const double gain = compare::reduction(*original.t2, *method.t2);
+                           return numberCell(gain, percent(gain));
+                       }});
+}
+
+// The gaps to the optimum in the same channel (spec 9.5), as ratios: 1 is the optimum itself.
+void addOptimumColumns(const compare::Comparison& comparison,
+                       std::vector<ColumnDefinition>& columns) {
+    if (const MethodResult* qp = comparison.find("optimal-qp");
+        qp != nullptr && qp->channel.secondDerivativeEnergy > 0.0) {
+        columns.push_back({{"theta_dd_energy_ratio_to_optimal_qp", "theta'' energy / optimal-qp",
+                            "integral of theta''^2 over the layers, relative to the smoothest "
+                            "schedule in the same channel"},
+                           [qp](const MethodResult& method) {
+                               const double ratio = method.channel.secondDerivativeEnergy /
+                                                    qp->channel.secondDerivativeEnergy;
+                               return numberCell(ratio, formatFixed(ratio, 2));
+                           }});
+    }
+    if (const MethodResult* lp = comparison.find("optimal-lp");
+        lp != nullptr && lp->channel.peakSecondDerivative > 0.0) {
+        columns.push_back({{"peak_theta_dd_ratio_to_optimal_lp", "peak theta'' / optimal-lp",
+                            "peak |theta''| relative to the lowest-peak schedule in the same "
+                            "channel"},
+                           [lp](const MethodResult& method) {
+                               const double ratio = method.channel.peakSecondDerivative /
+                                                    lp->channel.peakSecondDerivative;
+                               return numberCell(ratio, formatFixed(ratio, 2));
+                           }});
+    }
+}
+
+std::vector<ColumnDefinition> tableColumns(const compare::Comparison& comparison) {
+    std::vector<ColumnDefinition> columns;
+    columns.push_back(
+        {{"method", "method", "the method; its setting on hover"},
+         [&comparison](const MethodResult& method) {
+             return CompareTableCell{std::nullopt, method.method, methodNote(comparison, method)};
+         }});
+    addPeakColumns(comparison, columns);
+    addReductionColumns(comparison, columns);
+    addTimeColumns(comparison, columns);
+    addOptimumColumns(comparison, columns);
+    columns.push_back(
+        {{"min_clearance_deg", "min channel clearance (deg)",
+          "smallest distance of theta to the raw channel's bounds; negative: outside"},
+         [](const MethodResult& method) {
+             const double degrees = units::radToDeg(method.channel.minClearance);
+             return numberCell(degrees, formatFixed(degrees, 3));
+         }});
+    columns.push_back({{"compute_ms", "compute (ms)", "wall time of the method itself"},
+                       [](const MethodResult& method) {
+                           const double ms = 1000.0 * method.computeSeconds;
+                           return numberCell(ms, formatFixed(ms, 2));
+                       }});
+    return columns;
+}
+
+// The columns report.html prints, in its order.
+constexpr std::array<std::string_view, 17> kHtmlColumns{"method",
+                                                        "X_peak_velocity",
+                                                        "X_peak_acceleration",
+                                                        "Y_peak_velocity",
+                                                        "Y_peak_acceleration",
+                                                        "Z_peak_velocity",
+                                                        "Z_peak_acceleration",
+                                                        "A_peak_velocity",
+                                                        "A_peak_acceleration",
+                                                        "A_velocity_reduction_vs_reference",
+                                                        "A_acceleration_reduction_vs_reference",
+                                                        "a_reversals",
+                                                        "t1_s",
+                                                        "t1_gain_vs_original",
+                                                        "t2_s",
+                                                        "min_clearance_deg",
+                                                        "compute_ms"};
+
+struct PrintedTable {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
+};
+
+PrintedTable printedTable(const CompareTable& table) {
+    PrintedTable printed;
+    printed.rows.resize(table.rows.size());
+    for (std::string_view key : kHtmlColumns) {
+        const auto column = static_cast<std::size_t>(table.columnOf(key));
+        printed.header.push_back(table.columns[column].header);
+        for (std::size_t row = 0; row < table.rows.size(); ++row) {
+            printed.rows[row].push_back(table.rows[row][column].text);
+        }
+    }
+    return printed;
 }
 
 Plot axisPlot(const compare::Comparison& comparison, AxisId axis, int derivative) {
@@ -241,6 +437,33 @@ std::vector<std::vector<std::string>> sweepRows(const compare::Comparison& compa
 
 } // namespace
 
+int CompareTable::columnOf(std::string_view key) const {
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+        if (columns[i].key == key) {
+            return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+CompareTable compareTable(const compare::Comparison& comparison) {
+    CompareTable table;
+    table.reductionReference = tableReference(comparison).method;
+    const std::vector<ColumnDefinition> columns = tableColumns(comparison);
+    for (const ColumnDefinition& definition : columns) {
+        table.columns.push_back(definition.column);
+    }
+    for (const MethodResult& method : comparison.methods) {
+        std::vector<CompareTableCell> row;
+        row.reserve(columns.size());
+        for (const ColumnDefinition& definition : columns) {
+            row.push_back(definition.cell(method));
+        }
+        table.rows.push_back(std::move(row));
+    }
+    return table;
+}
+
 nlohmann::json compareJson(const compare::Comparison& comparison) {
     nlohmann::json json;
     json["layers"] = comparison.reference.layers.size();
@@ -289,7 +512,6 @@ std::string compareCsv(const compare::Comparison& comparison) {
 std::string compareHtml(const compare::Comparison& comparison, const std::string& title) {
     HtmlPage page("BladeAxis comparison: " + title);
     const MethodResult& original = comparison.methods.front();
-    const MethodResult& reference = tableReference(comparison);
     page.paragraph("Every method keeps the same ball centres and is evaluated by the same "
                    "pipeline: inverse kinematics with A continuous, cubic-spline derivatives at "
                    "the programmed feed of " +
@@ -302,11 +524,8 @@ std::string compareHtml(const compare::Comparison& comparison, const std::string
                        "every reduction against the quaternion baseline uses its best setting "
                        "for that metric (fairness rule, spec 7.2), listed below the table.");
     }
-    std::vector<std::vector<std::string>> rows;
-    for (const MethodResult& method : comparison.methods) {
-        rows.push_back(tableRow(comparison, method, reference, original));
-    }
-    page.table(tableHeader(comparison), rows);
+    const auto [header, rows] = printedTable(compareTable(comparison));
+    page.table(header, rows);
     if (!comparison.quaternionFairness.empty()) {
         std::vector<std::vector<std::string>> fairness;
         for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {

@@ -7,9 +7,38 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace bladeaxis::report {
+
+// The comparison table (the paper's Table 2 per method) as data, so that report.html and the
+// GUI show the same numbers, formatted the same way, from one definition.
+struct CompareTableCell {
+    std::optional<double> value; // in the column's unit (deg, mm, s, ms; fractions for ratios)
+    std::string text;            // as the report prints it ("-" when there is no value)
+    std::string note;            // what a reader may want on hover (settings, reductions)
+};
+
+struct CompareTableColumn {
+    std::string key;         // stable identifier ("A_peak_velocity", "t1_s", ...)
+    std::string header;      // with the unit, as the report prints it
+    std::string description; // what the column means
+};
+
+struct CompareTable {
+    std::vector<CompareTableColumn> columns;         // the first is the method name
+    std::vector<std::vector<CompareTableCell>> rows; // one per comparison.methods, same order
+    std::string reductionReference;                  // "quaternion", or "original" without it
+    int columnOf(std::string_view key) const;        // -1 when absent
+};
+
+// Every column of the table: per-axis peaks (X, Y, Z, A), A reductions against the quaternion
+// baseline (its best setting per metric, spec 7.2) and against the original, A reversals,
+// T1 and T2 with their gains, the gaps to the optimum (spec 9.5) when it was computed, the
+// minimum channel clearance and the compute time. report.html prints a subset of them.
+CompareTable compareTable(const compare::Comparison& comparison);
 
 nlohmann::json compareJson(const compare::Comparison& comparison);
 

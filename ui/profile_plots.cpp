@@ -1,114 +1,440 @@
 #include "ui/profile_plots.h"
 
+#include "core/base/units.h"
 #include "core/kinematics/machine_model.h"
 
+#include <QCheckBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QPainter>
-#include <QPainterPath>
+#include <QPixmap>
+#include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-#include <vector>
+#include <limits>
 
 namespace bladeaxis::ui {
+
 namespace {
 
-struct Series {
-    const std::vector<double>* time;
-    const std::vector<double>* values;
-    QColor colour;
-    Qt::PenStyle style;
-    double scale; // display unit per internal unit (rad -> deg)
+using kinematics::AxisId;
+
+// Titles with units, in the order of ProfilePlots::Quantity.
+QString quantityTitle(int quantity) {
+    switch (quantity) {
+    case ProfilePlots::APosition:
+        return ProfilePlots::tr("A position [deg]");
+    case ProfilePlots::AVelocity:
+        return ProfilePlots::tr("A velocity [deg/s]");
+    case ProfilePlots::AAcceleration:
+        return ProfilePlots::tr("A acceleration [deg/s²]");
+    case ProfilePlots::XVelocity:
+        return ProfilePlots::tr("X velocity [mm/s]");
+    case ProfilePlots::YVelocity:
+        return ProfilePlots::tr("Y velocity [mm/s]");
+    default:
+        return ProfilePlots::tr("Z velocity [mm/s]");
+    }
+}
+
+std::vector<double> inDegrees(const std::vector<double>& radians) {
+    std::vector<double> degrees(radians.size());
+    std::transform(radians.begin(), radians.end(), degrees.begin(), units::radToDeg);
+    return degrees;
+}
+
+ProfilePlots::Curve curveOf(const QString& method, const analysis::AxisProfile& profile,
+                            bool dashed) {
+    ProfilePlots::Curve curve;
+    curve.method = method;
+    curve.dashed = dashed;
+    curve.time = profile.time;
+    const analysis::AxisSeries& a = profile.axis(AxisId::A);
+    curve.values[ProfilePlots::APosition] = inDegrees(a.position);
+    curve.values[ProfilePlots::AVelocity] = inDegrees(a.velocity);
+    curve.values[ProfilePlots::AAcceleration] = inDegrees(a.acceleration);
+    curve.values[ProfilePlots::XVelocity] = profile.axis(AxisId::X).velocity;
+    curve.values[ProfilePlots::YVelocity] = profile.axis(AxisId::Y).velocity;
+    curve.values[ProfilePlots::ZVelocity] = profile.axis(AxisId::Z).velocity;
+    return curve;
+}
+
+bool isDark(const QPalette& palette) {
+    return palette.color(QPalette::Base).lightness() < 128;
+}
+
+// A value between a and b, 0 giving a.
+QColor blend(const QColor& a, const QColor& b, double t) {
+    auto mix = [t](int x, int y) { return static_cast<int>(std::lround(x + (y - x) * t)); };
+    return QColor(mix(a.red(), b.red()), mix(a.green(), b.green()), mix(a.blue(), b.blue()));
+}
+
+QColor curveColour(const ProfilePlots::Curve& curve, const QPalette& palette) {
+    if (curve.method == QLatin1String("original")) { // neutral: the text colour, toned down
+        return blend(palette.color(QPalette::Text), palette.color(QPalette::Base), 0.35);
+    }
+    return ProfilePlots::methodColour(curve.method, isDark(palette));
+}
+
+// Tick spacing of 1, 2 or 5 times a power of ten giving at most about `maxTicks` ticks.
+double niceStep(double range, int maxTicks) {
+    const double rough = range / std::max(maxTicks, 1);
+    const double power = std::pow(10.0, std::floor(std::log10(rough)));
+    for (double factor : {1.0, 2.0, 5.0}) {
+        if (factor * power >= rough) {
+            return factor * power;
+        }
+    }
+    return 10.0 * power;
+}
+
+QString tickLabel(double value, double step) {
+    if (std::abs(value) < step * 1e-6) {
+        return QStringLiteral("0");
+    }
+    if (step >= 1000.0) { // keeps the labels narrow on acceleration plots
+        return QString::number(value / 1000.0, 'f', step >= 10000.0 ? 0 : 1) + QLatin1Char('k');
+    }
+    const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(step))));
+    return QString::number(value, 'f', decimals);
+}
+
+struct Range {
+    double low = std::numeric_limits<double>::infinity();
+    double high = -std::numeric_limits<double>::infinity();
+    bool valid() const { return low <= high; }
+    void include(double value) {
+        if (std::isfinite(value)) {
+            low = std::min(low, value);
+            high = std::max(high, value);
+        }
+    }
 };
 
-void drawPlot(QPainter& painter, QRectF area, const QString& title,
-              const std::vector<Series>& series) {
-    painter.setPen(QPen(QColor(128, 128, 128)));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawRect(area);
-    painter.drawText(area.adjusted(6, 2, 0, 0), Qt::AlignLeft | Qt::AlignTop, title);
-    double tMax = 0.0, low = 0.0, high = 0.0;
-    for (const Series& one : series) {
-        if (one.time->empty() || one.values->empty()) {
-            continue;
+// At most two points per pixel column (the column's extremes, in path order), so that peaks
+// survive and a million-sample path still draws quickly.
+QPolygonF decimatedLine(const std::vector<double>& time, const std::vector<double>& values,
+                        const QRectF& plot, const Range& xRange, const Range& yRange) {
+    const std::size_t count = std::min(time.size(), values.size());
+    auto toX = [&](double t) {
+        return plot.left() + (t - xRange.low) / (xRange.high - xRange.low) * plot.width();
+    };
+    auto toY = [&](double v) {
+        return plot.bottom() - (v - yRange.low) / (yRange.high - yRange.low) * plot.height();
+    };
+    QPolygonF line;
+    line.reserve(static_cast<qsizetype>(
+        std::min(count, 2 * static_cast<std::size_t>(std::max(plot.width(), 0.0)) + 4)));
+    std::size_t i = 0;
+    while (i < count) {
+        const double column = std::floor(toX(time[i]));
+        std::size_t lowest = i, highest = i, end = i;
+        while (end < count && std::floor(toX(time[end])) == column) {
+            lowest = values[end] < values[lowest] ? end : lowest;
+            highest = values[end] > values[highest] ? end : highest;
+            ++end;
         }
-        tMax = std::max(tMax, one.time->back());
-        const auto [minIt, maxIt] = std::minmax_element(one.values->begin(), one.values->end());
-        low = std::min(low, *minIt * one.scale);
-        high = std::max(high, *maxIt * one.scale);
+        for (std::size_t index : {std::min(lowest, highest), std::max(lowest, highest)}) {
+            line << QPointF(toX(time[index]), toY(values[index]));
+        }
+        i = end;
     }
-    if (tMax <= 0.0 || high <= low) {
-        return;
+    return line;
+}
+
+// One plot: frame, grid with tick labels on both axes, the visible curves.
+class PlotPainter {
+  public:
+    PlotPainter(QPainter& painter, const QPalette& palette) : m_p(painter), m_palette(palette) {}
+
+    void draw(const QRectF& area, int quantity, const std::vector<ProfilePlots::Curve>& curves) {
+        const QFontMetricsF metrics(m_p.font());
+        Range xRange{0.0, 0.0}, yRange;
+        for (const ProfilePlots::Curve& curve : curves) {
+            if (!curve.visible || curve.time.empty()) {
+                continue;
+            }
+            xRange.include(curve.time.back());
+            for (double value : curve.values[quantity]) {
+                yRange.include(value);
+            }
+        }
+        const QRectF plot = area.adjusted(metrics.horizontalAdvance(QStringLiteral("-000.0k")) + 8,
+                                          metrics.height() + 4, -8, -(metrics.height() + 6));
+        m_p.setPen(m_palette.color(QPalette::Text));
+        m_p.drawText(area.adjusted(plot.left() - area.left(), 0, 0, 0),
+                     Qt::AlignLeft | Qt::AlignTop, quantityTitle(quantity));
+        if (!(xRange.high > 0.0) || !yRange.valid() || plot.width() < 10 || plot.height() < 10) {
+            m_p.drawRect(plot);
+            return;
+        }
+        padRange(yRange);
+        drawYTicks(plot, yRange, metrics);
+        drawXTicks(plot, xRange, metrics);
+        m_p.save();
+        m_p.setClipRect(plot);
+        for (const ProfilePlots::Curve& curve : curves) {
+            if (curve.visible) {
+                m_p.setPen(QPen(curveColour(curve, m_palette), curve.dashed ? 1.2 : 1.5,
+                                curve.dashed ? Qt::DashLine : Qt::SolidLine));
+                m_p.drawPolyline(
+                    decimatedLine(curve.time, curve.values[quantity], plot, xRange, yRange));
+            }
+        }
+        m_p.restore();
+        m_p.setPen(m_palette.color(QPalette::Text));
+        m_p.setBrush(Qt::NoBrush);
+        m_p.drawRect(plot);
     }
-    const QRectF plot = area.adjusted(4, 18, -4, -4);
-    painter.drawText(area.adjusted(0, 2, -6, 0), Qt::AlignRight | Qt::AlignTop,
-                     QStringLiteral("[%1, %2]").arg(low, 0, 'g', 3).arg(high, 0, 'g', 3));
-    for (const Series& one : series) {
-        const std::size_t count = std::min(one.time->size(), one.values->size());
-        QPolygonF line;
-        line.reserve(static_cast<qsizetype>(count));
-        for (std::size_t i = 0; i < count; ++i) {
-            const double x = plot.left() + (*one.time)[i] / tMax * plot.width();
+
+  private:
+    static void padRange(Range& range) {
+        const double span = range.high - range.low;
+        const double pad = span > 0.0 ? 0.05 * span : std::max(1.0, std::abs(range.high) * 0.1);
+        range.low -= pad;
+        range.high += pad;
+    }
+
+    QPen gridPen() const {
+        return QPen(blend(m_palette.color(QPalette::Base), m_palette.color(QPalette::Text), 0.15),
+                    1.0);
+    }
+
+    void drawYTicks(const QRectF& plot, const Range& range, const QFontMetricsF& metrics) {
+        const int maxTicks =
+            std::max(2, static_cast<int>(plot.height() / (2.0 * metrics.height())));
+        const double step = niceStep(range.high - range.low, maxTicks);
+        for (double value = std::ceil(range.low / step) * step; value <= range.high;
+             value += step) {
             const double y =
-                plot.bottom() - ((*one.values)[i] * one.scale - low) / (high - low) * plot.height();
-            line << QPointF(x, y);
+                plot.bottom() - (value - range.low) / (range.high - range.low) * plot.height();
+            m_p.setPen(gridPen());
+            m_p.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
+            m_p.setPen(m_palette.color(QPalette::Text));
+            const QRectF label(plot.left() - 200.0 - 4.0, y - metrics.height() / 2, 200.0,
+                               metrics.height());
+            m_p.drawText(label, Qt::AlignRight | Qt::AlignVCenter, tickLabel(value, step));
         }
-        painter.setPen(QPen(one.colour, 1.2, one.style));
-        painter.drawPolyline(line);
     }
+
+    void drawXTicks(const QRectF& plot, const Range& range, const QFontMetricsF& metrics) {
+        const double labelWidth = metrics.horizontalAdvance(QStringLiteral("0000.0")) * 1.5;
+        const int maxTicks = std::max(2, static_cast<int>(plot.width() / labelWidth));
+        const double step = niceStep(range.high - range.low, maxTicks);
+        for (double value = 0.0; value <= range.high; value += step) {
+            const double x =
+                plot.left() + (value - range.low) / (range.high - range.low) * plot.width();
+            m_p.setPen(gridPen());
+            m_p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+            m_p.setPen(m_palette.color(QPalette::Text));
+            const QRectF label(x - labelWidth / 2, plot.bottom() + 2, labelWidth, metrics.height());
+            m_p.drawText(label, Qt::AlignHCenter | Qt::AlignTop, tickLabel(value, step));
+        }
+        m_p.drawText(
+            QRectF(plot.right() - labelWidth, plot.bottom() + 2, labelWidth, metrics.height()),
+            Qt::AlignRight | Qt::AlignTop, ProfilePlots::tr("t [s]"));
+    }
+
+    QPainter& m_p;
+    const QPalette& m_palette;
+};
+
+QPixmap legendIcon(const QColor& colour, bool dashed) {
+    QPixmap icon(24, 12);
+    icon.fill(Qt::transparent);
+    QPainter painter(&icon);
+    painter.setPen(QPen(colour, 2.0, dashed ? Qt::DashLine : Qt::SolidLine));
+    painter.drawLine(QPointF(1, 6), QPointF(23, 6));
+    return icon;
 }
 
 } // namespace
 
+namespace detail {
+
+// The plots themselves, below the legend.
+class PlotCanvas final : public QWidget {
+  public:
+    PlotCanvas(const std::vector<ProfilePlots::Curve>& curves, QWidget* parent)
+        : QWidget(parent), m_curves(curves) {
+        setMinimumSize(320, 260);
+    }
+
+  protected:
+    void paintEvent(QPaintEvent*) override {
+        QPainter painter(this);
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.fillRect(rect(), palette().base());
+        if (m_curves.empty()) {
+            painter.setPen(palette().color(QPalette::Text));
+            painter.drawText(rect(), Qt::AlignCenter,
+                             ProfilePlots::tr("Run a job to see the axis motion"));
+            return;
+        }
+        // Two columns (A on the left, X/Y/Z on the right) when there is room, else one.
+        const int columns = width() >= 640 ? 2 : 1;
+        const int rows = ProfilePlots::kQuantityCount / columns;
+        const double cellWidth = width() / static_cast<double>(columns);
+        const double cellHeight = height() / static_cast<double>(rows);
+        PlotPainter plotter(painter, palette());
+        for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
+            const int column = quantity / rows, row = quantity % rows;
+            plotter.draw(
+                QRectF(column * cellWidth + 2, row * cellHeight + 2, cellWidth - 4, cellHeight - 4),
+                quantity, m_curves);
+        }
+    }
+
+  private:
+    const std::vector<ProfilePlots::Curve>& m_curves;
+};
+
+} // namespace detail
+
 ProfilePlots::ProfilePlots(QWidget* parent) : QWidget(parent) {
     setMinimumSize(320, 300);
-    setToolTip(tr("Axis motion against time at the constant feed: original dashed, "
-                  "re-scheduled solid"));
+    setToolTip(tr("Axis motion against time at the programmed feed, each method on its own time "
+                  "axis; the original dashed. Untick a method to hide it and rescale."));
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    auto* legendRow = new QWidget(this);
+    m_legend = new QHBoxLayout(legendRow);
+    m_legend->setContentsMargins(6, 2, 6, 0);
+    m_canvas = new detail::PlotCanvas(m_curves, this);
+    layout->addWidget(legendRow);
+    layout->addWidget(m_canvas, 1);
+    setAutoFillBackground(true);
+    setBackgroundRole(QPalette::Base);
 }
 
 void ProfilePlots::setProfiles(const analysis::AxisProfile& original,
                                const std::optional<analysis::AxisProfile>& rescheduled) {
-    m_original = original;
-    m_rescheduled = rescheduled;
-    update();
+    std::vector<Curve> curves{curveOf(QStringLiteral("original"), original, true)};
+    if (rescheduled) {
+        curves.push_back(curveOf(QStringLiteral("re-scheduled"), *rescheduled, false));
+    }
+    setCurves(std::move(curves));
 }
 
-void ProfilePlots::paintEvent(QPaintEvent*) {
-    QPainter painter(this);
-    painter.setRenderHint(QPainter::Antialiasing);
-    painter.fillRect(rect(), palette().base());
-    if (!m_original) {
-        painter.drawText(rect(), Qt::AlignCenter, tr("Run a job to see the axis motion"));
-        return;
+void ProfilePlots::setComparison(const compare::Comparison& comparison) {
+    std::vector<Curve> curves;
+    for (const compare::MethodResult& method : comparison.methods) {
+        const QString name = QString::fromStdString(method.method);
+        curves.push_back(curveOf(name, method.profile, method.method == "original"));
     }
-    const auto a = static_cast<std::size_t>(kinematics::AxisId::A);
-    constexpr double kDeg = 180.0 / std::numbers::pi;
-    const QColor before(140, 140, 140);
-    const QColor after(200, 40, 40);
-    auto beforeAfter = [&](const std::vector<double> analysis::AxisSeries::*member) {
-        std::vector<Series> series{
-            {&m_original->time, &(m_original->axes[a].*member), before, Qt::DashLine, kDeg}};
-        if (m_rescheduled) {
-            series.push_back({&m_rescheduled->time, &(m_rescheduled->axes[a].*member), after,
-                              Qt::SolidLine, kDeg});
+    setCurves(std::move(curves));
+}
+
+void ProfilePlots::clear() {
+    setCurves({});
+}
+
+void ProfilePlots::setCurves(std::vector<Curve> curves) {
+    for (Curve& curve : curves) {
+        curve.visible = std::find(m_hidden.begin(), m_hidden.end(), curve.method) == m_hidden.end();
+    }
+    m_curves = std::move(curves);
+    rebuildLegend();
+    m_canvas->update();
+}
+
+QStringList ProfilePlots::methods() const {
+    QStringList names;
+    for (const Curve& curve : m_curves) {
+        names << curve.method;
+    }
+    return names;
+}
+
+bool ProfilePlots::isMethodVisible(const QString& method) const {
+    for (const Curve& curve : m_curves) {
+        if (curve.method == method) {
+            return curve.visible;
         }
-        return series;
-    };
-    const double rowHeight = height() / 4.0;
-    auto row = [&](int index) {
-        return QRectF(4.0, index * rowHeight + 2.0, width() - 8.0, rowHeight - 4.0);
-    };
-    drawPlot(painter, row(0), tr("A position [deg]"), beforeAfter(&analysis::AxisSeries::position));
-    drawPlot(painter, row(1), tr("A velocity [deg/s]"),
-             beforeAfter(&analysis::AxisSeries::velocity));
-    drawPlot(painter, row(2), tr("A acceleration [deg/s²]"),
-             beforeAfter(&analysis::AxisSeries::acceleration));
-    const analysis::AxisProfile& shown = m_rescheduled ? *m_rescheduled : *m_original;
-    const QColor xyz[3] = {QColor(200, 60, 60), QColor(60, 160, 60), QColor(60, 90, 200)};
-    std::vector<Series> linear;
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-        linear.push_back({&shown.time, &shown.axes[axis].velocity, xyz[axis], Qt::SolidLine, 1.0});
     }
-    drawPlot(painter, row(3), tr("X, Y, Z velocity [mm/s] (red, green, blue)"), linear);
+    return false;
+}
+
+void ProfilePlots::setMethodVisible(const QString& method, bool visible) {
+    std::erase(m_hidden, method);
+    if (!visible) {
+        m_hidden.push_back(method);
+    }
+    bool changed = false;
+    for (std::size_t i = 0; i < m_curves.size(); ++i) {
+        if (m_curves[i].method == method && m_curves[i].visible != visible) {
+            m_curves[i].visible = visible;
+            const QSignalBlocker blocker(m_boxes[i]);
+            m_boxes[i]->setChecked(visible);
+            changed = true;
+        }
+    }
+    if (changed) {
+        m_canvas->update();
+        emit methodVisibilityChanged(method, visible);
+    }
+}
+
+QColor ProfilePlots::methodColour(const QString& method, bool darkBackground) {
+    // Okabe-Ito colours (distinct for colour-blind readers); lighter on a dark background.
+    struct Entry {
+        const char* method;
+        QColor light, dark;
+    };
+    static const Entry kColours[] = {
+        {"original", QColor(110, 110, 110), QColor(170, 170, 170)},
+        {"quaternion", QColor(0xE6, 0x9F, 0x00), QColor(0xF0, 0xB8, 0x40)},
+        {"stheta-faithful", QColor(0x00, 0x72, 0xB2), QColor(0x56, 0xB4, 0xE9)},
+        {"stheta-best", QColor(0xD5, 0x5E, 0x00), QColor(0xFF, 0x80, 0x40)},
+        {"re-scheduled", QColor(0xD5, 0x5E, 0x00), QColor(0xFF, 0x80, 0x40)},
+        {"optimal-qp", QColor(0x00, 0x9E, 0x73), QColor(0x30, 0xD0, 0xA0)},
+        {"optimal-lp", QColor(0xCC, 0x79, 0xA7), QColor(0xE8, 0xA0, 0xC8)},
+    };
+    for (const Entry& entry : kColours) {
+        if (method == QLatin1String(entry.method)) {
+            return darkBackground ? entry.dark : entry.light;
+        }
+    }
+    const QColor other(0x80, 0x40, 0xC0); // a method added later: still distinct from the above
+    return darkBackground ? other.lighter(150) : other;
+}
+
+void ProfilePlots::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::PaletteChange) {
+        refreshLegendIcons();
+    }
+    QWidget::changeEvent(event);
+}
+
+void ProfilePlots::rebuildLegend() {
+    for (QCheckBox* box : m_boxes) {
+        m_legend->removeWidget(box);
+        delete box;
+    }
+    m_boxes.clear();
+    while (QLayoutItem* item = m_legend->takeAt(0)) { // the stretch
+        delete item;
+    }
+    for (const Curve& curve : m_curves) {
+        auto* box = new QCheckBox(curve.method, m_legend->parentWidget());
+        box->setChecked(curve.visible);
+        box->setToolTip(tr("Show or hide %1 in every plot").arg(curve.method));
+        const QString method = curve.method;
+        connect(box, &QCheckBox::toggled, this,
+                [this, method](bool visible) { setMethodVisible(method, visible); });
+        m_legend->addWidget(box);
+        m_boxes.push_back(box);
+    }
+    m_legend->addStretch(1);
+    refreshLegendIcons();
+}
+
+void ProfilePlots::refreshLegendIcons() {
+    for (std::size_t i = 0; i < m_boxes.size(); ++i) {
+        m_boxes[i]->setIcon(legendIcon(curveColour(m_curves[i], palette()), m_curves[i].dashed));
+    }
 }
 
 } // namespace bladeaxis::ui

@@ -1,27 +1,77 @@
 #pragma once
-// Before/after plots of the machine-axis motion: A position, velocity and acceleration against
-// time (original dashed, re-scheduled solid) and the X, Y, Z velocities.
+// Axis-motion plots against time at the programmed feed: A position, velocity and acceleration
+// and the X, Y, Z velocities, one curve per method (original dashed), each method on its own
+// time axis (its own duration). A checkbox legend shows and hides the methods.
 
 #include "core/analysis/axis_profile.h"
+#include "core/compare/compare.h"
 
+#include <QStringList>
 #include <QWidget>
+#include <array>
 #include <optional>
+#include <vector>
+
+class QCheckBox;
+class QHBoxLayout;
 
 namespace bladeaxis::ui {
+
+namespace detail {
+class PlotCanvas;
+}
 
 class ProfilePlots final : public QWidget {
     Q_OBJECT
 
   public:
+    // The quantities plotted, one plot each, in this order.
+    enum Quantity { APosition, AVelocity, AAcceleration, XVelocity, YVelocity, ZVelocity };
+    static constexpr int kQuantityCount = 6;
+
+    // One method's curves in display units (deg, deg/s, deg/s², mm/s) against its time (s).
+    struct Curve {
+        QString method;
+        std::vector<double> time;
+        std::array<std::vector<double>, kQuantityCount> values;
+        bool dashed = false;
+        bool visible = true;
+    };
+
     explicit ProfilePlots(QWidget* parent = nullptr);
+
+    // A job without a comparison: the original and, when there is one, the re-scheduled path.
     void setProfiles(const analysis::AxisProfile& original,
                      const std::optional<analysis::AxisProfile>& rescheduled);
+    // Every method of the comparison (original, quaternion, stheta-faithful, stheta-best,
+    // optimal-qp and optimal-lp when present). Visibility chosen by name is kept.
+    void setComparison(const compare::Comparison& comparison);
+    void clear();
+
+    QStringList methods() const;
+    bool isMethodVisible(const QString& method) const;
+    void setMethodVisible(const QString& method, bool visible);
+    const std::vector<Curve>& curves() const { return m_curves; }
+
+    // The colour of a method's curves, readable on a light or dark background.
+    static QColor methodColour(const QString& method, bool darkBackground);
+
+  signals:
+    void methodVisibilityChanged(const QString& method, bool visible);
 
   protected:
-    void paintEvent(QPaintEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
   private:
-    std::optional<analysis::AxisProfile> m_original, m_rescheduled;
+    void setCurves(std::vector<Curve> curves);
+    void rebuildLegend();
+    void refreshLegendIcons();
+
+    std::vector<Curve> m_curves;
+    std::vector<QString> m_hidden; // methods the user hid, kept across results
+    QHBoxLayout* m_legend = nullptr;
+    std::vector<QCheckBox*> m_boxes;
+    detail::PlotCanvas* m_canvas = nullptr;
 };
 
 } // namespace bladeaxis::ui

@@ -1,0 +1,288 @@
+// The comparison in the GUI on the demo job run through core: the table shows one row per
+// method with the numbers of the batch report's own writer (compare.json), the fairness rule's
+// settings on hover and Ctrl+C as CSV; the plots draw every method, hide one on request, and
+// still draw a job without a comparison.
+
+#include "core/job/job.h"
+#include "core/report/compare_report.h"
+#include "ui/comparison_table.h"
+#include "ui/profile_plots.h"
+
+#include <nlohmann/json.hpp>
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QClipboard>
+#include <QImage>
+#include <QTest>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <string>
+
+namespace {
+
+using bladeaxis::ui::ComparisonTable;
+using bladeaxis::ui::ProfilePlots;
+
+std::size_t distinctColours(const QImage& image) {
+    std::set<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 2) {
+        for (int x = 0; x < image.width(); x += 2) {
+            colours.insert(image.pixel(x, y));
+        }
+    }
+    return colours.size();
+}
+
+// Pixels within a small distance of `colour` (antialiasing blends the line edges).
+std::size_t pixelsNear(const QImage& image, const QColor& colour) {
+    std::size_t count = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor pixel = QColor::fromRgb(image.pixel(x, y));
+            const int distance = std::abs(pixel.red() - colour.red()) +
+                                 std::abs(pixel.green() - colour.green()) +
+                                 std::abs(pixel.blue() - colour.blue());
+            count += distance < 24 ? 1U : 0U;
+        }
+    }
+    return count;
+}
+
+// A key the report may leave out (T2 without a time-optimal result): null when absent.
+nlohmann::json optionalField(const nlohmann::json& object, const char* key) {
+    return object.contains(key) ? object.at(key) : nlohmann::json();
+}
+
+bool sameNumber(double expected, double actual) {
+    return std::abs(expected - actual) <= 1e-12 * std::max(1.0, std::abs(expected));
+}
+
+QImage grabbed(QWidget& widget, const char* file) {
+    const QImage image = widget.grab().toImage();
+    image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/") + QLatin1String(file));
+    return image;
+}
+
+QPalette darkPalette() {
+    QPalette palette;
+    palette.setColor(QPalette::Window, QColor(45, 45, 48));
+    palette.setColor(QPalette::Base, QColor(30, 30, 32));
+    palette.setColor(QPalette::Text, QColor(220, 220, 220));
+    palette.setColor(QPalette::WindowText, QColor(220, 220, 220));
+    return palette;
+}
+
+} // namespace
+
+class ComparisonTest final : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void initTestCase() {
+        bladeaxis::job::JobSpec spec;
+        spec.demo = true;
+        spec.compare = true;
+        bladeaxis::NullProgressSink progress;
+        bladeaxis::CancelToken cancel;
+        auto result = bladeaxis::job::runJob(spec, progress, cancel);
+        QVERIFY2(result.has_value(), result ? "" : result.error().toString().c_str());
+        QVERIFY(result->comparison.has_value());
+        QVERIFY(result->rescheduled.has_value());
+        m_result = std::move(*result);
+        QVERIFY(comparison().find("quaternion") != nullptr);
+        QVERIFY(comparison().find("optimal-qp") != nullptr);
+    }
+
+    void tableShowsOneRowPerMethodWithTheReportsNumbers() {
+        ComparisonTable table;
+        table.setComparison(comparison());
+        const nlohmann::json report = bladeaxis::report::compareJson(comparison());
+        const auto& methods = report["methods"];
+        QCOMPARE(static_cast<std::size_t>(table.rowCount()), methods.size());
+        for (int row = 0; row < table.rowCount(); ++row) {
+            const auto& method = methods[static_cast<std::size_t>(row)];
+            QCOMPARE(table.item(row, 0)->text().toStdString(), method["method"].get<std::string>());
+            for (const char* axis : {"X", "Y", "Z", "A"}) {
+                const auto& figures = method["axes"][axis];
+                checkCell(table, row, QString(axis) + "_peak_velocity", figures["peak_velocity"]);
+                checkCell(table, row, QString(axis) + "_peak_acceleration",
+                          figures["peak_acceleration"]);
+            }
+            const auto& a = method["axes"]["A"];
+            checkCell(table, row, "A_velocity_reduction_vs_original",
+                      a["velocity_reduction_vs_original"]);
+            checkCell(table, row, "A_acceleration_reduction_vs_original",
+                      a["acceleration_reduction_vs_original"]);
+            checkCell(table, row, "A_velocity_reduction_vs_reference",
+                      optionalField(a, "velocity_reduction_vs_quaternion"));
+            checkCell(table, row, "A_acceleration_reduction_vs_reference",
+                      optionalField(a, "acceleration_reduction_vs_quaternion"));
+            checkCell(table, row, "a_reversals", method["a_reversals"]);
+            checkCell(table, row, "t1_s", method["t1_s"]);
+            checkCell(table, row, "t1_gain_vs_original", method["t1_gain_vs_original"]);
+            checkCell(table, row, "t2_s", optionalField(method, "t2_s"));
+            checkCell(table, row, "t2_gain_vs_original",
+                      optionalField(method, "t2_gain_vs_original"));
+            checkCell(table, row, "min_clearance_deg", method["channel"]["min_clearance_deg"]);
+            checkCell(table, row, "compute_ms",
+                      1000.0 * method["timing"]["compute_s"].get<double>());
+        }
+    }
+
+    void tableShowsTheGapToTheOptimum() {
+        ComparisonTable table;
+        table.setComparison(comparison());
+        const nlohmann::json report = bladeaxis::report::compareJson(comparison());
+        const auto& methods = report["methods"];
+        double optimumEnergy = 0.0;
+        for (const auto& method : methods) {
+            if (method["method"] == "optimal-qp") {
+                optimumEnergy = method["channel"]["theta_dd_energy"].get<double>();
+            }
+        }
+        QVERIFY(optimumEnergy > 0.0);
+        for (int row = 0; row < table.rowCount(); ++row) {
+            const double energy =
+                methods[static_cast<std::size_t>(row)]["channel"]["theta_dd_energy"].get<double>();
+            checkCell(table, row, "theta_dd_energy_ratio_to_optimal_qp", energy / optimumEnergy);
+        }
+    }
+
+    void quaternionRowNamesTheFairnessRulesSettings() {
+        ComparisonTable table;
+        table.setComparison(comparison());
+        int row = 0;
+        while (row < table.rowCount() && table.item(row, 0)->text() != "quaternion") {
+            ++row;
+        }
+        QVERIFY(row < table.rowCount());
+        const QString tooltip = table.item(row, 0)->toolTip();
+        QVERIFY(!comparison().quaternionFairness.empty());
+        for (const auto& entry : comparison().quaternionFairness) {
+            QVERIFY2(tooltip.contains(QString::fromStdString(entry.setting)), qPrintable(tooltip));
+        }
+    }
+
+    void ctrlCCopiesTheTableAsCsv() {
+        ComparisonTable table;
+        table.setComparison(comparison());
+        table.show();
+        table.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&table));
+        table.setFocus();
+        QApplication::clipboard()->clear();
+        QTest::keySequence(&table, QKeySequence::Copy);
+        const QStringList lines =
+            QApplication::clipboard()->text().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), table.rowCount() + 1);
+        QVERIFY(lines[1].startsWith(QStringLiteral("original,")));
+
+        table.setRangeSelected(QTableWidgetSelectionRange(1, 0, 2, 1), true);
+        const QStringList selected = table.toCsv().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(selected.size(), 3); // header and the two selected rows
+        QCOMPARE(selected[0].count(QLatin1Char(',')), 1);
+    }
+
+    void clearEmptiesTheTable() {
+        ComparisonTable table;
+        table.setComparison(comparison());
+        QVERIFY(table.rowCount() > 0);
+        table.clear();
+        QCOMPARE(table.rowCount(), 0);
+        QCOMPARE(table.columnOf(QStringLiteral("t1_s")), -1);
+    }
+
+    void plotsDrawEveryMethodAndHideOne() {
+        ProfilePlots plots;
+        plots.resize(1000, 700);
+        plots.setComparison(comparison());
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        QCOMPARE(static_cast<std::size_t>(plots.methods().size()), comparison().methods.size());
+        const QImage all = grabbed(plots, "comparison_plots.png");
+        QVERIFY(distinctColours(all) > 10);
+        for (const auto& method : comparison().methods) {
+            if (method.method != "original") { // the original is drawn in the text colour
+                const QColor colour =
+                    ProfilePlots::methodColour(QString::fromStdString(method.method), false);
+                QVERIFY2(pixelsNear(all, colour) > 100, method.method.c_str());
+            }
+        }
+
+        // Hiding a method through its legend checkbox removes its curves (its legend icon
+        // keeps the colour) and rescales.
+        const QColor best = ProfilePlots::methodColour(QStringLiteral("stheta-best"), false);
+        QCheckBox* box = nullptr;
+        for (QCheckBox* candidate : plots.findChildren<QCheckBox*>()) {
+            box = candidate->text() == QStringLiteral("stheta-best") ? candidate : box;
+        }
+        QVERIFY(box != nullptr);
+        box->click();
+        QVERIFY(!plots.isMethodVisible(QStringLiteral("stheta-best")));
+        const QImage hidden = grabbed(plots, "comparison_plots_hidden.png");
+        QVERIFY(hidden != all);
+        QVERIFY(pixelsNear(hidden, best) * 4 < pixelsNear(all, best));
+
+        // The public setter does the same and ticks the box again.
+        plots.setMethodVisible(QStringLiteral("stheta-best"), true);
+        QVERIFY(box->isChecked());
+        QCOMPARE(grabbed(plots, "comparison_plots_shown.png"), all);
+    }
+
+    void plotsFollowADarkPalette() {
+        ProfilePlots plots;
+        plots.resize(1000, 700);
+        plots.setPalette(darkPalette());
+        plots.setComparison(comparison());
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        const QImage image = grabbed(plots, "comparison_plots_dark.png");
+        QVERIFY(distinctColours(image) > 10);
+        const QColor corner = QColor::fromRgb(image.pixel(image.width() - 2, image.height() - 2));
+        QVERIFY(corner.lightness() < 128);
+        const QColor best = ProfilePlots::methodColour(QStringLiteral("stheta-best"), true);
+        QVERIFY(pixelsNear(image, best) > 100);
+    }
+
+    void plotsWithoutAComparisonShowTheJobsBeforeAndAfter() {
+        ProfilePlots plots;
+        plots.resize(800, 600);
+        plots.setProfiles(m_result->original, m_result->rescheduled->profile);
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        QCOMPARE(plots.methods(),
+                 QStringList({QStringLiteral("original"), QStringLiteral("re-scheduled")}));
+        const QImage image = grabbed(plots, "before_after_plots.png");
+        QVERIFY(distinctColours(image) > 10);
+        plots.clear();
+        QVERIFY(plots.methods().isEmpty());
+    }
+
+  private:
+    const bladeaxis::compare::Comparison& comparison() const { return *m_result->comparison; }
+
+    static void checkCell(const ComparisonTable& table, int row, const QString& key,
+                          const nlohmann::json& expected) {
+        const int column = table.columnOf(key);
+        QVERIFY2(column >= 0, qPrintable(key));
+        const QVariant value = table.item(row, column)->data(ComparisonTable::kValueRole);
+        if (expected.is_null()) { // the report has no figure: neither has the table
+            QVERIFY2(!value.isValid(), qPrintable(key));
+            return;
+        }
+        QVERIFY2(value.isValid(), qPrintable(key));
+        QVERIFY2(sameNumber(expected.get<double>(), value.toDouble()),
+                 qPrintable(QStringLiteral("%1 row %2: report %3, table %4")
+                                .arg(key)
+                                .arg(row)
+                                .arg(expected.get<double>(), 0, 'g', 17)
+                                .arg(value.toDouble(), 0, 'g', 17)));
+    }
+
+    std::optional<bladeaxis::job::JobResult> m_result;
+};
+
+QTEST_MAIN(ComparisonTest)
+#include "comparison_test.moc"

@@ -284,10 +284,12 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
     if (auto status = applyNumbers(raw, options); !status) {
         return std::unexpected(status.error());
     }
+    // The command line wins over the job file: a program given here replaces the file's demo.
     if (!raw.program.empty()) {
         options.job.program = raw.program;
+        options.job.demo = false;
     }
-    options.job.demo = raw.demo;
+    options.job.demo = options.job.demo || raw.demo;
     if (auto status = applyCad(raw, options); !status) {
         return std::unexpected(status.error());
     }
@@ -321,11 +323,12 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
         options.generateOutput = raw.generate;
         return options;
     }
-    if (raw.demo == !raw.program.empty()) {
+    if (raw.demo && !raw.program.empty()) {
+        return makeError(ErrorCode::InvalidArgument, "give either a program or --demo, not both");
+    }
+    if (!options.job.demo && options.job.program.empty()) {
         return makeError(ErrorCode::InvalidArgument,
-                         raw.demo
-                             ? "give either a program or --demo, not both"
-                             : "expected a program to analyse, --demo or --generate (see --help)");
+                         "expected a program to analyse, --demo, --job or --generate (see --help)");
     }
     return options;
 }

@@ -226,7 +226,8 @@ Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& ca
     context.analysis.toolRadius = context.toolRadius;
     compare::CompareOptions options;
     options.best = spec.parameters;
-    if (result.rescheduled) { // the job's schedule: same centres, same parameters
+    // The job's schedule: same centres, same parameters; an edited one is not the preset's.
+    if (result.rescheduled && spec.layerEdits.empty()) {
         options.bestSchedule = &result.rescheduled->schedule;
         options.bestScheduleSeconds = result.rescheduled->stageSeconds.schedule;
     }
@@ -254,6 +255,7 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     input.originalAxes = &result.axes;
     input.toolRadius = result.toolRadius.value_or(0.0);
     input.parameters = spec.parameters;
+    input.layerEdits = spec.layerEdits;
     input.analysis = spec.analysis;
     input.analysis.toolRadius = input.toolRadius;
     auto outcome = reschedule(input, cancel);

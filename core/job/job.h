@@ -29,7 +29,10 @@ struct JobSpec {
     bool compare = false;     // also run and evaluate every comparison method (`--compare`)
     bool sweepLimits = false; // with compare: machining times with the rotary limits x0.5 ... x2
     scheduling::ScheduleParameters parameters = scheduling::bestPreset();
-    std::string presetName = "best";     // recorded in the report; "custom" once edited
+    std::string presetName = "best"; // recorded in the report; "custom" once edited
+    // The engineer's edits of single layers (the GUI's S-theta editor), saved with the job and
+    // applied on every run; a key-point edit the layer's channel refuses fails the job.
+    std::vector<scheduling::LayerOverride> layerEdits;
     std::filesystem::path outputProgram; // the re-scheduled program; empty: not written
     CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)
     std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none

@@ -40,6 +40,9 @@ class JobReader {
     Result<double> positiveNumber(const Json& root, const char* key) const;
     Status parameters(const Json& object, JobSpec& spec) const;
     Status analysisOptions(const Json& root, JobSpec& spec) const;
+    Status layerEdits(const Json& list, JobSpec& spec) const;
+    Result<scheduling::LayerOverride> layerEdit(const Json& object) const;
+    Result<std::vector<Vec2>> keyPoints(const Json& list) const;
 
     std::string_view m_text;
     fs::path m_path;
@@ -109,6 +112,81 @@ Status JobReader::analysisOptions(const Json& root, JobSpec& spec) const {
     return {};
 }
 
+Result<std::vector<Vec2>> JobReader::keyPoints(const Json& list) const {
+    std::vector<Vec2> points;
+    if (!list.is_array()) {
+        return fail("key_points", "expected a list of [S mm, theta rad] pairs");
+    }
+    for (const Json& pair : list) {
+        if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number() || !pair[1].is_number()) {
+            return fail("key_points", "expected [S mm, theta rad], got " + pair.dump());
+        }
+        points.emplace_back(pair[0].get<double>(), pair[1].get<double>());
+    }
+    return points;
+}
+
+Result<scheduling::LayerOverride> JobReader::layerEdit(const Json& object) const {
+    scheduling::LayerOverride edit;
+    if (!object.is_object() || !object.contains("layer") ||
+        !object.at("layer").is_number_unsigned()) {
+        return fail("layer_edits", "expected objects with \"layer\": a layer number");
+    }
+    edit.layer = object.at("layer").get<std::size_t>();
+    if (object.contains("preset")) {
+        const Json& preset = object.at("preset");
+        if (!preset.is_string() || !presetParameters(preset.get<std::string>())) {
+            return fail("preset", "expected \"faithful\" or \"best\"");
+        }
+        edit.preset = presetParameters(preset.get<std::string>())->preset;
+    }
+    if (object.contains("margin_deg")) {
+        if (!object.at("margin_deg").is_number()) {
+            return fail("margin_deg", "expected a number of degrees");
+        }
+        edit.marginRad = units::degToRad(object.at("margin_deg").get<double>());
+    }
+    if (object.contains("eps_rule")) {
+        const std::string rule = object.at("eps_rule").is_string()
+                                     ? object.at("eps_rule").get<std::string>()
+                                     : std::string();
+        if (rule != "paper" && rule != "exact") {
+            return fail("eps_rule", "expected \"paper\" or \"exact\"");
+        }
+        edit.epsilonRule =
+            rule == "paper" ? scheduling::EpsilonRule::Paper : scheduling::EpsilonRule::Exact;
+    }
+    if (object.contains("lead_fraction")) {
+        if (!object.at("lead_fraction").is_number()) {
+            return fail("lead_fraction", "expected a number");
+        }
+        edit.leadFraction = object.at("lead_fraction").get<double>();
+    }
+    if (object.contains("key_points")) {
+        auto points = keyPoints(object.at("key_points"));
+        if (!points) {
+            return std::unexpected(points.error());
+        }
+        edit.keyPoints = std::move(*points);
+    }
+    return edit;
+}
+
+Status JobReader::layerEdits(const Json& list, JobSpec& spec) const {
+    if (!list.is_array()) {
+        return fail("layer_edits", "expected a list of layer edits");
+    }
+    spec.layerEdits.clear();
+    for (const Json& object : list) {
+        auto edit = layerEdit(object);
+        if (!edit) {
+            return std::unexpected(edit.error());
+        }
+        spec.layerEdits.push_back(std::move(*edit));
+    }
+    return {};
+}
+
 Status JobReader::read(const Json& root, JobSpec& spec) const {
     if (!root.is_object() || root.value("schema", "") != kSchema) {
         return fail("schema", std::string("expected \"schema\": \"") + kSchema + "\"");
@@ -146,7 +224,50 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
             return status;
         }
     }
+    if (root.contains("demo")) {
+        if (!root.at("demo").is_boolean()) {
+            return fail("demo", "expected true or false");
+        }
+        spec.demo = root.at("demo").get<bool>();
+    }
+    if (root.contains("layer_edits")) {
+        if (auto status = layerEdits(root.at("layer_edits"), spec); !status) {
+            return status;
+        }
+    }
     return analysisOptions(root, spec);
+}
+
+// Key points are written in rad with the shortest round-trip digits, so a saved edit re-runs
+// to the same program bit for bit.
+Json layerEditsJson(const std::vector<scheduling::LayerOverride>& edits) {
+    Json list = Json::array();
+    for (const scheduling::LayerOverride& edit : edits) {
+        Json object;
+        object["layer"] = edit.layer;
+        if (edit.preset) {
+            object["preset"] = *edit.preset == scheduling::Preset::Faithful ? "faithful" : "best";
+        }
+        if (edit.marginRad) {
+            object["margin_deg"] = units::radToDeg(*edit.marginRad);
+        }
+        if (edit.epsilonRule) {
+            object["eps_rule"] =
+                *edit.epsilonRule == scheduling::EpsilonRule::Paper ? "paper" : "exact";
+        }
+        if (edit.leadFraction) {
+            object["lead_fraction"] = *edit.leadFraction;
+        }
+        if (!edit.keyPoints.empty()) {
+            Json points = Json::array();
+            for (const Vec2& point : edit.keyPoints) {
+                points.push_back({point.x(), point.y()});
+            }
+            object["key_points"] = points;
+        }
+        list.push_back(object);
+    }
+    return list;
 }
 
 } // namespace
@@ -177,6 +298,9 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
     if (!spec.program.empty()) {
         json["program"] = relative(spec.program);
     }
+    if (spec.demo) {
+        json["demo"] = true;
+    }
     if (!spec.machineFile.empty()) {
         json["machine"] = relative(spec.machineFile);
     }
@@ -196,6 +320,9 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
         }
     }
     json["parameters"] = parameters;
+    if (!spec.layerEdits.empty()) {
+        json["layer_edits"] = layerEditsJson(spec.layerEdits);
+    }
     if (!spec.outputProgram.empty()) {
         json["output_program"] = relative(spec.outputProgram);
     }

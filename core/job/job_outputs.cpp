@@ -45,6 +45,13 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
     nlohmann::json json;
     if (spec != nullptr) {
         json["preset"] = spec->presetName;
+        if (!spec->layerEdits.empty()) { // a reviewer sees which layers an engineer changed
+            nlohmann::json edited = nlohmann::json::array();
+            for (const scheduling::LayerOverride& edit : spec->layerEdits) {
+                edited.push_back(edit.layer);
+            }
+            json["edited_layers"] = edited;
+        }
     }
     json["analysis"] = report::analysisJson(outcome.profile, outcome.constantFeed);
     json["reductions"] = report::reductionsJson(result.original, outcome.profile);

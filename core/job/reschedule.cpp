@@ -174,7 +174,8 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
             "the ball radius is not known: give --tool-radius (G-code does not state it)");
     }
     StageClock clock;
-    auto schedule = scheduling::schedule(scheduleInputOf(input), input.parameters, &cancel);
+    auto schedule =
+        scheduling::schedule(scheduleInputOf(input), input.parameters, &cancel, input.layerEdits);
     if (!schedule) {
         Error error = schedule.error();
         if (error.where.empty()) {

@@ -45,6 +45,7 @@ struct RescheduleInput {
     const std::vector<kinematics::MachineAxes>* originalAxes = nullptr; // per pass record
     double toolRadius = 0.0;
     scheduling::ScheduleParameters parameters;
+    std::vector<scheduling::LayerOverride> layerEdits; // the engineer's edits of single layers
     analysis::AxisProfileOptions analysis;
     // Both on in every job; the benchmarks switch them off to time read-schedule-write alone.
     bool verifyByRereading = true;

@@ -70,13 +70,14 @@ void checkEnds(LayerProblem& p, const AbsoluteLayer& a, double startAbs, double 
 } // namespace
 
 std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawChannel& channel,
-                                             const LayerSplit& split, double margin,
+                                             const LayerSplit& split,
+                                             std::span<const double> margins,
                                              double shortLengthMm) {
     const std::size_t count = split.layers.size();
     std::vector<AbsoluteLayer> absolute;
     absolute.reserve(count);
-    for (const LayerSpan& span : split.layers) {
-        absolute.push_back(absoluteLayer(path, channel, span, margin));
+    for (std::size_t k = 0; k < count; ++k) {
+        absolute.push_back(absoluteLayer(path, channel, split.layers[k], margins[k]));
     }
     // J_k for k >= 1: the base vector on layer k's hull, never above layer k-1's end hull [A].
     std::vector<double> junction(count + 1, 0.0);

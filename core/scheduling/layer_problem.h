@@ -7,6 +7,7 @@
 #include "core/scheduling/plane_path.h"
 #include "core/scheduling/schedule.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -24,10 +25,11 @@ struct LayerProblem {
     std::vector<std::string> warnings;
 };
 
-// Hulls per layer, junctions J_k = min(HI_k(0), HI_{k-1}(end)), free end values clamped into
-// the hull (and monotone), and the feasibility checks of §2.5 and §4.6.
+// Hulls per layer (margins: one per layer of the split), junctions J_k = min(HI_k(0),
+// HI_{k-1}(end)), free end values clamped into the hull (and monotone), and the feasibility checks
+// of §2.5 and §4.6.
 std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawChannel& channel,
-                                             const LayerSplit& split, double margin,
-                                             double shortLengthMm);
+                                             const LayerSplit& split,
+                                             std::span<const double> margins, double shortLengthMm);
 
 } // namespace bladeaxis::scheduling

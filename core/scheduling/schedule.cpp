@@ -4,6 +4,7 @@
 #include "core/base/units.h"
 #include "core/scheduling/channel.h"
 #include "core/scheduling/curvature_states.h"
+#include "core/scheduling/layer_edit.h"
 #include "core/scheduling/layer_problem.h"
 #include "core/scheduling/layer_scheduler.h"
 #include "core/scheduling/layers.h"
@@ -105,6 +106,7 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
 // Runs every layer; a parallel run writes each result into its own slot, so it is identical
 // to the serial run.
 std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems, const PlanePath& path,
+                                    std::span<const ScheduleParameters> layerParameters,
                                     const ScheduleParameters& p, const CancelToken* cancel) {
     std::vector<LayerOutcome> outcomes(problems.size());
     std::atomic<std::size_t> next{0};
@@ -118,7 +120,8 @@ std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems, const P
             for (std::size_t i = problems[k].span.first; i <= problems[k].span.last; ++i) {
                 inputs.push_back(path.firstInput[i]);
             }
-            outcomes[k] = scheduleLayer(std::move(problems[k]), p, std::move(inputs), k);
+            outcomes[k] =
+                scheduleLayer(std::move(problems[k]), layerParameters[k], std::move(inputs), k);
         }
     };
     unsigned threads =
@@ -133,6 +136,40 @@ std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems, const P
         thread.join();
     }
     return outcomes;
+}
+
+// Per layer: the job's parameters, or the layer's own when the engineer changed them.
+std::vector<ScheduleParameters> parametersPerLayer(const ScheduleParameters& job,
+                                                   std::span<const LayerOverride> overrides,
+                                                   std::size_t layerCount) {
+    std::vector<ScheduleParameters> perLayer(layerCount, job);
+    for (const LayerOverride& change : overrides) {
+        perLayer[change.layer] = layerParameters(job, change);
+    }
+    return perLayer;
+}
+
+// The engineer's key points replace the engine's polyline of their layer; a layer whose
+// channel refuses them (moved ends, not monotone, outside the hull) fails the whole schedule,
+// so a job never silently drops an edit.
+Status applyKeyPointEdits(std::vector<LayerOutcome>& outcomes,
+                          std::span<const LayerOverride> overrides,
+                          std::span<const ScheduleParameters> perLayer) {
+    for (const LayerOverride& change : overrides) {
+        if (change.keyPoints.empty()) {
+            continue;
+        }
+        LayerResult& layer = outcomes[change.layer].result;
+        Result<LayerResult> edited = resmoothLayer(layer, change.keyPoints, perLayer[change.layer]);
+        if (!edited) {
+            return makeError(ErrorCode::InvalidArgument,
+                             "the key points edited in layer " + std::to_string(change.layer) +
+                                 " no longer fit its channel: " + edited.error().message);
+        }
+        edited->seconds = layer.seconds;
+        layer = std::move(*edited);
+    }
+    return {};
 }
 
 void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput& input,
@@ -199,7 +236,8 @@ void addCheckWarnings(ScheduleResult& result) {
 } // namespace
 
 Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
-                                const CancelToken* cancel) {
+                                const CancelToken* cancel,
+                                std::span<const LayerOverride> overrides) {
     if (auto status = validateParameters(parameters); !status) {
         return std::unexpected(status.error());
     }
@@ -222,16 +260,29 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
     for (std::size_t b : stage->split.basePoints) {
         result.basePoints.push_back(path->firstInput[b]);
     }
-    std::vector<LayerProblem> problems =
-        buildLayerProblems(*path, stage->channel, stage->split, parameters.marginRad,
-                           4.0 * stage->tangents.chordLengthMm);
+    const std::size_t layerCount = stage->split.layers.size();
+    if (auto valid = validateOverrides(overrides, layerCount, parameters); !valid) {
+        return std::unexpected(valid.error());
+    }
+    const std::vector<ScheduleParameters> perLayer =
+        parametersPerLayer(parameters, overrides, layerCount);
+    std::vector<double> margins;
+    margins.reserve(layerCount);
+    for (const ScheduleParameters& layer : perLayer) {
+        margins.push_back(layer.marginRad);
+    }
+    std::vector<LayerProblem> problems = buildLayerProblems(
+        *path, stage->channel, stage->split, margins, 4.0 * stage->tangents.chordLengthMm);
     for (const LayerProblem& problem : problems) {
         result.warnings.insert(result.warnings.end(), problem.warnings.begin(),
                                problem.warnings.end());
     }
-    std::vector<LayerOutcome> outcomes = runLayers(problems, *path, parameters, cancel);
+    std::vector<LayerOutcome> outcomes = runLayers(problems, *path, perLayer, parameters, cancel);
     if (cancel != nullptr && cancel->isCancelled()) {
         return makeError(ErrorCode::Cancelled, "scheduling cancelled");
+    }
+    if (auto applied = applyKeyPointEdits(outcomes, overrides, perLayer); !applied) {
+        return std::unexpected(applied.error());
     }
     assemble(result, *path, input, outcomes);
     addCheckWarnings(result);

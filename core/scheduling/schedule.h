@@ -10,9 +10,11 @@
 #include "core/base/error.h"
 #include "core/base/progress.h"
 #include "core/geometry/vec.h"
+#include "core/scheduling/layer_overrides.h"
 #include "core/scheduling/reconstruction.h"
 #include "core/scheduling/schedule_parameters.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -73,10 +75,13 @@ struct ScheduleResult {
     std::vector<std::string> warnings;
 };
 
-// Errors: InvalidArgument (parameters, radius, sizes), Geometry (NaN, degenerate path),
+// Errors: InvalidArgument (parameters, radius, sizes, an override that does not fit the
+// layers or a key-point edit the layer's channel refuses), Geometry (NaN, degenerate path),
 // Cancelled. Infeasible layers are not errors: they keep the original orientation and are
-// flagged MonotoneInfeasible with a warning.
+// flagged MonotoneInfeasible with a warning. `overrides` change single layers (the engineer's
+// edits); every other layer is scheduled exactly as without them.
 Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
-                                const CancelToken* cancel = nullptr);
+                                const CancelToken* cancel = nullptr,
+                                std::span<const LayerOverride> overrides = {});
 
 } // namespace bladeaxis::scheduling

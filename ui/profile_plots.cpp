@@ -222,18 +222,24 @@ class PlotPainter {
         const double labelWidth = metrics.horizontalAdvance(QStringLiteral("0000.0")) * 1.5;
         const int maxTicks = std::max(2, static_cast<int>(plot.width() / labelWidth));
         const double step = niceStep(range.high - range.low, maxTicks);
+        const QString unit = ProfilePlots::tr("t [s]");
+        const double unitLeft = plot.right() - metrics.horizontalAdvance(unit) - 2.0;
         for (double value = 0.0; value <= range.high; value += step) {
             const double x =
                 plot.left() + (value - range.low) / (range.high - range.low) * plot.width();
             m_p.setPen(gridPen());
             m_p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-            m_p.setPen(m_palette.color(QPalette::Text));
-            const QRectF label(x - labelWidth / 2, plot.bottom() + 2, labelWidth, metrics.height());
-            m_p.drawText(label, Qt::AlignHCenter | Qt::AlignTop, tickLabel(value, step));
+            const QString text = tickLabel(value, step);
+            if (x + metrics.horizontalAdvance(text) / 2 + 4.0 < unitLeft) { // leaves the unit clear
+                m_p.setPen(m_palette.color(QPalette::Text));
+                m_p.drawText(
+                    QRectF(x - labelWidth / 2, plot.bottom() + 2, labelWidth, metrics.height()),
+                    Qt::AlignHCenter | Qt::AlignTop, text);
+            }
         }
-        m_p.drawText(
-            QRectF(plot.right() - labelWidth, plot.bottom() + 2, labelWidth, metrics.height()),
-            Qt::AlignRight | Qt::AlignTop, ProfilePlots::tr("t [s]"));
+        m_p.setPen(m_palette.color(QPalette::Text));
+        m_p.drawText(QRectF(unitLeft, plot.bottom() + 2, plot.right() - unitLeft, metrics.height()),
+                     Qt::AlignRight | Qt::AlignTop, unit);
     }
 
     QPainter& m_p;

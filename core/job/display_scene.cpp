@@ -346,7 +346,10 @@ DisplayScene buildDisplayScene(const DisplaySceneInput& input) {
         layer.sectionX = centres[(first + last) / 2].x();
         scene.layers.push_back(std::move(layer));
     }
-    const std::size_t glyphStride = strideFor(scene.record.size(), input.limits.maxGlyphs);
+    const std::size_t pointsPerLayer = scene.record.size() / scene.layers.size();
+    const std::size_t glyphStride =
+        std::max(strideFor(scene.record.size(), input.limits.maxGlyphs),
+                 strideFor(pointsPerLayer, input.limits.maxGlyphsPerLayer));
     for (std::size_t i = 0; i < scene.record.size(); i += glyphStride) {
         scene.glyphPoints.push_back(i);
     }

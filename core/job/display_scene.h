@@ -33,6 +33,7 @@ const char* toString(SurfaceSource source);
 struct DisplayLimits {
     std::size_t maxPathPoints = 200'000;     // drawn toolpath points
     std::size_t maxGlyphs = 2'000;           // tool-axis glyphs of each kind
+    std::size_t maxGlyphsPerLayer = 48;      // fewer on short programs: readable, not a brush
     std::size_t maxSurfaceVertices = 60'000; // of a reconstructed surface
     double cadDeflection = 0.05;             // mm, chord sag of the CAD tessellation
 };

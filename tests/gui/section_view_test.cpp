@@ -1,0 +1,104 @@
+// The section view on the demo job: the selected layer's blade section, ball-centre path and
+// both sets of tool axes are drawn; another layer draws differently; no layer draws nothing.
+
+#include "core/job/display_scene.h"
+#include "core/job/job.h"
+#include "ui/section_view.h"
+
+#include <QImage>
+#include <QTest>
+#include <set>
+
+namespace {
+
+bladeaxis::job::DisplayScene demoScene() {
+    bladeaxis::job::JobSpec spec;
+    spec.demo = true;
+    bladeaxis::NullProgressSink progress;
+    bladeaxis::CancelToken cancel;
+    auto job = bladeaxis::job::runJob(spec, progress, cancel);
+    if (!job) {
+        qFatal("demo job failed: %s", job.error().toString().c_str());
+    }
+    return bladeaxis::job::buildDisplayScene(*job);
+}
+
+std::size_t distinctColours(const QImage& image) {
+    std::set<QRgb> colours;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            colours.insert(image.pixel(x, y));
+        }
+    }
+    return colours.size();
+}
+
+std::size_t pixelsOf(const QImage& image, const QColor& colour) {
+    std::size_t count = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            count += image.pixelColor(x, y) == colour ? 1U : 0U;
+        }
+    }
+    return count;
+}
+
+// The section is filled with this colour (section_view.cpp), the axes are orange and blue.
+const QColor kSectionFill(200, 205, 215);
+const QColor kOriginal(235, 140, 40);
+const QColor kRescheduled(30, 160, 220);
+
+} // namespace
+
+class SectionViewTest final : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void initTestCase() {
+        m_scene = demoScene();
+        QVERIFY(m_scene.layers.size() >= 3);
+        m_view.resize(600, 500);
+    }
+
+    void withoutALayerTheViewAsksForOne() {
+        m_view.clearLayer();
+        const QImage image = m_view.grab().toImage();
+        QCOMPARE(pixelsOf(image, kSectionFill), std::size_t{0});
+    }
+
+    void selectedLayerShowsItsSectionCentresAndBothAxes() {
+        const int layer = static_cast<int>(m_scene.layers.size() / 2);
+        m_view.setLayer(m_scene, layer);
+        QCOMPARE(m_view.layer(), layer);
+        const QImage image = m_view.grab().toImage();
+        QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/section_view.png")));
+        QVERIFY(distinctColours(image) > 20);
+        const double sectionShare = static_cast<double>(pixelsOf(image, kSectionFill)) /
+                                    static_cast<double>(image.width() * image.height());
+        qInfo("section view: the blade section fills %.1f %% of the view", 100.0 * sectionShare);
+        QVERIFY(sectionShare > 0.02);
+        QVERIFY(pixelsOf(image, kOriginal) > 50);
+        QVERIFY(pixelsOf(image, kRescheduled) > 50);
+    }
+
+    void anotherLayerDrawsDifferently() {
+        m_view.setLayer(m_scene, 1);
+        const QImage first = m_view.grab().toImage();
+        m_view.setLayer(m_scene, static_cast<int>(m_scene.layers.size()) - 2);
+        const QImage other = m_view.grab().toImage();
+        QVERIFY(first != other);
+    }
+
+    void layerOutsideTheSceneClearsTheView() {
+        m_view.setLayer(m_scene, static_cast<int>(m_scene.layers.size()));
+        QCOMPARE(m_view.layer(), -1);
+        QCOMPARE(pixelsOf(m_view.grab().toImage(), kSectionFill), std::size_t{0});
+    }
+
+  private:
+    bladeaxis::job::DisplayScene m_scene;
+    bladeaxis::ui::SectionView m_view;
+};
+
+QTEST_MAIN(SectionViewTest)
+#include "section_view_test.moc"

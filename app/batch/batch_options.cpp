@@ -64,7 +64,7 @@ struct RawOptions {
     std::string cad;
     std::vector<std::string> cadTranslate;
     bool force = false;
-    std::string outputProgram, preset, jobFile;
+    std::string outputProgram, outputCl, preset, jobFile;
     std::map<std::string, std::string> parameters; // schema key -> text, when given
     std::uint64_t seed = 1;
     bool seedGiven = false;
@@ -87,6 +87,8 @@ void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
     auto* group = cli.add_option_group("Scheduling",
                                        "Parameters of the S-theta re-scheduling (spec Appendix A)");
     group->add_option("-o,--output", raw.outputProgram, "Write the re-scheduled program here");
+    group->add_option("--cl-output", raw.outputCl,
+                      "Also write the re-scheduled toolpath as CL data (APT) here");
     group->add_option("--preset", raw.preset, "faithful (the paper's rules) or best (default)")
         ->check(CLI::IsMember({"faithful", "best"}));
     group->add_option("--job", raw.jobFile,
@@ -201,12 +203,15 @@ Status applySchedule(const RawOptions& raw, BatchOptions& options) {
     if (!raw.outputProgram.empty()) {
         options.job.outputProgram = raw.outputProgram;
     }
+    if (!raw.outputCl.empty()) {
+        options.job.outputCl = raw.outputCl;
+    }
     options.job.reschedule = !raw.analyseOnly;
     options.job.compare = raw.compare || raw.sweep;
     options.job.sweepLimits = raw.sweep;
-    if (raw.analyseOnly && !options.job.outputProgram.empty()) {
+    if (raw.analyseOnly && (!options.job.outputProgram.empty() || !options.job.outputCl.empty())) {
         return makeError(ErrorCode::InvalidArgument,
-                         "--analyse-only and --output exclude each other");
+                         "--analyse-only and --output/--cl-output exclude each other");
     }
     return {};
 }

@@ -10,6 +10,7 @@
 #include "core/job/cad_check.h"
 #include "core/job/reschedule.h"
 #include "core/kinematics/machine_model.h"
+#include "core/report/schedule_report.h"
 #include "core/scheduling/schedule_parameters.h"
 
 #include <filesystem>
@@ -34,6 +35,7 @@ struct JobSpec {
     // applied on every run; a key-point edit the layer's channel refuses fails the job.
     std::vector<scheduling::LayerOverride> layerEdits;
     std::filesystem::path outputProgram; // the re-scheduled program; empty: not written
+    std::filesystem::path outputCl;      // the re-scheduled toolpath as CL data (APT); empty: none
     CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)
     std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none
 };
@@ -76,6 +78,14 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
 // layers.csv (and demo_blade.nc for a demo job; compare.json, compare.csv and report.html for a
 // comparison) into spec.outputDir, each atomically; refuses to overwrite the input program.
 Status writeJobOutputs(const JobSpec& spec, const JobResult& result);
+
+// Per layer of the re-scheduled pass: A reversals and peak A velocity/acceleration before and
+// after (the figures of report.json's layers); empty without a re-scheduling.
+std::vector<report::LayerMotion> layerMotionOf(const JobResult& result);
+
+// The whole toolpath with the re-scheduled cutting pass, as CL data (APT GOTO/x,y,z,i,j,k in
+// mm): what CAM verifiers and other post-processors read. Needs a re-scheduling.
+Result<std::string> rescheduledClText(const JobResult& result);
 
 // The content of report.json (also printed by `--batch --json`).
 std::string reportJsonText(const JobResult& result, const JobSpec* spec = nullptr);

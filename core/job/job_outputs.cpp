@@ -1,6 +1,7 @@
 #include "core/base/file_io.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
+#include "core/io/cl/apt_writer.h"
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
 #include "core/report/analysis_report.h"
@@ -39,6 +40,36 @@ std::vector<int> passLines(const JobResult& result) {
     }
     return lines;
 }
+
+} // namespace
+
+Result<std::string> rescheduledClText(const JobResult& result) {
+    if (!result.rescheduled) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "CL output needs re-scheduling; it was not run");
+    }
+    toolpath::Toolpath path = result.program.path();
+    std::ranges::copy(result.rescheduled->records,
+                      path.records.begin() + static_cast<std::ptrdiff_t>(result.pass.first));
+    io::cl::AptEmitOptions options;
+    options.toolRadius = result.toolRadius;
+    options.comments = {"re-scheduled by BladeAxis from " +
+                        fs::path(path.sourceFile).filename().string()};
+    return io::cl::emitApt(path, options);
+}
+
+std::vector<report::LayerMotion> layerMotionOf(const JobResult& result) {
+    if (!result.rescheduled) {
+        return {};
+    }
+    const std::vector<int> lines = passLines(result);
+    const RescheduleOutcome& outcome = *result.rescheduled;
+    const report::BeforeAfter data{&result.original, &outcome.profile, result.axes, outcome.axes,
+                                   lines};
+    return report::layerMotion(outcome.schedule, data);
+}
+
+namespace {
 
 nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
     const RescheduleOutcome& outcome = *result.rescheduled;
@@ -159,12 +190,33 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
 
 namespace {
 
+Status writeOutputCl(const JobSpec& spec, const JobResult& result,
+                     const std::vector<fs::path>& inputs) {
+    if (spec.outputCl.empty()) {
+        return {};
+    }
+    if (result.cadCheck && result.rescheduled) {
+        if (auto refused = refuseIfColliding(*result.cadCheck, result.program.path().sourceFile,
+                                             spec.cad.force);
+            !refused) {
+            return refused;
+        }
+    }
+    auto text = rescheduledClText(result);
+    if (!text) {
+        Error error = text.error();
+        error.where = {spec.outputCl.string()};
+        return std::unexpected(error);
+    }
+    return writeFileAtomically(spec.outputCl, *text, inputs);
+}
+
 // The re-scheduled program is written first: a report never describes a program that is not
 // on disk. The input is never a target (writeFileAtomically refuses it, also through links).
 Status writeOutputProgram(const JobSpec& spec, const JobResult& result,
                           const std::vector<fs::path>& inputs) {
     if (spec.outputProgram.empty()) {
-        return {};
+        return writeOutputCl(spec, result, inputs);
     }
     if (!result.rescheduled) {
         return makeError(ErrorCode::InvalidArgument,
@@ -178,7 +230,12 @@ Status writeOutputProgram(const JobSpec& spec, const JobResult& result,
             return refused;
         }
     }
-    return writeFileAtomically(spec.outputProgram, result.rescheduled->programText, inputs);
+    if (auto status =
+            writeFileAtomically(spec.outputProgram, result.rescheduled->programText, inputs);
+        !status) {
+        return status;
+    }
+    return writeOutputCl(spec, result, inputs);
 }
 
 // The demo blade as real CAD, written through OpenCASCADE, so the demo's outputs include the

@@ -90,12 +90,26 @@ std::string layersCsv(const scheduling::ScheduleResult& schedule, std::span<cons
     return csv;
 }
 
-nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const BeforeAfter& data) {
-    nlohmann::json layers = nlohmann::json::array();
-    for (std::size_t k = 0; k < schedule.layers.size(); ++k) {
-        const scheduling::LayerResult& layer = schedule.layers[k];
+std::vector<LayerMotion> layerMotion(const scheduling::ScheduleResult& schedule,
+                                     const BeforeAfter& data) {
+    std::vector<LayerMotion> motion;
+    motion.reserve(schedule.layers.size());
+    for (const scheduling::LayerResult& layer : schedule.layers) {
         const Peaks before = aPeaksWithin(*data.before, layer.first, layer.last);
         const Peaks after = aPeaksWithin(*data.after, layer.first, layer.last);
+        motion.push_back({reversalsWithin(data.axesBefore, layer.first, layer.last),
+                          reversalsWithin(data.axesAfter, layer.first, layer.last), before.velocity,
+                          after.velocity, before.acceleration, after.acceleration});
+    }
+    return motion;
+}
+
+nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const BeforeAfter& data) {
+    nlohmann::json layers = nlohmann::json::array();
+    const std::vector<LayerMotion> motion = layerMotion(schedule, data);
+    for (std::size_t k = 0; k < schedule.layers.size(); ++k) {
+        const scheduling::LayerResult& layer = schedule.layers[k];
+        const LayerMotion& m = motion[k];
         nlohmann::json json;
         json["index"] = k;
         json["status"] = statusesJson(layer);
@@ -104,12 +118,12 @@ nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const Befo
         json["last_line"] = layer.last < data.sourceLines.size() ? data.sourceLines[layer.last] : 0;
         json["samples"] = layer.s.size();
         json["length_mm"] = layer.s.empty() ? 0.0 : layer.s.back();
-        json["a_reversals_before"] = reversalsWithin(data.axesBefore, layer.first, layer.last);
-        json["a_reversals_after"] = reversalsWithin(data.axesAfter, layer.first, layer.last);
-        json["peak_a_velocity_deg_s_before"] = radToDeg(before.velocity);
-        json["peak_a_velocity_deg_s_after"] = radToDeg(after.velocity);
-        json["peak_a_acceleration_deg_s2_before"] = radToDeg(before.acceleration);
-        json["peak_a_acceleration_deg_s2_after"] = radToDeg(after.acceleration);
+        json["a_reversals_before"] = m.reversalsBefore;
+        json["a_reversals_after"] = m.reversalsAfter;
+        json["peak_a_velocity_deg_s_before"] = radToDeg(m.peakVelocityBefore);
+        json["peak_a_velocity_deg_s_after"] = radToDeg(m.peakVelocityAfter);
+        json["peak_a_acceleration_deg_s2_before"] = radToDeg(m.peakAccelerationBefore);
+        json["peak_a_acceleration_deg_s2_after"] = radToDeg(m.peakAccelerationAfter);
         json["min_channel_clearance_deg"] = radToDeg(layer.minClearance);
         json["lead_fraction"] = layer.leadFraction;
         json["key_points"] = layer.keyPoints.size();

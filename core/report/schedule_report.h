@@ -10,6 +10,7 @@
 
 #include <span>
 #include <string>
+#include <vector>
 
 namespace bladeaxis::report {
 
@@ -26,6 +27,16 @@ struct BeforeAfter {
     std::span<const kinematics::MachineAxes> axesAfter;
     std::span<const int> sourceLines; // per pass record
 };
+
+// The A-axis motion of one layer before and after (internal units: rad/s, rad/s^2): what the
+// GUI's layer list and report.json show per layer.
+struct LayerMotion {
+    int reversalsBefore = 0, reversalsAfter = 0;
+    double peakVelocityBefore = 0.0, peakVelocityAfter = 0.0;
+    double peakAccelerationBefore = 0.0, peakAccelerationAfter = 0.0;
+};
+std::vector<LayerMotion> layerMotion(const scheduling::ScheduleResult& schedule,
+                                     const BeforeAfter& data);
 
 // One object per layer: statuses, source lines, reversals and peak A velocity/acceleration
 // before and after, channel clearance, lead fraction, corners, peak theta'', compute time.

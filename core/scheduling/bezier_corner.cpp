@@ -79,35 +79,16 @@ double secondDerivativeAt(const CubicBezier& cubic, double t) {
 
 namespace {
 
-// One coordinate of a cubic in power form: c0 + t (c1 + t (c2 + t c3)).
-struct PowerCubic {
-    double c0, c1, c2, c3;
-
-    PowerCubic(double p0, double p1, double p2, double p3)
-        : c0(p0), c1(3.0 * (p1 - p0)), c2(3.0 * (p2 - 2.0 * p1 + p0)),
-          c3(p3 - p0 + 3.0 * (p1 - p2)) {}
-    double value(double t) const { return c0 + t * (c1 + t * (c2 + t * c3)); }
-    double first(double t) const { return c1 + t * (2.0 * c2 + 3.0 * t * c3); }
-    double second(double t) const { return 2.0 * c2 + 6.0 * t * c3; }
-};
-
-// Parameter t with x(t) = s on a cubic whose x is strictly increasing (spec §5.8). Newton on
-// the cubic x(t), safeguarded by a bisection bracket: a few steps reach the round-off level that
-// the 50-60 plain bisection steps of §5.8 reach, which matters because every CL sample inside a
-// corner span is evaluated this way.
-double parameterAt(const PowerCubic& x, double x3, double s, double guess) {
-    if (s <= x.c0) {
-        return 0.0;
-    }
-    if (s >= x3) {
-        return 1.0;
-    }
+// Parameter t with x(t) = s on a cubic whose x is strictly increasing (spec §5.8). Halley steps
+// on the cubic x(t), safeguarded by a bisection bracket: a few steps reach the round-off level
+// that the 50-60 plain bisection steps of §5.8 reach, which matters because every CL sample
+// inside a corner span is evaluated this way.
+double parameterAt(const PowerCubic& x, double x3, double s, double t) {
     // A residual at the round-off level of evaluating x(t) cannot be reduced further.
     const double converged =
         8.0 * std::numeric_limits<double>::epsilon() * (std::abs(x.c0) + std::abs(x3 - x.c0));
     double low = 0.0;
     double high = 1.0;
-    double t = guess > 0.0 && guess < 1.0 ? guess : (s - x.c0) / (x3 - x.c0);
     for (int step = 0; step < 100; ++step) {
         const double f = x.value(t) - s;
         if (std::abs(f) <= converged) {
@@ -139,15 +120,30 @@ double parameterAt(const PowerCubic& x, double x3, double s, double guess) {
 
 } // namespace
 
-GraphPoint evaluateCubic(const CubicBezier& cubic, double s, double& parameter) {
-    const auto& p = cubic.control;
-    const PowerCubic x(p[0].x(), p[1].x(), p[2].x(), p[3].x());
-    const PowerCubic y(p[0].y(), p[1].y(), p[2].y(), p[3].y());
-    const double t = parameterAt(x, p[3].x(), s, parameter);
-    const double dx = x.first(t);
-    const double dy = y.first(t);
+CubicGraph::CubicGraph(const CubicBezier& cubic)
+    : m_x(cubic.control[0].x(), cubic.control[1].x(), cubic.control[2].x(), cubic.control[3].x()),
+      m_y(cubic.control[0].y(), cubic.control[1].y(), cubic.control[2].y(), cubic.control[3].y()),
+      m_x3(cubic.control[3].x()) {}
+
+GraphPoint CubicGraph::at(double s, double& parameter) const {
+    double t = 0.0;
+    if (s <= m_x.c0) {
+        t = 0.0;
+    } else if (s >= m_x3) {
+        t = 1.0;
+    } else {
+        const double guess =
+            parameter > 0.0 && parameter < 1.0 ? parameter : (s - m_x.c0) / (m_x3 - m_x.c0);
+        t = parameterAt(m_x, m_x3, s, guess);
+    }
+    const double dx = m_x.first(t);
+    const double dy = m_y.first(t);
     parameter = t; // Newton from here is a tangent step towards the next abscissa
-    return {y.value(t), dy / dx, (dx * y.second(t) - dy * x.second(t)) / (dx * dx * dx)};
+    return {m_y.value(t), dy / dx, (dx * m_y.second(t) - dy * m_x.second(t)) / (dx * dx * dx)};
+}
+
+GraphPoint evaluateCubic(const CubicBezier& cubic, double s, double& parameter) {
+    return CubicGraph(cubic).at(s, parameter);
 }
 
 GraphPoint evaluateCubic(const CubicBezier& cubic, double s) {

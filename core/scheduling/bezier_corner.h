@@ -44,7 +44,33 @@ struct GraphPoint {
     double second = 0.0; // d2theta/dS2
 };
 
-// theta and its S-derivatives at abscissa s (clamped to the curve), t found by bisection on
+// One coordinate of a cubic in power form: c0 + t (c1 + t (c2 + t c3)).
+struct PowerCubic {
+    double c0, c1, c2, c3;
+
+    PowerCubic(double p0, double p1, double p2, double p3)
+        : c0(p0), c1(3.0 * (p1 - p0)), c2(3.0 * (p2 - 2.0 * p1 + p0)),
+          c3(p3 - p0 + 3.0 * (p1 - p2)) {}
+    double value(double t) const { return c0 + t * (c1 + t * (c2 + t * c3)); }
+    double first(double t) const { return c1 + t * (2.0 * c2 + 3.0 * t * c3); }
+    double second(double t) const { return 2.0 * c2 + 6.0 * t * c3; }
+};
+
+// A cubic as the graph theta(S), for walking samples in increasing S (spec §5.8): the power
+// forms are built once per cubic, and each sample's parameter starts from the previous one's.
+class CubicGraph {
+  public:
+    explicit CubicGraph(const CubicBezier& cubic);
+    // theta, theta', theta'' at abscissa s (clamped to the curve), starting from `parameter` if
+    // it lies in (0, 1); `parameter` becomes the parameter found.
+    GraphPoint at(double s, double& parameter) const;
+
+  private:
+    PowerCubic m_x, m_y;
+    double m_x3;
+};
+
+// theta and its S-derivatives at abscissa s (clamped to the curve), t found by Halley steps on
 // the strictly increasing x(t) (spec §5.8).
 GraphPoint evaluateCubic(const CubicBezier& cubic, double s);
 // The same starting from a parameter guess in (0, 1) (outside: none), which is replaced by the

@@ -7,9 +7,14 @@ namespace bladeaxis::scheduling {
 
 namespace {
 
-double lineAt(const PolyVertex& a, const PolyVertex& b, double s) {
-    return a.theta + (b.theta - a.theta) * (s - a.s) / (b.s - a.s);
-}
+// The segment a -> b as theta(S); the slope is divided once, not at every sample.
+struct Line {
+    double s0, theta0, slope;
+
+    Line(const PolyVertex& a, const PolyVertex& b)
+        : s0(a.s), theta0(a.theta), slope((b.theta - a.theta) / (b.s - a.s)) {}
+    double at(double s) const { return theta0 + slope * (s - s0); }
+};
 
 bool inside(double value, double lo, double hi, double tolerance) {
     return value >= lo - tolerance && value <= hi + tolerance;
@@ -23,8 +28,9 @@ std::vector<PolyVertex> keysFor(const PolyVertex& a, const PolyVertex& b,
     double worstLower = in.toleranceRad;
     std::optional<std::size_t> upper;
     std::optional<std::size_t> lower;
+    const Line guidance(a, b);
     for (std::size_t j = a.index + 1; j < b.index; ++j) {
-        const double g = lineAt(a, b, in.s[j]);
+        const double g = guidance.at(in.s[j]);
         if (in.hi[j] - g < worstUpper) {
             worstUpper = in.hi[j] - g;
             upper = j;
@@ -50,8 +56,9 @@ std::vector<PolyVertex> keysFor(const PolyVertex& a, const PolyVertex& b,
 }
 
 bool segmentFits(const PolyVertex& a, const PolyVertex& b, const LinearisationInput& in) {
+    const Line line(a, b);
     for (std::size_t j = a.index + 1; j < b.index; ++j) {
-        if (!inside(lineAt(a, b, in.s[j]), in.lo[j], in.hi[j], in.toleranceRad)) {
+        if (!inside(line.at(in.s[j]), in.lo[j], in.hi[j], in.toleranceRad)) {
             return false;
         }
     }
@@ -81,7 +88,9 @@ std::optional<PolyVertex> shiftedKey(const PolyVertex& u, const PolyVertex& key,
 // the vertices after `a` up to and including `b`, left to right.
 void refine(const PolyVertex& a, const PolyVertex& b, const LinearisationInput& in,
             Linearisation& out) {
-    std::vector<std::pair<PolyVertex, PolyVertex>> stack{{a, b}};
+    std::vector<std::pair<PolyVertex, PolyVertex>> stack;
+    stack.reserve(8); // one allocation for the usual depth (a few key points per layer)
+    stack.emplace_back(a, b);
     while (!stack.empty()) {
         const auto [u, w] = stack.back();
         stack.pop_back();
@@ -111,8 +120,9 @@ void refine(const PolyVertex& a, const PolyVertex& b, const LinearisationInput& 
 
 bool segmentInside(const PolyVertex& a, const PolyVertex& b, std::span<const double> s,
                    std::span<const double> lo, std::span<const double> hi, double toleranceRad) {
+    const Line line(a, b);
     for (std::size_t j = a.index + 1; j < b.index; ++j) {
-        if (!inside(lineAt(a, b, s[j]), lo[j], hi[j], toleranceRad)) {
+        if (!inside(line.at(s[j]), lo[j], hi[j], toleranceRad)) {
             return false;
         }
     }
@@ -189,6 +199,7 @@ Linearisation linearise(const LinearisationInput& in) {
         out.vertices = {start};
         return out;
     }
+    out.vertices.reserve(16); // one allocation for the usual polyline (4 fixed vertices + keys)
     out.vertices.push_back(start);
     PolyVertex rampStart = start;
     PolyVertex rampEnd = end;

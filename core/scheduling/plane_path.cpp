@@ -1,6 +1,7 @@
 #include "core/scheduling/plane_path.h"
 
 #include "core/base/tolerances.h"
+#include "core/scheduling/detail/fast_angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@ namespace bladeaxis::scheduling {
 
 double planeAngle(const Vec3& v, int traversalSign) {
     // r = +z, p = w x r = traversalSign * (x x z) = -traversalSign * y.
-    return std::atan2(-traversalSign * v.y(), v.z());
+    return detail::atan2(-traversalSign * v.y(), v.z());
 }
 
 Vec3 axisFromPlaneAngle(double angle, double tiltB0, int traversalSign) {
@@ -34,7 +35,7 @@ Status validateInput(std::span<const Vec3> centres, std::span<const Vec3> axes) 
             return makeError(ErrorCode::Geometry,
                              "non-finite centre or axis at point " + std::to_string(i));
         }
-        if (axes[i].norm() < tol::kZeroVector) {
+        if (axes[i].squaredNorm() < tol::kZeroVector * tol::kZeroVector) { // no square root
             return makeError(ErrorCode::Geometry, "zero tool axis at point " + std::to_string(i));
         }
     }
@@ -66,7 +67,8 @@ double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std
     std::vector<double> axial;
     axial.reserve(path.firstInput.size());
     for (std::size_t input : path.firstInput) {
-        axial.push_back(std::clamp(axes[input].normalized().x(), -1.0, 1.0));
+        // x / |V|: the axial component of V.normalized() without the other two divisions.
+        axial.push_back(std::clamp(axes[input].x() / axes[input].norm(), -1.0, 1.0));
     }
     const auto [low, high] = std::minmax_element(axial.begin(), axial.end());
     const double spread = std::asin(*high) - std::asin(*low);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace bladeaxis::scheduling {
 
@@ -80,6 +81,7 @@ SmoothedPath smoothCorners(std::span<const PolyVertex> vertices, std::span<const
     path.vertices.assign(vertices.begin(), vertices.end());
     path.form = settings.form;
     const ChannelView channel{s, rawMin, rawMax, settings.finalClearanceRad};
+    path.corners.reserve(vertices.size());
     for (std::size_t k = 1; k + 1 < vertices.size(); ++k) {
         const PolyVertex& a = vertices[k - 1];
         const PolyVertex& b = vertices[k];
@@ -110,8 +112,9 @@ PathSamples evaluateSmoothedPath(const SmoothedPath& path, std::span<const doubl
     const std::vector<PolyVertex>& v = path.vertices;
     std::size_t segment = 0;
     std::size_t corner = 0;
-    double parameter = -1.0; // warm start along the current cubic (none yet)
     const CubicBezier* cubic = nullptr;
+    std::optional<CubicGraph> graph; // of *cubic
+    double parameter = -1.0;         // warm start along the current cubic (none yet)
     for (std::size_t i = 0; i < s.size(); ++i) {
         while (corner < path.corners.size() &&
                (path.corners[corner].limitedBy == CornerLimit::None ||
@@ -125,9 +128,10 @@ PathSamples evaluateSmoothedPath(const SmoothedPath& path, std::span<const doubl
                 s[i] <= pair.first.control[3].x() ? &pair.first : &pair.second;
             if (current != cubic) {
                 cubic = current;
+                graph.emplace(*cubic);
                 parameter = -1.0;
             }
-            const GraphPoint p = evaluateCubic(*cubic, s[i], parameter);
+            const GraphPoint p = graph->at(s[i], parameter);
             out.theta[i] = p.value;
             out.dTheta[i] = p.first;
             out.ddTheta[i] = p.second;

@@ -14,15 +14,17 @@ namespace {
 
 constexpr double kDegenerateChordMm = 1e-9;
 
+// The square root is monotone, so the median of the squared chords gives the same element as
+// the median of the chords with one square root instead of one per chord.
 double medianChord(std::span<const Vec2> points) {
-    std::vector<double> chords;
-    chords.reserve(points.size());
+    std::vector<double> squared;
+    squared.reserve(points.size());
     for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-        chords.push_back((points[i + 1] - points[i]).norm());
+        squared.push_back((points[i + 1] - points[i]).squaredNorm());
     }
-    auto middle = chords.begin() + static_cast<long>(chords.size() / 2);
-    std::nth_element(chords.begin(), middle, chords.end());
-    return *middle;
+    auto middle = squared.begin() + static_cast<long>(squared.size() / 2);
+    std::nth_element(squared.begin(), middle, squared.end());
+    return std::sqrt(*middle);
 }
 
 struct Chord {
@@ -58,19 +60,35 @@ Chord chordFrom(std::span<const Vec2> points, std::size_t i, int step, double le
     const std::size_t n = points.size();
     const double surelyLonger = length * length * (1.0 + 1e-12);
     const double surelyShorter = length * length * (1.0 - 1e-12);
-    for (std::size_t j = i; step > 0 ? j + 1 < n : j > 0;) {
-        j = step > 0 ? j + 1 : j - 1;
-        const Vec2 chord = chordTo(points, i, j, step);
-        const double squared = chord.squaredNorm();
-        if (squared >= surelyLonger || (squared > surelyShorter && std::sqrt(squared) >= length)) {
-            return {chord, std::sqrt(squared), true, j};
+    // Scalar coordinates: the same squared norms as chord.squaredNorm(), without building each
+    // chord vector on the way.
+    const double xi = points[i].x();
+    const double yi = points[i].y();
+    const auto longEnough = [&](std::size_t j, double& squared) {
+        const double dx = points[j].x() - xi;
+        const double dy = points[j].y() - yi;
+        squared = dx * dx + dy * dy;
+        return squared >= surelyLonger || (squared > surelyShorter && std::sqrt(squared) >= length);
+    };
+    double squared = 0.0;
+    if (step > 0) {
+        for (std::size_t j = i + 1; j < n; ++j) {
+            if (longEnough(j, squared)) {
+                return {chordTo(points, i, j, step), std::sqrt(squared), true, j};
+            }
+        }
+    } else {
+        for (std::size_t j = i; j-- > 0;) {
+            if (longEnough(j, squared)) {
+                return {chordTo(points, i, j, step), std::sqrt(squared), true, j};
+            }
         }
     }
     return farthestChord(points, i, step);
 }
 
 double angleOf(const Vec2& v) {
-    return std::atan2(v.y(), v.x());
+    return detail::atan2(v.y(), v.x());
 }
 
 } // namespace

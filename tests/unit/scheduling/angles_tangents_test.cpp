@@ -1,6 +1,7 @@
 // Spec §10.1 rows "angles and unwrap", "tangents and turning", "curvature sign".
 #include "core/geometry/angles.h"
 #include "core/scheduling/curvature_states.h"
+#include "core/scheduling/detail/fast_angles.h"
 #include "core/scheduling/plane_path.h"
 #include "core/scheduling/tangents.h"
 #include "tests/unit/scheduling/synthetic_paths.h"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <numeric>
 #include <random>
@@ -34,6 +36,35 @@ TEST(PlaneAngle, RotationAboutTheAxisShiftsTheAngleInTheFeedSense) {
     const Vec3 rotated = rotationX(phi) * v;
     EXPECT_NEAR(geometry::wrapAngle(planeAngle(rotated, +1) - planeAngle(v, +1)), phi, 1e-12);
     EXPECT_NEAR(geometry::wrapAngle(planeAngle(rotated, -1) - planeAngle(v, -1)), -phi, 1e-12);
+}
+
+// The chord and axis angles use detail::atan2: it must agree with the library to a few ulp in
+// every quadrant, for tiny and huge ratios, and keep the signed-zero and degenerate cases.
+TEST(FastAtan2, AgreesWithTheLibraryToAFewUlpEverywhere) {
+    std::mt19937_64 random(2022);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> exponent(-12.0, 12.0);
+    double worst = 0.0;
+    for (int k = 0; k < 200000; ++k) {
+        const double y = unit(random) * std::pow(10.0, exponent(random));
+        const double x = unit(random) * std::pow(10.0, exponent(random));
+        const double expected = std::atan2(y, x);
+        const double ulp = std::nextafter(std::abs(expected), 4.0) - std::abs(expected);
+        worst = std::max(worst, std::abs(detail::atan2(y, x) - expected) / ulp);
+    }
+    EXPECT_LE(worst, 4.0);
+    for (const auto& [y, x] : {std::pair{0.0, -1.0},
+                               {-0.0, -1.0},
+                               {0.0, 0.0},
+                               {-0.0, -0.0},
+                               {1.0, 0.0},
+                               {-1.0, -0.0},
+                               {1.0, 1.0},
+                               {-2.0, -2.0}}) {
+        EXPECT_EQ(detail::atan2(y, x), std::atan2(y, x)) << y << ", " << x;
+    }
+    EXPECT_TRUE(std::isnan(detail::atan2(std::nan(""), 1.0)));
+    EXPECT_EQ(detail::atan2(1.0, std::numeric_limits<double>::infinity()), 0.0);
 }
 
 TEST(Unwrap, ReproducesAnySequenceWithStepsBelowPi) {

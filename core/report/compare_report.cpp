@@ -128,6 +128,17 @@ std::string describeFairness(const compare::FairnessEntry& entry) {
     return entry.metric + ": " + entry.setting + " (" + formatShortest(value) + " " + unit + ")";
 }
 
+// Which quaternion setting a reduction of `metric` is measured against (fairness rule).
+std::string fairnessNote(const compare::Comparison& comparison, std::string_view metric) {
+    for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
+        if (entry.metric == metric) {
+            return "against the best quaternion setting for this metric: " +
+                   describeFairness(entry);
+        }
+    }
+    return {};
+}
+
 std::string methodNote(const compare::Comparison& comparison, const MethodResult& method) {
     std::string note = "setting: " + method.setting;
     if (method.method == "quaternion" && !comparison.quaternionFairness.empty()) {
@@ -198,7 +209,7 @@ void addReductionColumns(const compare::Comparison& comparison,
                  const double value =
                      compare::reduction(referenceValue(comparison, reference, metric),
                                         compare::metricValue(method, metric));
-                 return numberCell(value, percent(value));
+                 return numberCell(value, percent(value), fairnessNote(comparison, metric));
              }});
         if (&reference == &original) {
             continue; // the reference already is the original

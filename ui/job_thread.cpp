@@ -31,6 +31,10 @@ JobThread::JobThread(job::JobSpec spec, QObject* parent)
 void JobThread::run() {
     SignalProgressSink sink(*this);
     m_result.emplace(job::runJob(m_spec, sink, m_cancel));
+    if (*m_result) {
+        sink.progress(1.0, "preparing the 3D view");
+        m_scene = job::buildDisplayScene(**m_result);
+    }
 }
 
 Result<job::JobResult> JobThread::takeResult() {

@@ -3,6 +3,7 @@
 // queued signal, so widgets are only touched there.
 
 #include "core/base/progress.h"
+#include "core/job/display_scene.h"
 #include "core/job/job.h"
 
 #include <QThread>
@@ -20,6 +21,8 @@ class JobThread final : public QThread {
     void requestCancel() { m_cancel.requestCancel(); }
     // Valid once finished() was emitted; moved out, so call once.
     Result<job::JobResult> takeResult();
+    // What the 3D and section views draw, built off the GUI thread with the result.
+    job::DisplayScene takeScene() { return std::move(m_scene); }
 
   signals:
     void progressed(double fraction, QString stage);
@@ -32,6 +35,7 @@ class JobThread final : public QThread {
     job::JobSpec m_spec;
     CancelToken m_cancel;
     std::optional<Result<job::JobResult>> m_result;
+    job::DisplayScene m_scene;
 };
 
 } // namespace bladeaxis::ui

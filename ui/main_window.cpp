@@ -1,52 +1,67 @@
 #include "ui/main_window.h"
 
+#include "core/base/units.h"
+#include "ui/comparison_table.h"
 #include "ui/job_thread.h"
+#include "ui/layer_settings_panel.h"
 #include "ui/profile_plots.h"
 #include "ui/s_theta_editor.h"
+#include "ui/section_view.h"
 #include "ui/toolpath_view.h"
 
-#include <QAction>
-#include <QApplication>
+#include <QCloseEvent>
 #include <QDoubleSpinBox>
-#include <QDragEnterEvent>
-#include <QDropEvent>
-#include <QFileDialog>
-#include <QFileInfo>
+#include <QFont>
 #include <QHeaderView>
-#include <QKeySequence>
 #include <QLabel>
-#include <QMenuBar>
 #include <QMessageBox>
-#include <QMimeData>
-#include <QPalette>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
-#include <QStyleFactory>
 #include <QTabWidget>
 #include <QTableWidget>
-#include <QToolBar>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <cmath>
-#include <numbers>
-#include <string>
 #include <utility>
 
 namespace bladeaxis::ui {
 namespace {
 
-constexpr int kMaxRecentFiles = 8;
-const char* const kRecentKey = "recentFiles";
+enum LayerColumn {
+    kLayerColumn,
+    kStatusColumn,
+    kEditColumn,
+    kReversalsBefore,
+    kReversalsAfter,
+    kPeakABefore,
+    kPeakAAfter,
+    kClearanceColumn,
+    kPeakThetaColumn,
+    kLayerColumns
+};
 
 QString layerStatusText(const scheduling::LayerResult& layer) {
     QStringList names;
     for (const scheduling::LayerStatus status : layer.flags) {
         names << QString::fromUtf8(scheduling::toString(status));
     }
-    return names.isEmpty() ? QStringLiteral("Ok") : names.join(QStringLiteral(", "));
+    return names.isEmpty() ? QStringLiteral("ok") : names.join(QStringLiteral(", "));
+}
+
+QString editText(const scheduling::LayerOverride* change) {
+    if (change == nullptr) {
+        return {};
+    }
+    const bool settings =
+        change->preset || change->marginRad || change->epsilonRule || change->leadFraction;
+    if (settings && !change->keyPoints.empty()) {
+        return QObject::tr("settings, key points");
+    }
+    return settings ? QObject::tr("settings") : QObject::tr("key points");
 }
 
 QTableWidgetItem* numberItem(double value, int decimals) {
@@ -55,47 +70,70 @@ QTableWidgetItem* numberItem(double value, int decimals) {
     return item;
 }
 
+// One undo step of the job: a layer's override before and after, and the key points the editor
+// shows at once for each (the job re-runs with the override in the background).
+class LayerEditCommand final : public QUndoCommand {
+  public:
+    LayerEditCommand(MainWindow& window, std::size_t layer,
+                     std::optional<scheduling::LayerOverride> before,
+                     std::optional<scheduling::LayerOverride> after,
+                     std::vector<Vec2> beforePreview, std::vector<Vec2> afterPreview,
+                     const QString& text)
+        : QUndoCommand(text), m_window(window), m_layer(layer), m_before(std::move(before)),
+          m_after(std::move(after)), m_beforePreview(std::move(beforePreview)),
+          m_afterPreview(std::move(afterPreview)) {}
+    void undo() override { m_window.setLayerOverride(m_layer, m_before, m_beforePreview); }
+    void redo() override { m_window.setLayerOverride(m_layer, m_after, m_afterPreview); }
+
+  private:
+    MainWindow& m_window;
+    std::size_t m_layer;
+    std::optional<scheduling::LayerOverride> m_before, m_after;
+    std::vector<Vec2> m_beforePreview, m_afterPreview;
+};
+
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(QStringLiteral("BladeAxis"));
     setAcceptDrops(true);
-    m_layers = new QTableWidget(0, 5, this);
-    m_layers->setHorizontalHeaderLabels({tr("Layer"), tr("Status"), tr("Samples"),
-                                         tr("Min clearance [mrad]"), tr("Peak θ'' [rad/mm²]")});
+    m_layers = new QTableWidget(0, kLayerColumns, this);
+    m_layers->setHorizontalHeaderLabels({tr("Layer"), tr("Status"), tr("Edited"), tr("Rev. before"),
+                                         tr("Rev. after"), tr("Peak A acc. before [°/s²]"),
+                                         tr("Peak A acc. after [°/s²]"), tr("Min clearance [mrad]"),
+                                         tr("Peak θ'' [rad/mm²]")});
     m_layers->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_layers->setSelectionMode(QAbstractItemView::SingleSelection);
     m_layers->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_layers->horizontalHeader()->setStretchLastSection(true);
-    m_layers->setToolTip(tr("Layers of the re-scheduled toolpath; selecting one selects it "
-                            "in every view"));
+    m_layers->verticalHeader()->setVisible(false);
+    m_layers->setToolTip(tr("Layers of the re-scheduled toolpath: status, A reversals and peak A "
+                            "acceleration before and after; selecting one selects it everywhere"));
     connect(m_layers, &QTableWidget::itemSelectionChanged, this,
             [this] { emit layerSelected(selectedLayer()); });
-    m_editor = new SThetaEditor(this);
     connect(this, &MainWindow::layerSelected, this, &MainWindow::showSelectedLayer);
+
+    auto* tabs = new QTabWidget(this);
+    tabs->addTab(buildEditorPage(), tr("S-θ editor"));
+    m_plots = new ProfilePlots(this);
+    tabs->addTab(m_plots, tr("Axis motion"));
+    m_comparison = new ComparisonTable(this);
+    tabs->addTab(m_comparison, tr("Comparison"));
+    tabs->addTab(build3dPage(), tr("3D view"));
     auto* splitter = new QSplitter(this);
     splitter->addWidget(m_layers);
-    m_plots = new ProfilePlots(this);
-    auto* tabs = new QTabWidget(this);
-    tabs->addTab(m_editor, tr("S-θ editor"));
-    tabs->addTab(m_plots, tr("Axis motion"));
-    auto* view3dPage = new QWidget(this);
-    auto* view3dLayout = new QVBoxLayout(view3dPage);
-    m_view3d = new ToolpathView(view3dPage);
-    m_toolSlider = new QSlider(Qt::Horizontal, view3dPage);
-    m_toolSlider->setToolTip(tr("Scrub along the toolpath: shows the tool at that point"));
-    m_toolSlider->setEnabled(false);
-    connect(m_toolSlider, &QSlider::valueChanged, this,
-            [this](int sample) { m_view3d->showToolAt(static_cast<std::size_t>(sample)); });
-    view3dLayout->addWidget(m_view3d, 1);
-    view3dLayout->addWidget(m_toolSlider);
-    tabs->addTab(view3dPage, tr("3D view"));
     splitter->addWidget(tabs);
     splitter->setStretchFactor(1, 2);
     setCentralWidget(splitter);
-    buildActions();
+
+    m_undo.setUndoLimit(500);
+    buildFileMenu();
+    buildEditMenu();
+    buildViewMenu();
+    buildToolBar();
     buildStatusBar();
-    resize(1000, 700);
+    resize(1200, 780);
+    restoreSettings();
 }
 
 MainWindow::~MainWindow() {
@@ -105,54 +143,41 @@ MainWindow::~MainWindow() {
     }
 }
 
-void MainWindow::buildActions() {
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    QAction* open = file->addAction(tr("&Open program…"), this, &MainWindow::openProgramDialog);
-    open->setShortcut(QKeySequence::Open);
-    open->setToolTip(tr("Open an NC program (G-code) or CL data (APT/CLSF) and re-schedule it"));
-    QAction* machine = file->addAction(tr("Open &machine…"), this, &MainWindow::openMachineDialog);
-    machine->setShortcut(QKeySequence(tr("Ctrl+M")));
-    machine->setToolTip(tr("Machine file (JSON); default: the built-in blade machine"));
-    QAction* demo = file->addAction(tr("Run &demo"), this, &MainWindow::runDemo);
-    demo->setShortcut(QKeySequence(tr("Ctrl+D")));
-    demo->setToolTip(tr("Re-schedule the built-in demo blade program"));
-    QAction* exportAction =
-        file->addAction(tr("&Export program…"), this, &MainWindow::exportProgramDialog);
-    exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
-    exportAction->setToolTip(tr("Write the re-scheduled program (refused if a check failed)"));
-    m_recentMenu = file->addMenu(tr("&Recent programs"));
-    file->addSeparator();
-    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
-    rebuildRecentMenu();
+QWidget* MainWindow::buildEditorPage() {
+    auto* page = new QWidget(this);
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_layerSettings = new LayerSettingsPanel(page);
+    connect(m_layerSettings, &LayerSettingsPanel::settingsChanged, this,
+            &MainWindow::onLayerSettingsChanged);
+    connect(m_layerSettings, &LayerSettingsPanel::resetRequested, this, &MainWindow::onLayerReset);
+    auto* split = new QSplitter(Qt::Horizontal, page);
+    m_editor = new SThetaEditor(split);
+    connect(m_editor, &SThetaEditor::keyPointsEdited, this, &MainWindow::onKeyPointsEdited);
+    m_section = new SectionView(split);
+    m_section->setToolTip(tr("The layer in its section plane: blade section, ball-centre path, "
+                             "original (grey) and re-scheduled tool axes"));
+    split->addWidget(m_editor);
+    split->addWidget(m_section);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    layout->addWidget(m_layerSettings);
+    layout->addWidget(split, 1);
+    return page;
+}
 
-    QMenu* view = menuBar()->addMenu(tr("&View"));
-    QAction* dark = view->addAction(tr("&Dark palette"));
-    dark->setCheckable(true);
-    dark->setShortcut(QKeySequence(tr("Ctrl+Shift+D")));
-    connect(dark, &QAction::toggled, this, &MainWindow::setDarkPalette);
-
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = m_editor->undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setShortcut(QKeySequence::Undo);
-    edit->addAction(undo);
-    QAction* redo = m_editor->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
-    edit->addAction(redo);
-
-    QToolBar* bar = addToolBar(tr("Job"));
-    bar->addAction(open);
-    bar->addAction(demo);
-    bar->addWidget(new QLabel(tr(" Tool radius: "), bar));
-    m_toolRadius = new QDoubleSpinBox(bar);
-    m_toolRadius->setRange(0.0, 100.0);
-    m_toolRadius->setDecimals(3);
-    m_toolRadius->setSuffix(tr(" mm"));
-    m_toolRadius->setSpecialValueText(tr("from file"));
-    m_toolRadius->setToolTip(tr("Ball radius R; 'from file' uses the radius the CL file states"));
-    bar->addWidget(m_toolRadius);
-    m_machineLabel = new QLabel(tr(" Machine: built-in"), bar);
-    bar->addWidget(m_machineLabel);
+QWidget* MainWindow::build3dPage() {
+    auto* page = new QWidget(this);
+    auto* layout = new QVBoxLayout(page);
+    m_view3d = new ToolpathView(page);
+    m_toolSlider = new QSlider(Qt::Horizontal, page);
+    m_toolSlider->setToolTip(tr("Scrub along the toolpath: shows the tool (ball and shank) there"));
+    m_toolSlider->setEnabled(false);
+    connect(m_toolSlider, &QSlider::valueChanged, this,
+            [this](int record) { m_view3d->showToolAt(static_cast<std::size_t>(record)); });
+    layout->addWidget(m_view3d, 1);
+    layout->addWidget(m_toolSlider);
+    return page;
 }
 
 void MainWindow::buildStatusBar() {
@@ -161,7 +186,8 @@ void MainWindow::buildStatusBar() {
     m_progress->setMaximumWidth(220);
     m_progress->setVisible(false);
     m_cancel = new QPushButton(tr("Cancel"), this);
-    m_cancel->setToolTip(tr("Stop the running job"));
+    m_cancel->setToolTip(tr("Stop the running job (Esc)"));
+    m_cancel->setShortcut(QKeySequence(Qt::Key_Escape));
     m_cancel->setVisible(false);
     connect(m_cancel, &QPushButton::clicked, this, [this] {
         if (m_thread != nullptr) {
@@ -176,33 +202,40 @@ void MainWindow::buildStatusBar() {
 void MainWindow::runDemo() {
     job::JobSpec spec;
     spec.demo = true;
-    startJob(std::move(spec));
+    m_undo.clear();
+    startJob(std::move(spec), false);
 }
 
 void MainWindow::runProgram(const QString& programPath) {
     job::JobSpec spec;
     spec.program = programPath.toStdString();
     rememberRecent(programPath);
-    startJob(std::move(spec));
+    m_undo.clear();
+    startJob(std::move(spec), false);
 }
 
-void MainWindow::setMachineFile(const QString& machinePath) {
-    m_machinePath = machinePath;
-    m_machineLabel->setText(tr(" Machine: %1").arg(QFileInfo(machinePath).fileName()));
-}
-
-void MainWindow::startJob(job::JobSpec spec) {
+void MainWindow::startJob(job::JobSpec spec, bool reapply) {
     if (m_thread != nullptr) {
         statusBar()->showMessage(tr("A job is already running"), 3000);
         return;
     }
-    if (!m_machinePath.isEmpty()) {
-        spec.machineFile = m_machinePath.toStdString();
+    if (!reapply) {
+        if (!m_machinePath.isEmpty() && spec.machineFile.empty()) {
+            spec.machineFile = m_machinePath.toStdString();
+        }
+        if (m_toolRadius->value() > 0.0 && !spec.toolRadius) {
+            spec.toolRadius = m_toolRadius->value();
+        }
+        spec.compare = m_compareAction->isChecked();
+        m_spec = spec;
     }
-    if (m_toolRadius->value() > 0.0) {
-        spec.toolRadius = m_toolRadius->value();
+    // Edits do not change the comparison (its methods schedule the preset's own layers): a
+    // re-run for an edit keeps the comparison it has and skips that work.
+    if (reapply) {
+        spec.compare = false;
     }
-    m_spec = spec;
+    m_keepSelection = selectedLayer();
+    m_threadIsReapply = reapply;
     m_thread = new JobThread(std::move(spec), this);
     connect(m_thread, &JobThread::progressed, this, [this](double fraction, const QString& stage) {
         m_progress->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
@@ -217,6 +250,8 @@ void MainWindow::startJob(job::JobSpec spec) {
 
 void MainWindow::onJobFinished() {
     Result<job::JobResult> outcome = m_thread->takeResult();
+    job::DisplayScene scene = m_thread->takeScene();
+    const bool reapply = m_threadIsReapply;
     m_thread->deleteLater();
     m_thread = nullptr;
     m_progress->setVisible(false);
@@ -227,53 +262,105 @@ void MainWindow::onJobFinished() {
             QMessageBox::warning(this, tr("BladeAxis"),
                                  QString::fromStdString(outcome.error().toString()));
         }
+        m_editor->setPending({});
         emit jobFinished(false);
         return;
     }
-    m_result = std::move(*outcome);
-    showLayers();
-    m_plots->setProfiles(m_result->original,
-                         m_result->rescheduled
-                             ? std::optional<analysis::AxisProfile>(m_result->rescheduled->profile)
-                             : std::nullopt);
-    if (m_result->rescheduled) {
-        m_view3d->setToolRadius(m_result->toolRadius.value_or(0.0));
-        m_view3d->setSchedule(m_result->rescheduled->schedule);
-        const auto samples = static_cast<int>(m_result->rescheduled->schedule.newTips.size());
-        m_toolSlider->setRange(0, std::max(samples - 1, 0));
-        m_toolSlider->setEnabled(samples > 0);
+    if (reapply && m_result && m_result->comparison && !outcome->comparison) {
+        outcome->comparison = std::move(m_result->comparison);
     }
-    statusBar()->showMessage(tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2));
+    m_result = std::move(*outcome);
+    showResult(std::move(scene));
+    statusBar()->showMessage(
+        reapply ? tr("Layer edits applied in %1 s").arg(m_result->seconds, 0, 'f', 2)
+                : tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2));
+    for (const std::string& warning : m_result->warnings) {
+        statusBar()->setToolTip(QString::fromStdString(warning));
+    }
+    if (m_reapplyQueued) {
+        m_reapplyQueued = false;
+        reapplyEdits();
+    }
     emit jobFinished(true);
 }
 
+void MainWindow::showResult(job::DisplayScene scene) {
+    m_scene = std::move(scene);
+    showLayers();
+    if (m_result->comparison) {
+        m_plots->setComparison(*m_result->comparison);
+        m_comparison->setComparison(*m_result->comparison);
+    } else {
+        m_plots->setProfiles(m_result->original, m_result->rescheduled
+                                                     ? std::optional(m_result->rescheduled->profile)
+                                                     : std::nullopt);
+        m_comparison->clear();
+    }
+    m_view3d->showScene(m_scene);
+    m_view3d->setToolRadius(m_result->toolRadius.value_or(0.0));
+    const auto records = static_cast<int>(m_result->pass.count);
+    m_toolSlider->setRange(0, std::max(records - 1, 0));
+    m_toolSlider->setEnabled(records > 0);
+    const int row = m_keepSelection >= 0 && m_keepSelection < m_layers->rowCount() ? m_keepSelection
+                    : m_layers->rowCount() > 0                                     ? 0
+                                                                                   : -1;
+    if (row >= 0) {
+        selectLayer(row);
+        showSelectedLayer(row); // also when the row was already selected
+    }
+}
+
 void MainWindow::showLayers() {
+    const QSignalBlocker block(m_layers);
     m_layers->setRowCount(0);
     if (!m_result || !m_result->rescheduled) {
         return;
     }
-    const auto& layers = m_result->rescheduled->schedule.layers;
-    m_layers->setRowCount(static_cast<int>(layers.size()));
-    for (std::size_t index = 0; index < layers.size(); ++index) {
-        const auto& layer = layers[index];
-        const int row = static_cast<int>(index);
-        m_layers->setItem(row, 0, numberItem(static_cast<double>(index), 0));
-        m_layers->setItem(row, 1, new QTableWidgetItem(layerStatusText(layer)));
-        m_layers->setItem(row, 2, numberItem(static_cast<double>(layer.s.size()), 0));
-        m_layers->setItem(row, 3, numberItem(layer.minClearance * 1000.0, 2));
-        m_layers->setItem(row, 4, numberItem(layer.peakSecondDerivative, 4));
+    const std::vector<report::LayerMotion> motion = job::layerMotionOf(*m_result);
+    m_layers->setRowCount(static_cast<int>(motion.size()));
+    for (int row = 0; row < m_layers->rowCount(); ++row) {
+        showLayerRow(row, motion[static_cast<std::size_t>(row)]);
     }
+    m_layers->resizeColumnsToContents();
+}
+
+void MainWindow::showLayerRow(int row, const report::LayerMotion& m) {
+    const auto& layer = m_result->rescheduled->schedule.layers[static_cast<std::size_t>(row)];
+    m_layers->setItem(row, kLayerColumn, numberItem(row, 0));
+    auto* status = new QTableWidgetItem(layerStatusText(layer));
+    if (scheduling::isFlagged(layer)) {
+        status->setForeground(QColor(200, 110, 0));
+    }
+    m_layers->setItem(row, kStatusColumn, status);
+    m_layers->setItem(row, kEditColumn,
+                      new QTableWidgetItem(editText(overrideOf(static_cast<std::size_t>(row)))));
+    m_layers->setItem(row, kReversalsBefore, numberItem(m.reversalsBefore, 0));
+    m_layers->setItem(row, kReversalsAfter, numberItem(m.reversalsAfter, 0));
+    m_layers->setItem(row, kPeakABefore, numberItem(units::radToDeg(m.peakAccelerationBefore), 1));
+    m_layers->setItem(row, kPeakAAfter, numberItem(units::radToDeg(m.peakAccelerationAfter), 1));
+    m_layers->setItem(row, kClearanceColumn, numberItem(layer.minClearance * 1000.0, 2));
+    m_layers->setItem(row, kPeakThetaColumn, numberItem(layer.peakSecondDerivative, 4));
 }
 
 void MainWindow::showSelectedLayer(int layer) {
     m_view3d->setSelectedLayer(layer);
-    if (!m_result || !m_result->rescheduled || layer < 0) {
+    if (!m_result || !m_result->rescheduled || layer < 0 ||
+        static_cast<std::size_t>(layer) >= m_result->rescheduled->schedule.layers.size()) {
         m_editor->clearLayer();
+        m_layerSettings->clearLayer();
+        m_section->clearLayer();
         return;
     }
-    const auto& layers = m_result->rescheduled->schedule.layers;
-    if (static_cast<std::size_t>(layer) < layers.size()) {
-        m_editor->setLayer(layers[static_cast<std::size_t>(layer)], m_spec.parameters);
+    const auto index = static_cast<std::size_t>(layer);
+    const scheduling::LayerOverride* change = overrideOf(index);
+    const scheduling::ScheduleParameters parameters =
+        change != nullptr ? scheduling::layerParameters(m_spec.parameters, *change)
+                          : m_spec.parameters;
+    m_editor->setLayer(m_result->rescheduled->schedule.layers[index], parameters);
+    m_layerSettings->setLayer(layer, change, m_spec.parameters);
+    m_section->setLayer(m_scene, layer);
+    if (editsPending()) {
+        m_editor->setPending(tr("Applying the layer edits…"));
     }
 }
 
@@ -288,107 +375,116 @@ void MainWindow::selectLayer(int layer) {
     }
 }
 
-void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
-    if (event->mimeData()->hasUrls()) {
-        event->acceptProposedAction();
+// --- Layer edits ----------------------------------------------------------------------------
+
+const scheduling::LayerOverride* MainWindow::overrideOf(std::size_t layer) const {
+    return scheduling::findOverride(m_spec.layerEdits, layer);
+}
+
+void MainWindow::setLayerOverride(std::size_t layer,
+                                  const std::optional<scheduling::LayerOverride>& change,
+                                  const std::vector<Vec2>& preview) {
+    auto& edits = m_spec.layerEdits;
+    std::erase_if(edits, [layer](const auto& edit) { return edit.layer == layer; });
+    if (change) {
+        const auto at =
+            std::ranges::lower_bound(edits, layer, {}, &scheduling::LayerOverride::layer);
+        edits.insert(at, *change);
+    }
+    if (static_cast<int>(layer) == selectedLayer() && !preview.empty()) {
+        m_editor->applyVertices(preview);
+    }
+    if (static_cast<int>(layer) < m_layers->rowCount()) {
+        m_layers->setItem(static_cast<int>(layer), kEditColumn,
+                          new QTableWidgetItem(editText(overrideOf(layer))));
+    }
+    requestReapply();
+}
+
+void MainWindow::pushLayerEdit(std::size_t layer, std::optional<scheduling::LayerOverride> after,
+                               std::vector<Vec2> beforePreview, std::vector<Vec2> afterPreview,
+                               const QString& description) {
+    const scheduling::LayerOverride* current = overrideOf(layer);
+    std::optional<scheduling::LayerOverride> before =
+        current != nullptr ? std::optional(*current) : std::nullopt;
+    if (before == after) {
+        return;
+    }
+    m_undo.push(new LayerEditCommand(*this, layer, std::move(before), std::move(after),
+                                     std::move(beforePreview), std::move(afterPreview),
+                                     tr("%1 (layer %2)").arg(description).arg(layer)));
+}
+
+void MainWindow::onKeyPointsEdited(const std::vector<Vec2>& before, const std::vector<Vec2>& after,
+                                   const QString& description) {
+    const int layer = selectedLayer();
+    if (layer < 0) {
+        return;
+    }
+    const auto index = static_cast<std::size_t>(layer);
+    scheduling::LayerOverride change;
+    if (const scheduling::LayerOverride* current = overrideOf(index)) {
+        change = *current;
+    }
+    change.layer = index;
+    change.keyPoints = after;
+    pushLayerEdit(index, change, before, after, description);
+}
+
+// New settings re-schedule the layer from scratch: its key-point edit, made in the old hull,
+// is dropped (undo brings it back).
+void MainWindow::onLayerSettingsChanged(int layer,
+                                        const std::optional<scheduling::LayerOverride>& settings) {
+    if (layer >= 0) {
+        pushLayerEdit(static_cast<std::size_t>(layer), settings, {}, {},
+                      tr("Change layer settings"));
     }
 }
 
-void MainWindow::dropEvent(QDropEvent* event) {
-    const QList<QUrl> urls = event->mimeData()->urls();
-    if (!urls.isEmpty() && urls.front().isLocalFile()) {
-        const QString path = urls.front().toLocalFile();
-        if (path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
-            setMachineFile(path);
-        } else {
-            runProgram(path);
+void MainWindow::onLayerReset(int layer) {
+    if (layer >= 0) {
+        pushLayerEdit(static_cast<std::size_t>(layer), std::nullopt, {}, {}, tr("Reset layer"));
+    }
+}
+
+void MainWindow::requestReapply() {
+    if (m_reapplyQueued) {
+        return;
+    }
+    m_reapplyQueued = true;
+    m_editor->setPending(tr("Applying the layer edits…"));
+    // Coalesces the steps of one user action (and a burst of undos) into one re-run.
+    QTimer::singleShot(0, this, [this] {
+        if (m_thread == nullptr && m_reapplyQueued) {
+            m_reapplyQueued = false;
+            reapplyEdits();
         }
-    }
+    });
 }
 
-void MainWindow::openProgramDialog() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open program"), QString(),
-        tr("Programs (*.nc *.ngc *.gcode *.tap *.cl *.apt *.cls);;All files (*)"));
-    if (!path.isEmpty()) {
-        runProgram(path);
+void MainWindow::reapplyEdits() {
+    if (!m_result) {
+        return;
     }
+    startJob(m_spec, true);
 }
 
-void MainWindow::openMachineDialog() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open machine"), QString(),
-                                                      tr("Machine files (*.json)"));
-    if (!path.isEmpty()) {
-        setMachineFile(path);
-    }
-}
-
-Status MainWindow::exportProgram(const QString& path) {
+Status MainWindow::refuseWhilePending() const {
     if (!m_result || !m_result->rescheduled) {
         return makeError(ErrorCode::InvalidArgument, "no re-scheduled program to export yet");
     }
-    job::JobSpec spec = m_spec;
-    spec.outputProgram = path.toStdString();
-    spec.outputDir.clear();
-    return job::writeJobOutputs(spec, *m_result);
+    if (editsPending()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "the job is still running with the latest edits; export when it is done");
+    }
+    return {};
 }
 
-void MainWindow::exportProgramDialog() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export program"));
-    if (path.isEmpty()) {
-        return;
-    }
-    const Status written = exportProgram(path);
-    if (!written) {
-        QMessageBox::warning(this, tr("Export refused"),
-                             QString::fromStdString(written.error().toString()));
-        return;
-    }
-    // Editor changes are a preview until they are applied to the whole job.
-    statusBar()->showMessage(
-        tr("Exported %1 (the job's schedule; editor changes not applied)").arg(path));
-}
-
-void MainWindow::setDarkPalette(bool dark) {
-    QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
-    if (!dark) {
-        QApplication::setPalette(QApplication::style()->standardPalette());
-        return;
-    }
-    QPalette palette;
-    palette.setColor(QPalette::Window, QColor(45, 45, 48));
-    palette.setColor(QPalette::WindowText, QColor(220, 220, 220));
-    palette.setColor(QPalette::Base, QColor(30, 30, 32));
-    palette.setColor(QPalette::AlternateBase, QColor(45, 45, 48));
-    palette.setColor(QPalette::Text, QColor(220, 220, 220));
-    palette.setColor(QPalette::Button, QColor(55, 55, 58));
-    palette.setColor(QPalette::ButtonText, QColor(220, 220, 220));
-    palette.setColor(QPalette::Highlight, QColor(42, 130, 218));
-    palette.setColor(QPalette::HighlightedText, Qt::white);
-    palette.setColor(QPalette::ToolTipBase, QColor(55, 55, 58));
-    palette.setColor(QPalette::ToolTipText, QColor(220, 220, 220));
-    QApplication::setPalette(palette);
-}
-
-void MainWindow::rememberRecent(const QString& path) {
+void MainWindow::closeEvent(QCloseEvent* event) {
     QSettings settings;
-    QStringList recent = settings.value(kRecentKey).toStringList();
-    recent.removeAll(path);
-    recent.prepend(path);
-    while (recent.size() > kMaxRecentFiles) {
-        recent.removeLast();
-    }
-    settings.setValue(kRecentKey, recent);
-    rebuildRecentMenu();
-}
-
-void MainWindow::rebuildRecentMenu() {
-    m_recentMenu->clear();
-    const QStringList recent = QSettings().value(kRecentKey).toStringList();
-    for (const QString& path : recent) {
-        m_recentMenu->addAction(path, this, [this, path] { runProgram(path); });
-    }
-    m_recentMenu->setEnabled(!recent.isEmpty());
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    QMainWindow::closeEvent(event);
 }
 
 } // namespace bladeaxis::ui

@@ -1,12 +1,19 @@
 #pragma once
-// The main window: choose a program (G-code or CL) with a machine file and tool radius, or the
-// built-in demo; run the job in the background; list the layers of the result.
+// The main window: choose a program (G-code or CL) with a machine file and tool radius, a saved
+// job, or the built-in demo; run the job in the background; review it (layer list, S-theta
+// editor with the layer's section, axis-motion plots, comparison table, 3D view); edit single
+// layers (every edit is one undo step of the job, and the job re-runs with it); export the
+// program, the CL data, the report and the job. The window computes nothing itself: it builds a
+// JobSpec and shows the JobResult of core/job.
 
+#include "core/job/display_scene.h"
 #include "core/job/job.h"
 
 #include <QMainWindow>
+#include <QUndoStack>
 #include <optional>
 
+class QAction;
 class QDoubleSpinBox;
 class QLabel;
 class QMenu;
@@ -17,8 +24,11 @@ class QTableWidget;
 
 namespace bladeaxis::ui {
 
+class ComparisonTable;
 class JobThread;
+class LayerSettingsPanel;
 class ProfilePlots;
+class SectionView;
 class SThetaEditor;
 class ToolpathView;
 
@@ -31,22 +41,39 @@ class MainWindow final : public QMainWindow {
 
     void runDemo();
     void runProgram(const QString& programPath);
+    // Reads a job file (docs/job-file.md), edits included, and runs it.
+    Status openJob(const QString& jobPath);
+    // Saves the current job, with the layer edits, as a job file.
+    Status saveJob(const QString& jobPath);
     void setMachineFile(const QString& machinePath);
     bool isRunning() const { return m_thread != nullptr; }
+    // True while the job re-runs (or will re-run) with edits the last result does not have.
+    bool editsPending() const { return m_thread != nullptr || m_reapplyQueued; }
     const job::JobSpec& spec() const { return m_spec; }
     // The last successful result; empty before the first job finishes.
     const std::optional<job::JobResult>& result() const { return m_result; }
+    QUndoStack* undoStack() { return &m_undo; }
     QTableWidget* layerTable() const { return m_layers; }
     SThetaEditor* editor() const { return m_editor; }
+    LayerSettingsPanel* layerSettings() const { return m_layerSettings; }
+    SectionView* sectionView() const { return m_section; }
     ProfilePlots* plots() const { return m_plots; }
+    ComparisonTable* comparisonTable() const { return m_comparison; }
     ToolpathView* view3d() const { return m_view3d; }
     QSlider* toolSlider() const { return m_toolSlider; }
     void setDarkPalette(bool dark);
     int selectedLayer() const;
-    // Writes the re-scheduled program of the last result exactly as `--batch -o` would (through
-    // core's writeJobOutputs, which refuses when a check failed).
-    Status exportProgram(const QString& path);
     void selectLayer(int layer);
+    // Write the re-scheduled program / CL data / report folder of the last result exactly as
+    // `--batch` would (through core's writeJobOutputs, which refuses when a check failed or the
+    // tool collides); refused while edits are still being applied.
+    Status exportProgram(const QString& path);
+    Status exportClData(const QString& path);
+    Status exportReport(const QString& folder);
+    // Sets (or with nullopt removes) the override of a layer, shows `preview` key points in the
+    // editor at once when the layer is shown, and re-runs the job. Used by the undo commands.
+    void setLayerOverride(std::size_t layer, const std::optional<scheduling::LayerOverride>& change,
+                          const std::vector<Vec2>& preview);
 
   signals:
     void jobFinished(bool succeeded);
@@ -55,27 +82,61 @@ class MainWindow final : public QMainWindow {
   protected:
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
+    void closeEvent(QCloseEvent* event) override;
 
   private:
-    void buildActions();
+    QWidget* buildEditorPage();
+    QWidget* build3dPage();
+    void buildFileMenu();
+    void buildEditMenu();
+    void buildViewMenu();
+    void buildToolBar();
     void buildStatusBar();
-    void startJob(job::JobSpec spec);
+    void restoreSettings();
+    void startJob(job::JobSpec spec, bool reapply);
     void onJobFinished();
+    void showResult(job::DisplayScene scene);
     void showLayers();
+    void showLayerRow(int row, const report::LayerMotion& motion);
     void showSelectedLayer(int layer);
+    void requestReapply();
+    void reapplyEdits();
+    void onKeyPointsEdited(const std::vector<Vec2>& before, const std::vector<Vec2>& after,
+                           const QString& description);
+    void onLayerSettingsChanged(int layer,
+                                const std::optional<scheduling::LayerOverride>& settings);
+    void onLayerReset(int layer);
+    void pushLayerEdit(std::size_t layer, std::optional<scheduling::LayerOverride> after,
+                       std::vector<Vec2> beforePreview, std::vector<Vec2> afterPreview,
+                       const QString& description);
+    const scheduling::LayerOverride* overrideOf(std::size_t layer) const;
+    Status refuseWhilePending() const;
     void rememberRecent(const QString& path);
     void rebuildRecentMenu();
     void openProgramDialog();
     void openMachineDialog();
+    void openJobDialog();
+    void saveJobDialog();
     void exportProgramDialog();
+    void exportClDialog();
+    void exportReportDialog();
+    void reportOutcome(const Status& status, const QString& done, const QString& refusedTitle);
 
     job::JobSpec m_spec;
     std::optional<job::JobResult> m_result;
+    job::DisplayScene m_scene;
     QString m_machinePath;
+    QUndoStack m_undo;
     JobThread* m_thread = nullptr;
+    bool m_threadIsReapply = false;
+    bool m_reapplyQueued = false;
+    int m_keepSelection = -1;
     QTableWidget* m_layers = nullptr;
     SThetaEditor* m_editor = nullptr;
+    LayerSettingsPanel* m_layerSettings = nullptr;
+    SectionView* m_section = nullptr;
     ProfilePlots* m_plots = nullptr;
+    ComparisonTable* m_comparison = nullptr;
     ToolpathView* m_view3d = nullptr;
     QSlider* m_toolSlider = nullptr;
     QDoubleSpinBox* m_toolRadius = nullptr;
@@ -83,6 +144,8 @@ class MainWindow final : public QMainWindow {
     QPushButton* m_cancel = nullptr;
     QLabel* m_machineLabel = nullptr;
     QMenu* m_recentMenu = nullptr;
+    QAction* m_compareAction = nullptr;
+    QAction* m_darkAction = nullptr;
 };
 
 } // namespace bladeaxis::ui

@@ -5,7 +5,6 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
-#include <QUndoCommand>
 #include <algorithm>
 #include <utility>
 
@@ -15,35 +14,21 @@ namespace {
 constexpr double kMargin = 30.0;
 constexpr double kPickRadius = 8.0;
 
-class EditKeyPoints final : public QUndoCommand {
-  public:
-    EditKeyPoints(SThetaEditor& editor, std::vector<Vec2> before, std::vector<Vec2> after,
-                  const QString& text)
-        : QUndoCommand(text), m_editor(editor), m_before(std::move(before)),
-          m_after(std::move(after)) {}
-    void undo() override { m_editor.applyVertices(m_before); }
-    void redo() override { m_editor.applyVertices(m_after); }
-
-  private:
-    SThetaEditor& m_editor;
-    std::vector<Vec2> m_before, m_after;
-};
-
 } // namespace
 
 SThetaEditor::SThetaEditor(QWidget* parent) : QWidget(parent) {
     setMinimumSize(320, 200);
     setMouseTracking(false);
     setToolTip(tr("Drag a key point to re-shape theta(S); double-click adds a key point, "
-                  "right-click deletes one. Ctrl+Z undoes."));
+                  "right-click deletes one. Ctrl+Z undoes. The job re-runs with the edit."));
 }
 
 void SThetaEditor::setLayer(const scheduling::LayerResult& layer,
                             const scheduling::ScheduleParameters& parameters) {
     m_layer = layer;
     m_parameters = parameters;
-    m_undo.clear();
     m_refusal.clear();
+    m_pending.clear();
     m_thetaLow = layer.thetaMin.empty() ? 0.0 : std::ranges::min(layer.thetaMin);
     m_thetaHigh = layer.thetaMax.empty() ? 1.0 : std::ranges::max(layer.thetaMax);
     if (m_thetaHigh <= m_thetaLow) {
@@ -54,7 +39,12 @@ void SThetaEditor::setLayer(const scheduling::LayerResult& layer,
 
 void SThetaEditor::clearLayer() {
     m_layer.reset();
-    m_undo.clear();
+    m_pending.clear();
+    update();
+}
+
+void SThetaEditor::setPending(const QString& message) {
+    m_pending = message;
     update();
 }
 
@@ -112,9 +102,9 @@ bool SThetaEditor::applyVertices(const std::vector<Vec2>& vertices) {
     return true;
 }
 
-void SThetaEditor::pushEdit(std::vector<Vec2> before, std::vector<Vec2> after,
-                            const QString& text) {
-    m_undo.push(new EditKeyPoints(*this, std::move(before), std::move(after), text));
+void SThetaEditor::finishEdit(std::vector<Vec2> before, std::vector<Vec2> after,
+                              const QString& text) {
+    emit keyPointsEdited(before, after, text);
 }
 
 void SThetaEditor::mousePressEvent(QMouseEvent* event) {
@@ -130,10 +120,8 @@ void SThetaEditor::mousePressEvent(QMouseEvent* event) {
         std::vector<Vec2> before = m_layer->polyline;
         std::vector<Vec2> after = before;
         after.erase(after.begin() + static_cast<std::ptrdiff_t>(*vertex));
-        if (scheduling::resmoothLayer(*m_layer, after, m_parameters)) {
-            pushEdit(std::move(before), std::move(after), tr("Delete key point"));
-        } else {
-            applyVertices(after); // shows the refusal
+        if (applyVertices(after)) { // else it shows the refusal
+            finishEdit(std::move(before), std::move(after), tr("Delete key point"));
         }
         return;
     }
@@ -158,8 +146,7 @@ void SThetaEditor::mouseReleaseEvent(QMouseEvent* event) {
     m_dragged.reset();
     if (m_layer->polyline != m_dragStart) {
         std::vector<Vec2> after = m_layer->polyline;
-        // The command's first redo re-applies `after`, which is already shown.
-        pushEdit(std::exchange(m_dragStart, {}), std::move(after), tr("Move key point"));
+        finishEdit(std::exchange(m_dragStart, {}), std::move(after), tr("Move key point"));
     }
 }
 
@@ -173,10 +160,8 @@ void SThetaEditor::mouseDoubleClickEvent(QMouseEvent* event) {
     const auto at = std::upper_bound(after.begin(), after.end(), point,
                                      [](const Vec2& a, const Vec2& b) { return a.x() < b.x(); });
     after.insert(at, point);
-    if (scheduling::resmoothLayer(*m_layer, after, m_parameters)) {
-        pushEdit(std::move(before), std::move(after), tr("Add key point"));
-    } else {
-        applyVertices(after);
+    if (applyVertices(after)) {
+        finishEdit(std::move(before), std::move(after), tr("Add key point"));
     }
 }
 
@@ -185,9 +170,17 @@ void SThetaEditor::paintEvent(QPaintEvent*) {
     painter.setRenderHint(QPainter::Antialiasing);
     painter.fillRect(rect(), palette().base());
     if (!m_layer || m_layer->s.empty()) {
+        painter.setPen(palette().text().color());
         painter.drawText(rect(), Qt::AlignCenter, tr("Select a layer"));
         return;
     }
+    paintBands(painter);
+    paintCurves(painter);
+    paintMessages(painter);
+}
+
+// Raw channel (blue) and monotone hull (green) as bands.
+void SThetaEditor::paintBands(QPainter& painter) const {
     const auto& l = *m_layer;
     auto bandOf = [&](const std::vector<double>& low, const std::vector<double>& high) {
         QPolygonF polygon;
@@ -199,6 +192,16 @@ void SThetaEditor::paintEvent(QPaintEvent*) {
         }
         return polygon;
     };
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(120, 160, 220, 70));
+    painter.drawPolygon(bandOf(l.thetaMin, l.thetaMax));
+    painter.setBrush(QColor(80, 180, 120, 90));
+    painter.drawPolygon(bandOf(l.lo, l.hi));
+}
+
+// Original theta(S) dashed, the polyline with its key points, the smoothed theta(S) in red.
+void SThetaEditor::paintCurves(QPainter& painter) const {
+    const auto& l = *m_layer;
     auto curveOf = [&](const std::vector<double>& theta) {
         QPolygonF polygon;
         for (std::size_t i = 0; i < l.s.size() && i < theta.size(); ++i) {
@@ -206,11 +209,6 @@ void SThetaEditor::paintEvent(QPaintEvent*) {
         }
         return polygon;
     };
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(120, 160, 220, 70));
-    painter.drawPolygon(bandOf(l.thetaMin, l.thetaMax));
-    painter.setBrush(QColor(80, 180, 120, 90));
-    painter.drawPolygon(bandOf(l.lo, l.hi));
     painter.setBrush(Qt::NoBrush);
     painter.setPen(QPen(QColor(150, 150, 150), 1.0, Qt::DashLine));
     painter.drawPolyline(curveOf(l.thetaOriginal));
@@ -226,11 +224,17 @@ void SThetaEditor::paintEvent(QPaintEvent*) {
     for (const QPointF& point : polyline) {
         painter.drawEllipse(point, 4.0, 4.0);
     }
+}
+
+void SThetaEditor::paintMessages(QPainter& painter) const {
+    painter.setBrush(Qt::NoBrush);
     if (!m_refusal.isEmpty()) {
         painter.setPen(QPen(Qt::red, 3.0));
-        painter.setBrush(Qt::NoBrush);
         painter.drawRect(rect().adjusted(1, 1, -2, -2));
         painter.drawText(QPointF(kMargin, kMargin - 8.0), tr("Refused: %1").arg(m_refusal));
+    } else if (!m_pending.isEmpty()) {
+        painter.setPen(palette().text().color());
+        painter.drawText(QPointF(kMargin, kMargin - 8.0), m_pending);
     }
 }
 

@@ -1,13 +1,14 @@
 #pragma once
 // The S-theta editor of one layer: raw channel and monotone hull as bands, the original
 // theta(S), the key points, the polyline and the smoothed theta(S). Dragging a key point
-// re-smooths the layer live through core's resmoothLayer; an edit the core refuses (not
-// monotone, outside the hull) is shown in red and not applied. Every edit is one undo step.
+// re-smooths the layer live through core's resmoothLayer (a preview); an edit the core refuses
+// (not monotone, outside the hull) is shown in red and not applied. A finished edit (drag
+// released, key point added or deleted) is published with keyPointsEdited; the main window
+// makes it one undo step of the job and re-runs the job with it.
 
 #include "core/scheduling/schedule.h"
 #include "core/scheduling/schedule_parameters.h"
 
-#include <QUndoStack>
 #include <QWidget>
 #include <optional>
 #include <vector>
@@ -24,15 +25,20 @@ class SThetaEditor final : public QWidget {
                   const scheduling::ScheduleParameters& parameters);
     void clearLayer();
     const std::optional<scheduling::LayerResult>& layer() const { return m_layer; }
-    QUndoStack* undoStack() { return &m_undo; }
     // Widget position of polyline vertex `index` (for tests and tooltips).
     QPointF vertexPosition(std::size_t index) const;
     QString refusal() const { return m_refusal; }
     // Re-smooths with these vertices; false (and the reason in refusal()) when refused.
     bool applyVertices(const std::vector<Vec2>& vertices);
+    // Shown while the job re-runs with changed layer settings, which the editor cannot preview.
+    void setPending(const QString& message);
 
   signals:
+    // Every accepted re-smoothing, also during a drag.
     void layerEdited();
+    // A finished edit: the polyline before and after (S, theta relative to the layer).
+    void keyPointsEdited(const std::vector<Vec2>& before, const std::vector<Vec2>& after,
+                         const QString& description);
 
   protected:
     void paintEvent(QPaintEvent* event) override;
@@ -45,7 +51,10 @@ class SThetaEditor final : public QWidget {
     QPointF toWidget(double s, double theta) const;
     Vec2 fromWidget(QPointF point) const;
     std::optional<std::size_t> vertexNear(QPointF point) const;
-    void pushEdit(std::vector<Vec2> before, std::vector<Vec2> after, const QString& text);
+    void finishEdit(std::vector<Vec2> before, std::vector<Vec2> after, const QString& text);
+    void paintBands(QPainter& painter) const;
+    void paintCurves(QPainter& painter) const;
+    void paintMessages(QPainter& painter) const;
 
     std::optional<scheduling::LayerResult> m_layer;
     scheduling::ScheduleParameters m_parameters;
@@ -53,7 +62,7 @@ class SThetaEditor final : public QWidget {
     std::optional<std::size_t> m_dragged;
     std::vector<Vec2> m_dragStart;
     QString m_refusal;
-    QUndoStack m_undo;
+    QString m_pending;
 };
 
 } // namespace bladeaxis::ui

@@ -1,20 +1,32 @@
 // The main window on the demo job: the layer list shows the result's layers, selection is
-// published, and a screenshot of the window is not blank.
+// published, key-point and settings edits become undoable job edits that re-run the job, the
+// exports equal the batch front end's, and screenshots are not blank.
 
 #include "app/batch/batch_runner.h"
+#include "core/io/program.h"
+#include "core/job/job_file.h"
+#include "ui/comparison_table.h"
+#include "ui/layer_settings_panel.h"
 #include "ui/main_window.h"
 #include "ui/profile_plots.h"
 #include "ui/s_theta_editor.h"
 #include "ui/toolpath_view.h"
 
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QImage>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
@@ -47,61 +59,95 @@ class MainWindowTest final : public QObject {
 
   private slots:
     void initTestCase() {
-        m_window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&m_window));
-        QSignalSpy finished(&m_window, &bladeaxis::ui::MainWindow::jobFinished);
-        m_window.runDemo();
-        QVERIFY(m_window.isRunning());
+        QStandardPaths::setTestModeEnabled(true); // settings of the test, not the user's
+        m_window = std::make_unique<bladeaxis::ui::MainWindow>();
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        m_window->runDemo();
+        QVERIFY(m_window->isRunning());
         QVERIFY(finished.wait(kJobTimeoutMs));
         QCOMPARE(finished.front().front().toBool(), true);
     }
 
     void layerListShowsEveryLayerOfTheResult() {
-        QVERIFY(m_window.result().has_value());
-        QVERIFY(m_window.result()->rescheduled.has_value());
-        const auto layerCount = m_window.result()->rescheduled->schedule.layers.size();
+        QVERIFY(m_window->result().has_value());
+        QVERIFY(m_window->result()->rescheduled.has_value());
+        const auto layerCount = m_window->result()->rescheduled->schedule.layers.size();
         QVERIFY(layerCount > 0);
-        QCOMPARE(static_cast<std::size_t>(m_window.layerTable()->rowCount()), layerCount);
+        QCOMPARE(static_cast<std::size_t>(m_window->layerTable()->rowCount()), layerCount);
     }
 
     void selectingALayerPublishesIt() {
-        QSignalSpy selected(&m_window, &bladeaxis::ui::MainWindow::layerSelected);
-        const int target = m_window.layerTable()->rowCount() / 2;
-        m_window.selectLayer(target);
-        QCOMPARE(m_window.selectedLayer(), target);
+        QSignalSpy selected(m_window.get(), &bladeaxis::ui::MainWindow::layerSelected);
+        const int target = m_window->layerTable()->rowCount() / 2;
+        m_window->selectLayer(target);
+        QCOMPARE(m_window->selectedLayer(), target);
         QVERIFY(!selected.isEmpty());
         QCOMPARE(selected.back().front().toInt(), target);
     }
 
-    void draggingAKeyPointReSmoothsInsideTheChannelAndUndoes() {
-        const auto& layers = m_window.result()->rescheduled->schedule.layers;
-        int target = -1;
-        for (std::size_t i = 0; i < layers.size() && target < 0; ++i) {
-            if (layers[i].polyline.size() >= 3) {
-                target = static_cast<int>(i);
-            }
+    void layerListShowsReversalsBeforeAndNoneAfter() {
+        const QTableWidget* table = m_window->layerTable();
+        const int before = headerColumn(table, "Rev. before");
+        const int after = headerColumn(table, "Rev. after");
+        QVERIFY(before >= 0 && after >= 0);
+        int reversalsBefore = 0;
+        for (int row = 0; row < table->rowCount(); ++row) {
+            reversalsBefore += table->item(row, before)->text().toInt();
+            QCOMPARE(table->item(row, after)->text().toInt(), 0);
         }
+        QVERIFY(reversalsBefore > 0);
+    }
+
+    void comparisonRunsWithTheJobAndFillsTheTable() {
+        QVERIFY(m_window->result()->comparison.has_value());
+        QCOMPARE(static_cast<std::size_t>(m_window->comparisonTable()->rowCount()),
+                 m_window->result()->comparison->methods.size());
+    }
+
+    void exportedProgramIsByteIdenticalToTheBatchExport() {
+        const std::string gui = BLADEAXIS_GUI_OUTPUT_DIR "/gui_demo.nc";
+        const std::string batch = BLADEAXIS_GUI_OUTPUT_DIR "/batch_demo.nc";
+        std::remove(gui.c_str());
+        std::remove(batch.c_str());
+        const bladeaxis::Status written = m_window->exportProgram(QString::fromStdString(gui));
+        QVERIFY2(written.has_value(), written ? "" : written.error().toString().c_str());
+        std::ostringstream out, err;
+        const int exitCode = bladeaxis::app::runBatchCommandLine(
+            {"bladeaxis", "--batch", "--demo", "--quiet", "-o", batch}, out, err);
+        QVERIFY2(exitCode == 0, err.str().c_str());
+        const std::string guiBytes = fileBytes(gui);
+        QVERIFY(!guiBytes.empty());
+        QVERIFY(guiBytes == fileBytes(batch));
+        m_unedited = guiBytes;
+    }
+
+    void clDataAndReportExport() {
+        const QString cl = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/gui_demo.cl");
+        const bladeaxis::Status written = m_window->exportClData(cl);
+        QVERIFY2(written.has_value(), written ? "" : written.error().toString().c_str());
+        const std::string text = fileBytes(cl.toStdString());
+        QVERIFY(text.starts_with("PARTNO"));
+        const QString folder = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/gui_report");
+        QDir(folder).removeRecursively();
+        const bladeaxis::Status report = m_window->exportReport(folder);
+        QVERIFY2(report.has_value(), report ? "" : report.error().toString().c_str());
+        for (const char* file : {"report.json", "layers.csv", "axes.csv", "report.html"}) {
+            QVERIFY2(QFileInfo::exists(folder + "/" + file), file);
+        }
+    }
+
+    void draggingAKeyPointEditsTheJobUndoablyAndBatchRerunsIt() {
+        const int target = layerWithInteriorKeyPoint();
         if (target < 0) {
             QSKIP("the demo has no layer with an interior key point");
         }
-        m_window.selectLayer(target);
-        bladeaxis::ui::SThetaEditor* editor = m_window.editor();
+        m_window->selectLayer(target);
+        bladeaxis::ui::SThetaEditor* editor = m_window->editor();
         QVERIFY(editor->layer().has_value());
         const std::vector<double> before = editor->layer()->theta;
-        bool moved = false;
-        // The hull may be tight on one side: try small drags up and down.
-        for (const int dy : {6, -6, 3, -3, 12, -12}) {
-            const QPoint start = editor->vertexPosition(1).toPoint();
-            QTest::mousePress(editor, Qt::LeftButton, {}, start);
-            QTest::mouseMove(editor, start + QPoint(0, dy / 2));
-            QTest::mouseMove(editor, start + QPoint(0, dy));
-            QTest::mouseRelease(editor, Qt::LeftButton, {}, start + QPoint(0, dy));
-            if (editor->layer()->theta != before) {
-                moved = true;
-                break;
-            }
-        }
-        QVERIFY(moved);
+        QVERIFY(dragFirstInteriorKeyPoint(*editor, before));
         const auto& edited = *editor->layer();
         const double direction = edited.theta.back() >= edited.theta.front() ? 1.0 : -1.0;
         for (std::size_t i = 0; i < edited.theta.size(); ++i) {
@@ -111,51 +157,92 @@ class MainWindowTest final : public QObject {
                 QVERIFY((edited.theta[i] - edited.theta[i - 1]) * direction >= -1e-9);
             }
         }
-        QCOMPARE(editor->undoStack()->count(), 1);
+        QCOMPARE(m_window->undoStack()->count(), 1);
         const std::vector<double> after = edited.theta;
-        editor->undoStack()->undo();
-        QVERIFY(editor->layer()->theta == before);
-        editor->undoStack()->redo();
-        QVERIFY(editor->layer()->theta == after);
-    }
+        const std::vector<bladeaxis::Vec2> afterKeys = edited.polyline;
 
-    void exportedProgramIsByteIdenticalToTheBatchExport() {
-        const std::string gui = BLADEAXIS_GUI_OUTPUT_DIR "/gui_demo.nc";
-        const std::string batch = BLADEAXIS_GUI_OUTPUT_DIR "/batch_demo.nc";
-        std::remove(gui.c_str());
+        // The job re-runs with the edit: its program changes, and the batch front end running
+        // the saved job writes the same bytes.
+        QVERIFY(waitForEdits());
+        const auto& layer = m_window->result()->rescheduled->schedule.layers[target];
+        QVERIFY(layer.polyline == afterKeys);
+        QVERIFY(m_window->result()->rescheduled->schedule.check.reversals == 0);
+        QCOMPARE(m_window->selectedLayer(), target);
+        const std::string gui = BLADEAXIS_GUI_OUTPUT_DIR "/gui_edited.nc";
+        const std::string batch = BLADEAXIS_GUI_OUTPUT_DIR "/batch_edited.nc";
+        const QString jobFile = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/edited_job.json");
         std::remove(batch.c_str());
-        const bladeaxis::Status written = m_window.exportProgram(QString::fromStdString(gui));
-        QVERIFY2(written.has_value(), written ? "" : written.error().toString().c_str());
+        QVERIFY(m_window->exportProgram(QString::fromStdString(gui)).has_value());
+        QVERIFY(m_window->saveJob(jobFile).has_value());
         std::ostringstream out, err;
         const int exitCode = bladeaxis::app::runBatchCommandLine(
-            {"bladeaxis", "--batch", "--demo", "--quiet", "-o", batch}, out, err);
+            {"bladeaxis", "--batch", "--quiet", "--job", jobFile.toStdString(), "-o", batch}, out,
+            err);
         QVERIFY2(exitCode == 0, err.str().c_str());
         const std::string guiBytes = fileBytes(gui);
-        QVERIFY(!guiBytes.empty());
+        QVERIFY(guiBytes != m_unedited);
         QVERIFY(guiBytes == fileBytes(batch));
+        // Re-read the exported program: every record of the input is there.
+        auto machine = bladeaxis::job::loadMachine(m_window->spec());
+        QVERIFY(machine.has_value());
+        auto reread = bladeaxis::io::loadProgram(gui, *machine);
+        QVERIFY2(reread.has_value(), reread ? "" : reread.error().toString().c_str());
+        QCOMPARE(reread->path().records.size(), m_window->result()->program.path().records.size());
+
+        // Undo shows the old curve at once and re-runs to the unedited program; redo again.
+        m_window->undoStack()->undo();
+        QVERIFY(editor->layer()->theta == before);
+        QVERIFY(waitForEdits());
+        QVERIFY(m_window->spec().layerEdits.empty());
+        QVERIFY(m_window->result()->rescheduled->programText == m_unedited);
+        m_window->undoStack()->redo();
+        QVERIFY(editor->layer()->theta == after);
+        QVERIFY(waitForEdits());
+        QVERIFY(m_window->result()->rescheduled->programText == guiBytes);
+        m_window->undoStack()->undo();
+        QVERIFY(waitForEdits());
+    }
+
+    void layerSettingsReScheduleTheLayerAndUndo() {
+        const int target = m_window->layerTable()->rowCount() / 2;
+        m_window->selectLayer(target);
+        const auto loBefore = m_window->result()->rescheduled->schedule.layers[target].lo;
+        QDoubleSpinBox* margin = m_window->layerSettings()->marginBox();
+        margin->setValue(0.5);
+        emit margin->editingFinished();
+        QVERIFY(waitForEdits());
+        QCOMPARE(m_window->spec().layerEdits.size(), std::size_t{1});
+        QVERIFY(m_window->spec().layerEdits.front().marginRad.has_value());
+        QVERIFY(m_window->result()->rescheduled->schedule.layers[target].lo != loBefore);
+        const int edited = headerColumn(m_window->layerTable(), "Edited");
+        QCOMPARE(m_window->layerTable()->item(target, edited)->text(), QStringLiteral("settings"));
+        m_window->undoStack()->undo();
+        QVERIFY(waitForEdits());
+        QVERIFY(m_window->spec().layerEdits.empty());
+        QVERIFY(m_window->result()->rescheduled->schedule.layers[target].lo == loBefore);
     }
 
     void screenshotOfTheMainWindowIsNotBlank() {
-        const QImage image = m_window.grab().toImage();
+        const QImage image = m_window->grab().toImage();
         QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window.png")));
         QVERIFY(distinctColours(image) > 10);
     }
 
     void beforeAfterPlotsAndDarkPaletteRender() {
-        bladeaxis::ui::ProfilePlots* plots = m_window.plots();
+        bladeaxis::ui::ProfilePlots* plots = m_window->plots();
         plots->resize(800, 600);
         const QImage light = plots->grab().toImage();
         QVERIFY(light.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/axis_motion.png")));
         QVERIFY(distinctColours(light) > 10);
-        m_window.setDarkPalette(true);
-        const QImage dark = m_window.grab().toImage();
+        m_window->setDarkPalette(true);
+        const QImage dark = m_window->grab().toImage();
         QVERIFY(dark.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window_dark.png")));
         QVERIFY(distinctColours(dark) > 10);
-        m_window.setDarkPalette(false);
+        m_window->setDarkPalette(false);
     }
 
     void threeDViewShowsTheToolpath() {
-        bladeaxis::ui::ToolpathView* view = m_window.view3d();
+        bladeaxis::ui::ToolpathView* view = m_window->view3d();
         view->resize(800, 600);
         const QImage image = view->renderFrame();
         QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/view3d.png")));
@@ -180,7 +267,7 @@ class MainWindowTest final : public QObject {
         QVERIFY(rotated != image);
 
         // Scrubbing shows the tool: the frame changes again.
-        QSlider* slider = m_window.toolSlider();
+        QSlider* slider = m_window->toolSlider();
         QVERIFY(slider->isEnabled());
         slider->setValue(slider->maximum() / 2);
         const QImage withTool = view->renderFrame();
@@ -189,7 +276,54 @@ class MainWindowTest final : public QObject {
     }
 
   private:
-    bladeaxis::ui::MainWindow m_window;
+    static int headerColumn(const QTableWidget* table, const char* prefix) {
+        for (int column = 0; column < table->columnCount(); ++column) {
+            if (table->horizontalHeaderItem(column)->text().startsWith(QLatin1String(prefix))) {
+                return column;
+            }
+        }
+        return -1;
+    }
+
+    int layerWithInteriorKeyPoint() const {
+        const auto& layers = m_window->result()->rescheduled->schedule.layers;
+        for (std::size_t i = 0; i < layers.size(); ++i) {
+            if (layers[i].polyline.size() >= 3) {
+                return static_cast<int>(i);
+            }
+        }
+        return -1;
+    }
+
+    // The hull may be tight on one side: small drags up and down until one is accepted.
+    static bool dragFirstInteriorKeyPoint(bladeaxis::ui::SThetaEditor& editor,
+                                          const std::vector<double>& before) {
+        for (const int dy : {6, -6, 3, -3, 12, -12}) {
+            const QPoint start = editor.vertexPosition(1).toPoint();
+            QTest::mousePress(&editor, Qt::LeftButton, {}, start);
+            QTest::mouseMove(&editor, start + QPoint(0, dy / 2));
+            QTest::mouseMove(&editor, start + QPoint(0, dy));
+            QTest::mouseRelease(&editor, Qt::LeftButton, {}, start + QPoint(0, dy));
+            if (editor.layer()->theta != before) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    // Waits until the job has re-run with the latest edits.
+    bool waitForEdits() {
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        while (m_window->editsPending()) {
+            if (!finished.wait(kJobTimeoutMs)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    std::unique_ptr<bladeaxis::ui::MainWindow> m_window;
+    std::string m_unedited; // the exported program without edits
 };
 
 QTEST_MAIN(MainWindowTest)

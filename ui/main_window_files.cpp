@@ -1,0 +1,379 @@
+// The main window's menus, tool bar, files (open, save, export, recent), settings and palette.
+#include "core/base/file_io.h"
+#include "core/job/job_file.h"
+#include "ui/comparison_table.h"
+#include "ui/main_window.h"
+#include "ui/profile_plots.h"
+#include "ui/s_theta_editor.h"
+#include "ui/toolpath_view.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QKeySequence>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPalette>
+#include <QSettings>
+#include <QStatusBar>
+#include <QStyleFactory>
+#include <QToolBar>
+#include <filesystem>
+
+namespace bladeaxis::ui {
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+const char* const kRecentKey = "recentFiles";
+const char* const kDarkKey = "view/dark";
+const char* const kCompareKey = "job/compare";
+const char* const kMachineKey = "job/machine";
+const char* const kToolRadiusKey = "job/toolRadius";
+
+QAction* menuAction(QMenu* menu, const QString& text, const QKeySequence& shortcut,
+                    const QString& tip) {
+    QAction* action = menu->addAction(text);
+    action->setShortcut(shortcut);
+    action->setToolTip(tip);
+    action->setStatusTip(tip);
+    return action;
+}
+
+} // namespace
+
+void MainWindow::buildFileMenu() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    connect(menuAction(file, tr("&Open program…"), QKeySequence::Open,
+                       tr("Open an NC program (G-code) or CL data (APT/CLSF) and re-schedule it")),
+            &QAction::triggered, this, &MainWindow::openProgramDialog);
+    connect(menuAction(file, tr("Open &machine…"), QKeySequence(tr("Ctrl+M")),
+                       tr("Machine file (JSON); default: the built-in blade machine")),
+            &QAction::triggered, this, &MainWindow::openMachineDialog);
+    connect(menuAction(file, tr("Run &demo"), QKeySequence(tr("Ctrl+D")),
+                       tr("Re-schedule the built-in demo blade program")),
+            &QAction::triggered, this, &MainWindow::runDemo);
+    m_recentMenu = file->addMenu(tr("&Recent programs"));
+    file->addSeparator();
+    connect(menuAction(file, tr("Open &job…"), QKeySequence(tr("Ctrl+J")),
+                       tr("Open a saved job (program, machine, parameters and layer edits)")),
+            &QAction::triggered, this, &MainWindow::openJobDialog);
+    connect(
+        menuAction(file, tr("&Save job…"), QKeySequence::Save,
+                   tr("Save the job with its layer edits; `bladeaxis --batch --job` reruns it")),
+        &QAction::triggered, this, &MainWindow::saveJobDialog);
+    file->addSeparator();
+    connect(menuAction(file, tr("&Export program…"), QKeySequence(tr("Ctrl+E")),
+                       tr("Write the re-scheduled program (refused if a check failed)")),
+            &QAction::triggered, this, &MainWindow::exportProgramDialog);
+    connect(menuAction(file, tr("Export &CL data…"), QKeySequence(tr("Ctrl+Shift+E")),
+                       tr("Write the re-scheduled toolpath as APT CL data")),
+            &QAction::triggered, this, &MainWindow::exportClDialog);
+    connect(menuAction(file, tr("Export &report…"), QKeySequence(tr("Ctrl+R")),
+                       tr("Write report.json, axes.csv, layers.csv and, with a comparison, "
+                          "report.html into a folder")),
+            &QAction::triggered, this, &MainWindow::exportReportDialog);
+    file->addSeparator();
+    connect(menuAction(file, tr("&Quit"), QKeySequence::Quit, tr("Close BladeAxis")),
+            &QAction::triggered, this, &QWidget::close);
+    rebuildRecentMenu();
+}
+
+void MainWindow::buildEditMenu() {
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_undo.createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    edit->addAction(undo);
+    QAction* redo = m_undo.createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    m_compareAction = edit->addAction(tr("&Compare methods"));
+    m_compareAction->setCheckable(true);
+    m_compareAction->setChecked(true);
+    m_compareAction->setToolTip(tr("Also run quaternion interpolation, both S-θ presets and the "
+                                   "optimum on the same ball centres (next job)"));
+}
+
+void MainWindow::buildViewMenu() {
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    m_darkAction = view->addAction(tr("&Dark palette"));
+    m_darkAction->setCheckable(true);
+    m_darkAction->setShortcut(QKeySequence(tr("Ctrl+Shift+D")));
+    connect(m_darkAction, &QAction::toggled, this, [this](bool dark) {
+        setDarkPalette(dark);
+        QSettings().setValue(kDarkKey, dark);
+    });
+    view->addSeparator();
+    auto* colouring = new QActionGroup(this);
+    const std::pair<QString, ToolpathView::Colouring> colourings[] = {
+        {tr("Colour by &layer"), ToolpathView::Colouring::Layer},
+        {tr("Colour by &A speed (re-scheduled)"), ToolpathView::Colouring::ASpeed},
+        {tr("Colour by A speed (&original)"), ToolpathView::Colouring::OriginalASpeed}};
+    for (const auto& [text, mode] : colourings) {
+        QAction* action = view->addAction(text);
+        action->setCheckable(true);
+        action->setChecked(mode == ToolpathView::Colouring::Layer);
+        colouring->addAction(action);
+        connect(action, &QAction::triggered, this,
+                [this, value = mode] { m_view3d->setColouring(value); });
+    }
+    view->addSeparator();
+    const std::pair<QString, void (ToolpathView::*)(bool)> toggles[] = {
+        {tr("Show &blade surface"), &ToolpathView::setSurfaceVisible},
+        {tr("Show &original tool axes"), &ToolpathView::setOriginalAxesVisible},
+        {tr("Show re-&scheduled tool axes"), &ToolpathView::setRescheduledAxesVisible}};
+    for (const auto& [text, setter] : toggles) {
+        QAction* action = view->addAction(text);
+        action->setCheckable(true);
+        action->setChecked(true);
+        connect(action, &QAction::toggled, m_view3d, setter);
+    }
+    view->addSeparator();
+    const std::tuple<QString, QString, void (ToolpathView::*)()> presets[] = {
+        {tr("&Front"), tr("1"), &ToolpathView::viewFront},
+        {tr("&Top"), tr("2"), &ToolpathView::viewTop},
+        {tr("Along the rotary a&xis"), tr("3"), &ToolpathView::viewSide},
+        {tr("&Isometric"), tr("4"), &ToolpathView::viewIsometric},
+        {tr("&Fit"), tr("F"), &ToolpathView::fitView}};
+    for (const auto& [text, key, slot] : presets) {
+        QAction* action = menuAction(view, text, QKeySequence(key), tr("3D view preset"));
+        connect(action, &QAction::triggered, m_view3d, slot);
+    }
+}
+
+void MainWindow::buildToolBar() {
+    QToolBar* bar = addToolBar(tr("Job"));
+    bar->setObjectName(QStringLiteral("jobToolBar"));
+    for (QAction* action : menuBar()->actions().front()->menu()->actions()) {
+        if (action->text() == tr("&Open program…") || action->text() == tr("Run &demo") ||
+            action->text() == tr("&Export program…")) {
+            bar->addAction(action);
+        }
+    }
+    bar->addSeparator();
+    bar->addWidget(new QLabel(tr(" Tool radius: "), bar));
+    m_toolRadius = new QDoubleSpinBox(bar);
+    m_toolRadius->setRange(0.0, 100.0);
+    m_toolRadius->setDecimals(3);
+    m_toolRadius->setSuffix(tr(" mm"));
+    m_toolRadius->setSpecialValueText(tr("from file"));
+    m_toolRadius->setToolTip(tr("Ball radius R; 'from file' uses the radius the CL file states"));
+    connect(m_toolRadius, &QDoubleSpinBox::valueChanged, this,
+            [](double value) { QSettings().setValue(kToolRadiusKey, value); });
+    bar->addWidget(m_toolRadius);
+    m_machineLabel = new QLabel(tr(" Machine: built-in"), bar);
+    bar->addWidget(m_machineLabel);
+}
+
+void MainWindow::restoreSettings() {
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    m_compareAction->setChecked(settings.value(kCompareKey, true).toBool());
+    connect(m_compareAction, &QAction::toggled, this,
+            [](bool on) { QSettings().setValue(kCompareKey, on); });
+    m_toolRadius->setValue(settings.value(kToolRadiusKey, 0.0).toDouble());
+    const QString machine = settings.value(kMachineKey).toString();
+    if (!machine.isEmpty() && QFileInfo::exists(machine)) {
+        setMachineFile(machine);
+    }
+    m_darkAction->setChecked(settings.value(kDarkKey, false).toBool());
+}
+
+void MainWindow::setMachineFile(const QString& machinePath) {
+    m_machinePath = machinePath;
+    m_machineLabel->setText(tr(" Machine: %1").arg(QFileInfo(machinePath).fileName()));
+    QSettings().setValue(kMachineKey, machinePath);
+}
+
+Status MainWindow::openJob(const QString& jobPath) {
+    job::JobSpec spec;
+    if (Status read = job::readJobFile(jobPath.toStdString(), spec); !read) {
+        return read;
+    }
+    m_undo.clear();
+    startJob(std::move(spec), false);
+    return {};
+}
+
+Status MainWindow::saveJob(const QString& jobPath) {
+    const std::filesystem::path path = jobPath.toStdString();
+    const std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
+    return writeFileAtomically(path, job::jobJsonText(m_spec, folder));
+}
+
+Status MainWindow::exportProgram(const QString& path) {
+    if (Status pending = refuseWhilePending(); !pending) {
+        return pending;
+    }
+    job::JobSpec spec = m_spec;
+    spec.outputProgram = path.toStdString();
+    spec.outputCl.clear();
+    spec.outputDir.clear();
+    return job::writeJobOutputs(spec, *m_result);
+}
+
+Status MainWindow::exportClData(const QString& path) {
+    if (Status pending = refuseWhilePending(); !pending) {
+        return pending;
+    }
+    job::JobSpec spec = m_spec;
+    spec.outputProgram.clear();
+    spec.outputCl = path.toStdString();
+    spec.outputDir.clear();
+    return job::writeJobOutputs(spec, *m_result);
+}
+
+Status MainWindow::exportReport(const QString& folder) {
+    if (Status pending = refuseWhilePending(); !pending) {
+        return pending;
+    }
+    job::JobSpec spec = m_spec;
+    spec.outputProgram.clear();
+    spec.outputCl.clear();
+    spec.outputDir = folder.toStdString();
+    return job::writeJobOutputs(spec, *m_result);
+}
+
+void MainWindow::reportOutcome(const Status& status, const QString& done,
+                               const QString& refusedTitle) {
+    if (!status) {
+        QMessageBox::warning(this, refusedTitle, QString::fromStdString(status.error().toString()));
+        statusBar()->showMessage(refusedTitle, 5000);
+        return;
+    }
+    statusBar()->showMessage(done, 8000);
+}
+
+void MainWindow::exportProgramDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export program"));
+    if (!path.isEmpty()) {
+        reportOutcome(exportProgram(path), tr("Exported %1").arg(path), tr("Export refused"));
+    }
+}
+
+void MainWindow::exportClDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export CL data"), QString(),
+                                                      tr("CL data (*.cl *.apt)"));
+    if (!path.isEmpty()) {
+        reportOutcome(exportClData(path), tr("Exported %1").arg(path), tr("Export refused"));
+    }
+}
+
+void MainWindow::exportReportDialog() {
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Export report into"));
+    if (!folder.isEmpty()) {
+        reportOutcome(exportReport(folder), tr("Report written to %1").arg(folder),
+                      tr("Report not written"));
+    }
+}
+
+void MainWindow::openJobDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open job"), QString(), tr("Job files (*.json)"));
+    if (!path.isEmpty()) {
+        reportOutcome(openJob(path), tr("Running %1").arg(path), tr("Job not opened"));
+    }
+}
+
+void MainWindow::saveJobDialog() {
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save job"), QString(), tr("Job files (*.json)"));
+    if (!path.isEmpty()) {
+        reportOutcome(saveJob(path), tr("Saved %1").arg(path), tr("Job not saved"));
+    }
+}
+
+void MainWindow::openProgramDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open program"), QString(),
+        tr("Programs (*.nc *.ngc *.gcode *.tap *.cl *.apt *.cls);;All files (*)"));
+    if (!path.isEmpty()) {
+        runProgram(path);
+    }
+}
+
+void MainWindow::openMachineDialog() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open machine"), QString(),
+                                                      tr("Machine files (*.json)"));
+    if (!path.isEmpty()) {
+        setMachineFile(path);
+    }
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) {
+        event->acceptProposedAction();
+    }
+}
+
+// A dropped program runs; a dropped JSON file is a job when it says so, else a machine file.
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.isEmpty() || !urls.front().isLocalFile()) {
+        return;
+    }
+    const QString path = urls.front().toLocalFile();
+    if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
+        runProgram(path);
+        return;
+    }
+    QFile file(path);
+    const bool isJob = file.open(QIODevice::ReadOnly) && file.read(4096).contains("bladeaxis-job");
+    if (isJob) {
+        reportOutcome(openJob(path), tr("Running %1").arg(path), tr("Job not opened"));
+    } else {
+        setMachineFile(path);
+    }
+}
+
+void MainWindow::setDarkPalette(bool dark) {
+    QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+    if (!dark) {
+        QApplication::setPalette(QApplication::style()->standardPalette());
+        return;
+    }
+    QPalette palette;
+    palette.setColor(QPalette::Window, QColor(45, 45, 48));
+    palette.setColor(QPalette::WindowText, QColor(220, 220, 220));
+    palette.setColor(QPalette::Base, QColor(30, 30, 32));
+    palette.setColor(QPalette::AlternateBase, QColor(45, 45, 48));
+    palette.setColor(QPalette::Text, QColor(220, 220, 220));
+    palette.setColor(QPalette::Button, QColor(55, 55, 58));
+    palette.setColor(QPalette::ButtonText, QColor(220, 220, 220));
+    palette.setColor(QPalette::Highlight, QColor(42, 130, 218));
+    palette.setColor(QPalette::HighlightedText, Qt::white);
+    palette.setColor(QPalette::ToolTipBase, QColor(55, 55, 58));
+    palette.setColor(QPalette::ToolTipText, QColor(220, 220, 220));
+    QApplication::setPalette(palette);
+}
+
+void MainWindow::rememberRecent(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value(kRecentKey).toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecentFiles) {
+        recent.removeLast();
+    }
+    settings.setValue(kRecentKey, recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value(kRecentKey).toStringList();
+    for (const QString& path : recent) {
+        m_recentMenu->addAction(path, this, [this, path] { runProgram(path); });
+    }
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+} // namespace bladeaxis::ui

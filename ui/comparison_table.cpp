@@ -21,6 +21,15 @@ QString screenText(const std::string& text) {
     return screen;
 }
 
+// Two short lines instead of one long one: "A peak acc." over "(deg/s²)".
+QString headerText(const std::string& header) {
+    QString text = screenText(header);
+    text.replace(QStringLiteral(" ("), QStringLiteral("\n("));
+    text.replace(QStringLiteral(" vs "), QStringLiteral("\nvs "));
+    text.replace(QStringLiteral(" / "), QStringLiteral("\n/ "));
+    return text;
+}
+
 QString csvField(const QString& text) {
     if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) &&
         !text.contains(QLatin1Char('\n'))) {
@@ -74,7 +83,7 @@ void ComparisonTable::setComparison(const compare::Comparison& comparison) {
     setRowCount(static_cast<int>(table.rows.size()));
     for (std::size_t column = 0; column < table.columns.size(); ++column) {
         const report::CompareTableColumn& definition = table.columns[column];
-        auto* header = new QTableWidgetItem(screenText(definition.header));
+        auto* header = new QTableWidgetItem(headerText(definition.header));
         header->setData(kKeyRole, QString::fromStdString(definition.key));
         header->setToolTip(screenText(definition.description));
         setHorizontalHeaderItem(static_cast<int>(column), header);
@@ -127,7 +136,8 @@ QString ComparisonTable::toCsv() const {
     };
     QString csv = line([this](int column) {
         const QTableWidgetItem* header = horizontalHeaderItem(column);
-        return header != nullptr ? header->text() : QString();
+        return header != nullptr ? header->text().replace(QLatin1Char('\n'), QLatin1Char(' '))
+                                 : QString();
     });
     for (int row : rows) {
         csv += line([this, row](int column) {

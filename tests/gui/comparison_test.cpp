@@ -180,8 +180,10 @@ class ComparisonTest final : public QObject {
         ComparisonTable table;
         table.setComparison(comparison());
         table.show();
+        table.resize(1400, 260);
         table.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&table));
+        QVERIFY(distinctColours(grabbed(table, "comparison_table.png")) > 10);
         table.setFocus();
         QApplication::clipboard()->clear();
         QTest::keySequence(&table, QKeySequence::Copy);

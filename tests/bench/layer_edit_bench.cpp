@@ -2,11 +2,10 @@
 // on every mouse move (target: well under a 16 ms frame).
 
 #include "core/scheduling/layer_edit.h"
+#include "tests/bench/s_shaped_layer.h"
 
 #include <benchmark/benchmark.h>
 
-#include <cmath>
-#include <numbers>
 #include <vector>
 
 namespace {
@@ -14,33 +13,8 @@ namespace {
 using bladeaxis::Vec2;
 using bladeaxis::scheduling::LayerResult;
 
-constexpr std::size_t kSamples = 5000;
-constexpr double kLengthMm = 500.0;
-
-double centre(double s) {
-    return 0.5 * (1.0 - std::cos(std::numbers::pi * s / kLengthMm));
-}
-
-// A rising S-shaped channel of half-width 0.3 rad, scheduled through five key points.
-LayerResult sShapedLayer() {
-    LayerResult layer;
-    for (std::size_t i = 0; i < kSamples; ++i) {
-        const double s = kLengthMm * static_cast<double>(i) / static_cast<double>(kSamples - 1);
-        layer.s.push_back(s);
-        layer.thetaOriginal.push_back(centre(s));
-        layer.thetaMin.push_back(centre(s) - 0.3);
-        layer.thetaMax.push_back(centre(s) + 0.3);
-    }
-    layer.lo = layer.thetaMin;
-    layer.hi = layer.thetaMax;
-    layer.theta = layer.thetaOriginal;
-    for (const std::size_t index :
-         {std::size_t{0}, kSamples / 4, kSamples / 2, 3 * kSamples / 4, kSamples - 1}) {
-        layer.polyline.emplace_back(layer.s[index], centre(layer.s[index]));
-    }
-    layer.keyPoints = layer.polyline;
-    return layer;
-}
+using bladeaxis::bench::kSamples;
+using bladeaxis::bench::sShapedLayer;
 
 void resmoothAfterDrag(benchmark::State& state) {
     const LayerResult layer = sShapedLayer();

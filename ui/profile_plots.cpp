@@ -7,8 +7,10 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QPainter>
 #include <QPixmap>
+#include <QToolTip>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -143,25 +145,42 @@ QPolygonF decimatedLine(const std::vector<double>& time, const std::vector<doubl
     return line;
 }
 
+// The data rectangle of a plot cell: room for the title above, tick labels left and below.
+QRectF plotRect(const QRectF& area, const QFontMetricsF& metrics) {
+    return area.adjusted(metrics.horizontalAdvance(QStringLiteral("-000.0k")) + 8,
+                         metrics.height() + 4, -8, -(metrics.height() + 6));
+}
+
+// The common time axis: the longest visible method (each is drawn over its own duration).
+double visibleDuration(const std::vector<ProfilePlots::Curve>& curves) {
+    double duration = 0.0;
+    for (const ProfilePlots::Curve& curve : curves) {
+        if (curve.visible && !curve.time.empty()) {
+            duration = std::max(duration, curve.time.back());
+        }
+    }
+    return duration;
+}
+
 // One plot: frame, grid with tick labels on both axes, the visible curves.
 class PlotPainter {
   public:
     PlotPainter(QPainter& painter, const QPalette& palette) : m_p(painter), m_palette(palette) {}
 
-    void draw(const QRectF& area, int quantity, const std::vector<ProfilePlots::Curve>& curves) {
+    // `cursor`: a time to mark with a vertical line (the mouse readout), if any.
+    void draw(const QRectF& area, int quantity, const std::vector<ProfilePlots::Curve>& curves,
+              std::optional<double> cursor) {
         const QFontMetricsF metrics(m_p.font());
-        Range xRange{0.0, 0.0}, yRange;
+        const Range xRange{0.0, visibleDuration(curves)};
+        Range yRange;
         for (const ProfilePlots::Curve& curve : curves) {
-            if (!curve.visible || curve.time.empty()) {
-                continue;
-            }
-            xRange.include(curve.time.back());
-            for (double value : curve.values[quantity]) {
-                yRange.include(value);
+            if (curve.visible) {
+                for (double value : curve.values[quantity]) {
+                    yRange.include(value);
+                }
             }
         }
-        const QRectF plot = area.adjusted(metrics.horizontalAdvance(QStringLiteral("-000.0k")) + 8,
-                                          metrics.height() + 4, -8, -(metrics.height() + 6));
+        const QRectF plot = plotRect(area, metrics);
         m_p.setPen(m_palette.color(QPalette::Text));
         m_p.drawText(area.adjusted(plot.left() - area.left(), 0, 0, 0),
                      Qt::AlignLeft | Qt::AlignTop, quantityTitle(quantity));
@@ -186,6 +205,11 @@ class PlotPainter {
         m_p.setPen(m_palette.color(QPalette::Text));
         m_p.setBrush(Qt::NoBrush);
         m_p.drawRect(plot);
+        if (cursor && *cursor >= 0.0 && *cursor <= xRange.high) {
+            const double x = plot.left() + *cursor / xRange.high * plot.width();
+            m_p.setPen(QPen(m_palette.color(QPalette::Text), 1.0, Qt::DotLine));
+            m_p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+        }
     }
 
   private:
@@ -259,12 +283,13 @@ QPixmap legendIcon(const QColor& colour, bool dashed) {
 
 namespace detail {
 
-// The plots themselves, below the legend.
+// The plots themselves, below the legend. Hovering a plot marks that time in every plot and
+// shows each visible method's value there.
 class PlotCanvas final : public QWidget {
   public:
-    PlotCanvas(const std::vector<ProfilePlots::Curve>& curves, QWidget* parent)
-        : QWidget(parent), m_curves(curves) {
+    PlotCanvas(const ProfilePlots& owner, QWidget* parent) : QWidget(parent), m_owner(owner) {
         setMinimumSize(320, 260);
+        setMouseTracking(true);
     }
 
   protected:
@@ -272,43 +297,75 @@ class PlotCanvas final : public QWidget {
         QPainter painter(this);
         painter.setRenderHint(QPainter::Antialiasing);
         painter.fillRect(rect(), palette().base());
-        if (m_curves.empty()) {
+        if (m_owner.curves().empty()) {
             painter.setPen(palette().color(QPalette::Text));
             painter.drawText(rect(), Qt::AlignCenter,
                              ProfilePlots::tr("Run a job to see the axis motion"));
             return;
         }
-        // Two columns (A on the left, X/Y/Z on the right) when there is room, else one.
+        PlotPainter plotter(painter, palette());
+        for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
+            plotter.draw(cellArea(quantity), quantity, m_owner.curves(), m_cursor);
+        }
+    }
+
+    void mouseMoveEvent(QMouseEvent* event) override {
+        const QPointF position = event->position();
+        const double duration = visibleDuration(m_owner.curves());
+        for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
+            const QRectF plot = plotRect(cellArea(quantity), QFontMetricsF(font()));
+            if (duration > 0.0 && plot.contains(position)) {
+                m_cursor = (position.x() - plot.left()) / plot.width() * duration;
+                QToolTip::showText(
+                    event->globalPosition().toPoint(),
+                    m_owner.valuesAt(*m_cursor, static_cast<ProfilePlots::Quantity>(quantity)),
+                    this);
+                update();
+                return;
+            }
+        }
+        clearCursor();
+    }
+
+    void leaveEvent(QEvent*) override { clearCursor(); }
+
+  private:
+    // Two columns (A on the left, X/Y/Z on the right) when there is room, else one.
+    QRectF cellArea(int quantity) const {
         const int columns = width() >= 640 ? 2 : 1;
         const int rows = ProfilePlots::kQuantityCount / columns;
         const double cellWidth = width() / static_cast<double>(columns);
         const double cellHeight = height() / static_cast<double>(rows);
-        PlotPainter plotter(painter, palette());
-        for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
-            const int column = quantity / rows, row = quantity % rows;
-            plotter.draw(
-                QRectF(column * cellWidth + 2, row * cellHeight + 2, cellWidth - 4, cellHeight - 4),
-                quantity, m_curves);
+        const int column = quantity / rows, row = quantity % rows;
+        return QRectF(column * cellWidth + 2, row * cellHeight + 2, cellWidth - 4, cellHeight - 4);
+    }
+
+    void clearCursor() {
+        if (m_cursor) {
+            m_cursor.reset();
+            QToolTip::hideText();
+            update();
         }
     }
 
-  private:
-    const std::vector<ProfilePlots::Curve>& m_curves;
+    const ProfilePlots& m_owner;
+    std::optional<double> m_cursor; // s
 };
 
 } // namespace detail
 
 ProfilePlots::ProfilePlots(QWidget* parent) : QWidget(parent) {
     setMinimumSize(320, 300);
-    setToolTip(tr("Axis motion against time at the programmed feed, each method on its own time "
-                  "axis; the original dashed. Untick a method to hide it and rescale."));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
     auto* legendRow = new QWidget(this);
+    legendRow->setToolTip(tr("Axis motion against time at the programmed feed, each method on its "
+                             "own time axis; the original dashed. Untick a method to hide it and "
+                             "rescale; hover a plot to read every method's value."));
     m_legend = new QHBoxLayout(legendRow);
     m_legend->setContentsMargins(6, 2, 6, 0);
-    m_canvas = new detail::PlotCanvas(m_curves, this);
+    m_canvas = new detail::PlotCanvas(*this, this);
     layout->addWidget(legendRow);
     layout->addWidget(m_canvas, 1);
     setAutoFillBackground(true);
@@ -381,6 +438,38 @@ void ProfilePlots::setMethodVisible(const QString& method, bool visible) {
         m_canvas->update();
         emit methodVisibilityChanged(method, visible);
     }
+}
+
+QString ProfilePlots::valuesAt(double time, Quantity quantity) const {
+    static const char* const kUnits[kQuantityCount] = {"deg",  "deg/s", "deg/s²",
+                                                       "mm/s", "mm/s",  "mm/s"};
+    QStringList lines{tr("%1 at t = %2 s").arg(quantityTitle(quantity)).arg(time, 0, 'f', 3)};
+    for (const Curve& curve : m_curves) {
+        if (!curve.visible || curve.time.empty()) {
+            continue;
+        }
+        const std::vector<double>& values = curve.values[quantity];
+        if (values.size() != curve.time.size()) {
+            continue;
+        }
+        if (time > curve.time.back()) {
+            lines << tr("%1: finished at %2 s").arg(curve.method).arg(curve.time.back(), 0, 'f', 2);
+            continue;
+        }
+        // Linear between the two samples around `time`.
+        const auto above = std::lower_bound(curve.time.begin(), curve.time.end(), time);
+        const auto i = static_cast<std::size_t>(above - curve.time.begin());
+        double value = values[i];
+        if (i > 0 && curve.time[i] > curve.time[i - 1]) {
+            const double f = (time - curve.time[i - 1]) / (curve.time[i] - curve.time[i - 1]);
+            value = values[i - 1] + f * (values[i] - values[i - 1]);
+        }
+        lines << QStringLiteral("%1: %2 %3")
+                     .arg(curve.method)
+                     .arg(value, 0, 'g', 5)
+                     .arg(QString::fromUtf8(kUnits[quantity]));
+    }
+    return lines.join(QLatin1Char('\n'));
 }
 
 QColor ProfilePlots::methodColour(const QString& method, bool darkBackground) {

@@ -52,6 +52,9 @@ class ProfilePlots final : public QWidget {
     bool isMethodVisible(const QString& method) const;
     void setMethodVisible(const QString& method, bool visible);
     const std::vector<Curve>& curves() const { return m_curves; }
+    // Every visible method's value of `quantity` at `time` (s), one line each, with units: the
+    // readout shown when the mouse hovers a plot.
+    QString valuesAt(double time, Quantity quantity) const;
 
     // The colour of a method's curves, readable on a light or dark background.
     static QColor methodColour(const QString& method, bool darkBackground);

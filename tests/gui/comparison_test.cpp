@@ -14,7 +14,9 @@
 #include <QCheckBox>
 #include <QClipboard>
 #include <QImage>
+#include <QMouseEvent>
 #include <QTest>
+#include <QToolTip>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -238,10 +240,27 @@ class ComparisonTest final : public QObject {
         QVERIFY(hidden != all);
         QVERIFY(pixelsNear(hidden, best) * 4 < pixelsNear(all, best));
 
+        // The hover readout lists the visible methods only, each at the hovered time.
+        const QString readout = plots.valuesAt(1.0, ProfilePlots::AVelocity);
+        QVERIFY(!readout.contains(QStringLiteral("stheta-best:")));
+        QVERIFY2(readout.contains(QStringLiteral("optimal-qp:")), qPrintable(readout));
+        QVERIFY(readout.contains(QStringLiteral("deg/s")));
+
         // The public setter does the same and ticks the box again.
         plots.setMethodVisible(QStringLiteral("stheta-best"), true);
         QVERIFY(box->isChecked());
         QCOMPARE(grabbed(plots, "comparison_plots_shown.png"), all);
+
+        // Hovering a plot marks the time in every plot and shows the readout.
+        QWidget* canvas = plots.childAt(plots.width() / 4, plots.height() / 2);
+        QVERIFY(canvas != nullptr);
+        const QPointF inside(canvas->width() / 4.0, canvas->height() / 2.0);
+        QMouseEvent move(QEvent::MouseMove, inside, canvas->mapToGlobal(inside), Qt::NoButton,
+                         Qt::NoButton, Qt::NoModifier);
+        QApplication::sendEvent(canvas, &move);
+        QVERIFY(grabbed(plots, "comparison_plots_hover.png") != all);
+        QVERIFY2(QToolTip::text().contains(QStringLiteral("stheta-best:")),
+                 qPrintable(QToolTip::text()));
     }
 
     void plotsFollowADarkPalette() {

@@ -390,6 +390,17 @@ void ProfilePlots::setComparison(const compare::Comparison& comparison) {
     setCurves(std::move(curves));
 }
 
+void ProfilePlots::addProfile(const QString& method, const analysis::AxisProfile& profile) {
+    std::vector<Curve> curves;
+    for (const Curve& curve : m_curves) {
+        if (curve.method != method) {
+            curves.push_back(curve);
+        }
+    }
+    curves.push_back(curveOf(method, profile, method == QLatin1String("original")));
+    setCurves(std::move(curves));
+}
+
 void ProfilePlots::clear() {
     setCurves({});
 }

@@ -46,6 +46,9 @@ class ProfilePlots final : public QWidget {
     // Every method of the comparison (original, quaternion, stheta-faithful, stheta-best,
     // optimal-qp and optimal-lp when present). Visibility chosen by name is kept.
     void setComparison(const compare::Comparison& comparison);
+    // One more curve over what is shown (e.g. the re-scheduled path after a layer edit, next to
+    // a comparison computed before it); replaces a curve of the same name.
+    void addProfile(const QString& method, const analysis::AxisProfile& profile);
     void clear();
 
     QStringList methods() const;

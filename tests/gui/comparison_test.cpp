@@ -288,6 +288,13 @@ class ComparisonTest final : public QObject {
                  QStringList({QStringLiteral("original"), QStringLiteral("re-scheduled")}));
         const QImage image = grabbed(plots, "before_after_plots.png");
         QVERIFY(distinctColours(image) > 10);
+
+        // A curve added by name replaces the one of that name, or joins the others.
+        plots.addProfile(QStringLiteral("re-scheduled"), m_result->original);
+        QCOMPARE(plots.methods().size(), 2);
+        plots.addProfile(QStringLiteral("edited"), m_result->rescheduled->profile);
+        QCOMPARE(plots.methods().back(), QStringLiteral("edited"));
+        QCOMPARE(plots.methods().size(), 3);
         plots.clear();
         QVERIFY(plots.methods().isEmpty());
     }

@@ -30,11 +30,24 @@ JobThread::JobThread(job::JobSpec spec, QObject* parent)
 
 void JobThread::run() {
     SignalProgressSink sink(*this);
-    m_result.emplace(job::runJob(m_spec, sink, m_cancel));
+    auto showOriginal = [this](const job::JobResult& partial) {
+        job::DisplayScene scene = job::buildDisplayScene(partial);
+        {
+            const std::lock_guard lock(m_originalMutex);
+            m_originalScene = std::move(scene);
+        }
+        emit originalReady();
+    };
+    m_result.emplace(job::runJob(m_spec, sink, m_cancel, showOriginal));
     if (*m_result) {
         sink.progress(1.0, "preparing the 3D view");
         m_scene = job::buildDisplayScene(**m_result);
     }
+}
+
+job::DisplayScene JobThread::takeOriginalScene() {
+    const std::lock_guard lock(m_originalMutex);
+    return std::move(m_originalScene);
 }
 
 Result<job::JobResult> JobThread::takeResult() {

@@ -8,6 +8,7 @@
 
 #include <QThread>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 namespace bladeaxis::ui {
@@ -23,10 +24,14 @@ class JobThread final : public QThread {
     Result<job::JobResult> takeResult();
     // What the 3D and section views draw, built off the GUI thread with the result.
     job::DisplayScene takeScene() { return std::move(m_scene); }
+    // The program as read, for the 3D view while the job goes on; valid after originalReady.
+    job::DisplayScene takeOriginalScene();
 
   signals:
     void progressed(double fraction, QString stage);
     void warned(QString message);
+    // The program is read and its original motion analysed (takeOriginalScene).
+    void originalReady();
 
   protected:
     void run() override;
@@ -36,6 +41,8 @@ class JobThread final : public QThread {
     CancelToken m_cancel;
     std::optional<Result<job::JobResult>> m_result;
     job::DisplayScene m_scene;
+    std::mutex m_originalMutex;
+    job::DisplayScene m_originalScene;
 };
 
 } // namespace bladeaxis::ui

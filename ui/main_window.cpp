@@ -242,6 +242,13 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply) {
         statusBar()->showMessage(tr("Running: %1").arg(stage));
     });
     connect(m_thread, &QThread::finished, this, &MainWindow::onJobFinished);
+    if (!reapply) { // a new program is shown in 3D as soon as it is read
+        connect(m_thread, &JobThread::originalReady, this, [this] {
+            if (m_thread != nullptr) {
+                m_view3d->showScene(m_thread->takeOriginalScene());
+            }
+        });
+    }
     m_progress->setValue(0);
     m_progress->setVisible(true);
     m_cancel->setVisible(true);

@@ -269,6 +269,11 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
 } // namespace
 
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel) {
+    return runJob(spec, progress, cancel, {});
+}
+
+Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel,
+                         const OriginalReadyHook& originalReady) {
     const auto start = std::chrono::steady_clock::now();
     progress.progress(0.0, "loading the machine");
     auto machine = loadMachine(spec);
@@ -308,6 +313,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     progress.progress(0.3, "analysing the original axis motion");
     if (auto status = analyse(result, spec); !status) {
         return std::unexpected(status.error());
+    }
+    if (originalReady) {
+        originalReady(result);
     }
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());

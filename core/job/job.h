@@ -14,6 +14,7 @@
 #include "core/scheduling/schedule_parameters.h"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -73,6 +74,13 @@ Result<kinematics::MachineModel> loadMachine(const JobSpec& spec);
 // Errors carry file:line diagnostics of the input; see app/batch/exit_codes.h for their mapping
 // to process exit codes.
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel);
+
+// The same, calling `originalReady` (on the job's thread) as soon as the program is read and its
+// original motion analysed, before the re-scheduling: the GUI shows the program in 3D while the
+// rest of the job runs.
+using OriginalReadyHook = std::function<void(const JobResult& partial)>;
+Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel,
+                         const OriginalReadyHook& originalReady);
 
 // Writes the re-scheduled program to spec.outputProgram, and report.json, axes.csv and
 // layers.csv (and demo_blade.nc for a demo job; compare.json, compare.csv and report.html for a

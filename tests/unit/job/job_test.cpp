@@ -128,3 +128,29 @@ TEST(DemoJob, OutputsDoNotDependOnADecimalCommaLocale) {
 
 } // namespace
 } // namespace bladeaxis::job
+
+namespace bladeaxis::job {
+namespace {
+
+TEST(Job, OriginalReadyHookSeesTheProgramBeforeTheReschedule) {
+    JobSpec spec;
+    spec.demo = true;
+    NullProgressSink progress;
+    CancelToken cancel;
+    int calls = 0;
+    std::size_t records = 0;
+    bool rescheduledYet = true;
+    const auto result = runJob(spec, progress, cancel, [&](const JobResult& partial) {
+        ++calls;
+        records = partial.pass.count;
+        rescheduledYet = partial.rescheduled.has_value();
+    });
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    EXPECT_EQ(calls, 1);
+    EXPECT_FALSE(rescheduledYet);
+    EXPECT_EQ(records, result->pass.count);
+    EXPECT_GT(records, 0u);
+}
+
+} // namespace
+} // namespace bladeaxis::job

@@ -7,6 +7,7 @@
 #include <QClipboard>
 #include <QHeaderView>
 #include <algorithm>
+#include <optional>
 #include <set>
 
 namespace bladeaxis::ui {
@@ -94,7 +95,35 @@ void ComparisonTable::setComparison(const compare::Comparison& comparison) {
                     cellItem(table.rows[row][column], column > 0));
         }
     }
+    for (std::size_t column = 0; column < table.columns.size(); ++column) {
+        markBest(static_cast<int>(column), table.columns[column].better);
+    }
     resizeColumnsToContents();
+}
+
+void ComparisonTable::markBest(int column, report::Better better) {
+    if (better == report::Better::Neither) {
+        return;
+    }
+    std::optional<double> best;
+    for (int row = 0; row < rowCount(); ++row) {
+        const QVariant value = item(row, column)->data(kValueRole);
+        if (value.isValid()) {
+            const double number = value.toDouble();
+            if (!best || (better == report::Better::Lower ? number < *best : number > *best)) {
+                best = number;
+            }
+        }
+    }
+    for (int row = 0; best && row < rowCount(); ++row) {
+        QTableWidgetItem* cell = item(row, column);
+        const QVariant value = cell->data(kValueRole);
+        if (value.isValid() && value.toDouble() == *best) { // ties are all best
+            QFont font = cell->font();
+            font.setBold(true);
+            cell->setFont(font);
+        }
+    }
 }
 
 void ComparisonTable::clear() {

@@ -3,10 +3,11 @@
 // columns of report::compareTable (per-axis peaks, A reductions against the quaternion
 // baseline and the original, A reversals, T1, T2, gaps to the optimum, compute time), so the
 // GUI shows exactly the numbers and formatting of report.html. Hover a method for its setting
-// (the quaternion row lists the fairness rule's best setting per metric); Ctrl+C copies the
-// selection (or the whole table) as CSV.
+// (the quaternion row lists the fairness rule's best setting per metric); the best value of a
+// column is bold; Ctrl+C copies the selection (or the whole table) as CSV.
 
 #include "core/compare/compare.h"
+#include "core/report/compare_report.h"
 
 #include <QTableWidget>
 
@@ -33,6 +34,9 @@ class ComparisonTable final : public QTableWidget {
     // The selected cells (the whole table when nothing is selected) as CSV, header first.
     QString toCsv() const;
     void copyAsCsv() const;
+
+  private:
+    void markBest(int column, report::Better better);
 };
 
 } // namespace bladeaxis::ui

@@ -175,7 +175,7 @@ void addPeakColumns(const compare::Comparison& comparison, std::vector<ColumnDef
         const std::string name = kinematics::axisName(axis);
         columns.push_back(
             {{name + "_peak_velocity", name + " peak vel. (" + velocityUnit(axis) + ")",
-              name + " peak velocity at the programmed feed"},
+              name + " peak velocity at the programmed feed", Better::Lower},
              [&comparison, axis, name](const MethodResult& method) {
                  const double peak = method.profile.axis(axis).peakVelocity;
                  return numberCell(display(axis, peak), formatFixed(display(axis, peak), 2),
@@ -183,7 +183,7 @@ void addPeakColumns(const compare::Comparison& comparison, std::vector<ColumnDef
              }});
         columns.push_back(
             {{name + "_peak_acceleration", name + " peak acc. (" + accelerationUnit(axis) + ")",
-              name + " peak acceleration at the programmed feed"},
+              name + " peak acceleration at the programmed feed", Better::Lower},
              [&comparison, axis, name](const MethodResult& method) {
                  const double peak = method.profile.axis(axis).peakAcceleration;
                  return numberCell(display(axis, peak), formatFixed(display(axis, peak), 1),
@@ -204,7 +204,8 @@ void addReductionColumns(const compare::Comparison& comparison,
             {{"A_" + quantity + "_reduction_vs_reference",
               "A " + shortName + " reduction vs " + against,
               "(reference - method) / reference; the quaternion reference is its best setting "
-              "for this metric"},
+              "for this metric",
+              Better::Higher},
              [&comparison, &reference, metric](const MethodResult& method) {
                  const double value =
                      compare::reduction(referenceValue(comparison, reference, metric),
@@ -214,39 +215,44 @@ void addReductionColumns(const compare::Comparison& comparison,
         if (&reference == &original) {
             continue; // the reference already is the original
         }
-        columns.push_back(
-            {{"A_" + quantity + "_reduction_vs_original",
-              "A " + shortName + " reduction vs original", "(original - method) / original"},
-             [&original, metric](const MethodResult& method) {
-                 const double value = compare::reduction(compare::metricValue(original, metric),
-                                                         compare::metricValue(method, metric));
-                 return numberCell(value, percent(value));
-             }});
+        columns.push_back({{"A_" + quantity + "_reduction_vs_original",
+                            "A " + shortName + " reduction vs original",
+                            "(original - method) / original", Better::Higher},
+                           [&original, metric](const MethodResult& method) {
+                               const double value =
+                                   compare::reduction(compare::metricValue(original, metric),
+                                                      compare::metricValue(method, metric));
+                               return numberCell(value, percent(value));
+                           }});
     }
 }
 
 void addTimeColumns(const compare::Comparison& comparison, std::vector<ColumnDefinition>& columns) {
     const MethodResult& original = comparison.methods.front();
-    columns.push_back({{"a_reversals", "A reversals", "sign changes of the A velocity"},
-                       [](const MethodResult& method) {
-                           const std::size_t count = method.profile.aReversals.count;
-                           return numberCell(static_cast<double>(count), std::to_string(count));
-                       }});
-    columns.push_back({{"t1_s", "T1 (s)", "constant-feed machining time under the machine limits"},
-                       [](const MethodResult& method) {
-                           return numberCell(method.t1.time, formatFixed(method.t1.time, 2));
-                       }});
-    columns.push_back({{"t1_gain_vs_original", "T1 gain vs original", "(original - T1) / original"},
+    columns.push_back(
+        {{"a_reversals", "A reversals", "sign changes of the A velocity", Better::Lower},
+         [](const MethodResult& method) {
+             const std::size_t count = method.profile.aReversals.count;
+             return numberCell(static_cast<double>(count), std::to_string(count));
+         }});
+    columns.push_back(
+        {{"t1_s", "T1 (s)", "constant-feed machining time under the machine limits", Better::Lower},
+         [](const MethodResult& method) {
+             return numberCell(method.t1.time, formatFixed(method.t1.time, 2));
+         }});
+    columns.push_back({{"t1_gain_vs_original", "T1 gain vs original", "(original - T1) / original",
+                        Better::Higher},
                        [&original](const MethodResult& method) {
                            const double gain = compare::reduction(original.t1.time, method.t1.time);
                            return numberCell(gain, percent(gain));
                        }});
-    columns.push_back({{"t2_s", "T2 (s)", "time-optimal machining time under the machine limits"},
-                       [](const MethodResult& method) {
-                           return method.t2 ? numberCell(*method.t2, formatFixed(*method.t2, 2))
-                                            : emptyCell();
-                       }});
-    columns.push_back({{"t2_gain_vs_original", "T2 gain vs original", "(original - T2) / original"},
+    columns.push_back(
+        {{"t2_s", "T2 (s)", "time-optimal machining time under the machine limits", Better::Lower},
+         [](const MethodResult& method) {
+             return method.t2 ? numberCell(*method.t2, formatFixed(*method.t2, 2)) : emptyCell();
+         }});
+    columns.push_back({{"t2_gain_vs_original", "T2 gain vs original", "(original - T2) / original",
+                        Better::Higher},
                        [&original](const MethodResult& method) {
                            if (!method.t2 || !original.t2) {
                                return emptyCell();
@@ -263,7 +269,8 @@ void addOptimumColumns(const compare::Comparison& comparison,
         qp != nullptr && qp->channel.secondDerivativeEnergy > 0.0) {
         columns.push_back({{"theta_dd_energy_ratio_to_optimal_qp", "theta'' energy / optimal-qp",
                             "integral of theta''^2 over the layers, relative to the smoothest "
-                            "schedule in the same channel"},
+                            "schedule in the same channel",
+                            Better::Lower},
                            [qp](const MethodResult& method) {
                                const double ratio = method.channel.secondDerivativeEnergy /
                                                     qp->channel.secondDerivativeEnergy;
@@ -274,7 +281,8 @@ void addOptimumColumns(const compare::Comparison& comparison,
         lp != nullptr && lp->channel.peakSecondDerivative > 0.0) {
         columns.push_back({{"peak_theta_dd_ratio_to_optimal_lp", "peak theta'' / optimal-lp",
                             "peak |theta''| relative to the lowest-peak schedule in the same "
-                            "channel"},
+                            "channel",
+                            Better::Lower},
                            [lp](const MethodResult& method) {
                                const double ratio = method.channel.peakSecondDerivative /
                                                     lp->channel.peakSecondDerivative;
@@ -294,13 +302,13 @@ std::vector<ColumnDefinition> tableColumns(const compare::Comparison& comparison
     addReductionColumns(comparison, columns);
     addTimeColumns(comparison, columns);
     addOptimumColumns(comparison, columns);
-    columns.push_back(
-        {{"min_clearance_deg", "min channel clearance (deg)",
-          "smallest distance of theta to the raw channel's bounds; negative: outside"},
-         [](const MethodResult& method) {
-             const double degrees = units::radToDeg(method.channel.minClearance);
-             return numberCell(degrees, formatFixed(degrees, 3));
-         }});
+    columns.push_back({{"min_clearance_deg", "min channel clearance (deg)",
+                        "smallest distance of theta to the raw channel's bounds; negative: outside",
+                        Better::Higher},
+                       [](const MethodResult& method) {
+                           const double degrees = units::radToDeg(method.channel.minClearance);
+                           return numberCell(degrees, formatFixed(degrees, 3));
+                       }});
     columns.push_back({{"compute_ms", "compute (ms)", "wall time of the method itself"},
                        [](const MethodResult& method) {
                            const double ms = 1000.0 * method.computeSeconds;

@@ -21,10 +21,14 @@ struct CompareTableCell {
     std::string note;            // what a reader may want on hover (settings, reductions)
 };
 
+// Which way a column's values improve, so that a reader can mark the best method.
+enum class Better { Neither, Lower, Higher };
+
 struct CompareTableColumn {
     std::string key;         // stable identifier ("A_peak_velocity", "t1_s", ...)
     std::string header;      // with the unit, as the report prints it
     std::string description; // what the column means
+    Better better = Better::Neither;
 };
 
 struct CompareTable {

@@ -153,6 +153,36 @@ class ComparisonTest final : public QObject {
         }
     }
 
+    void bestValueOfAColumnIsMarked() {
+        ComparisonTable table;
+        table.setComparison(comparison());
+        const nlohmann::json report = bladeaxis::report::compareJson(comparison());
+        const auto& methods = report["methods"];
+        auto rowOfExtreme = [&](auto valueOf, bool lowest) {
+            std::size_t best = 0;
+            for (std::size_t i = 1; i < methods.size(); ++i) {
+                const double value = valueOf(methods[i]), current = valueOf(methods[best]);
+                best = (lowest ? value < current : value > current) ? i : best;
+            }
+            return static_cast<int>(best);
+        };
+        const int lowestAcceleration = rowOfExtreme(
+            [](const auto& m) {
+                return m["axes"]["A"]["peak_acceleration"].template get<double>();
+            },
+            true);
+        const int widestClearance = rowOfExtreme(
+            [](const auto& m) { return m["channel"]["min_clearance_deg"].template get<double>(); },
+            false);
+        const int acceleration = table.columnOf(QStringLiteral("A_peak_acceleration"));
+        const int clearance = table.columnOf(QStringLiteral("min_clearance_deg"));
+        for (int row = 0; row < table.rowCount(); ++row) {
+            QCOMPARE(table.item(row, acceleration)->font().bold(), row == lowestAcceleration);
+        }
+        QVERIFY(table.item(widestClearance, clearance)->font().bold());
+        QVERIFY(!table.item(0, table.columnOf(QStringLiteral("compute_ms")))->font().bold());
+    }
+
     void quaternionRowNamesTheFairnessRulesSettings() {
         ComparisonTable table;
         table.setComparison(comparison());

@@ -156,4 +156,43 @@ GraphPoint evaluatePair(const BezierPair& pair, double s) {
                                           : evaluateCubic(pair.second, s);
 }
 
+double plateauDeviation(double u) {
+    if (u >= 1.0) {
+        return 0.0;
+    }
+    // 30 P(u) = 10 - 24u + 15u^2 - u^6 = (1 - u)^2 (10 - 4u - 3u^2 - 2u^3 - u^4): the double
+    // root at the span edge factored out, so P keeps its relative accuracy there.
+    const double w = 1.0 - u;
+    return w * w * (10.0 - u * (4.0 + u * (3.0 + u * (2.0 + u)))) / 30.0;
+}
+
+double plateauDeviationSlope(double u) {
+    if (u >= 1.0) {
+        return 0.0;
+    }
+    // P'(u) = u - u^5/5 - 4/5 = (1 - u)(u^4 + u^3 + u^2 + u - 4) / 5.
+    return (1.0 - u) * (u * (1.0 + u * (1.0 + u * (1.0 + u))) - 4.0) / 5.0;
+}
+
+double plateauHalfWidth(double k1, double k2, double epsilon) {
+    return 4.8 * std::abs(epsilon) / std::abs(k2 - k1);
+}
+
+GraphPoint PlateauCorner::at(double s) const {
+    const double a = s - p2.x();
+    const double slope = a < 0.0 ? k1 : k2;
+    const double line = p2.y() + slope * a;
+    const double v = a / halfWidth;
+    const double u = std::abs(v);
+    if (u >= 1.0) {
+        return {line, slope, 0.0};
+    }
+    // theta = polyline + A W^2 P(|v|), symmetric about S2 (see the header).
+    const double a0 = (k2 - k1) / (1.6 * halfWidth); // A
+    const double side = v < 0.0 ? -1.0 : 1.0;
+    const double u2 = u * u;
+    return {line + a0 * halfWidth * halfWidth * plateauDeviation(u),
+            slope + side * a0 * halfWidth * plateauDeviationSlope(u), a0 * (1.0 - u2 * u2)};
+}
+
 } // namespace bladeaxis::scheduling

@@ -6,11 +6,13 @@
 #include "core/geometry/vec.h"
 
 #include <array>
+#include <cmath>
 
 namespace bladeaxis::scheduling {
 
 struct CubicBezier {
-    std::array<Vec2, 4> control; // (S, theta) control points
+    // (S, theta) control points; zero until set (a corner left unsmoothed has no curve)
+    std::array<Vec2, 4> control{Vec2::Zero(), Vec2::Zero(), Vec2::Zero(), Vec2::Zero()};
 
     Vec2 point(double t) const;
     Vec2 firstDerivative(double t) const;  // dB/dt
@@ -79,5 +81,35 @@ GraphPoint evaluateCubic(const CubicBezier& cubic, double s, double& parameter);
 GraphPoint evaluatePair(const BezierPair& pair, double s);
 // theta'' at a parameter value, from the analytic derivatives: (x'y'' - y'x'') / x'^3.
 double secondDerivativeAt(const CubicBezier& cubic, double t);
+
+// [X] Plateau corner (graph form, unit-free like §5.2's graph limit): on S in [S2 - W, S2 + W],
+// theta''(S) = A (1 - v^4) with v = (S - S2) / W and A = (k2 - k1) / (1.6 W), so the slope turns
+// from k1 to k2 and theta'' is 0 at both ends (G2, as the Bezier pair). theta is the polyline
+// plus the deviation (A W^2) P(|v|), P(u) = u^2/2 - u^6/30 - 4u/5 + 1/3: even in v, monotone on
+// each side, largest at S2 where it is |epsilon| = |k2 - k1| W / 4.8, and proportional to W at
+// a fixed v (homothety, so feasibility is monotone in W as in §5.3). Its peak |theta''| is
+// 1.25 x the least possible for the slope change over the span (the Bezier pair's is 8/3 x).
+struct PlateauCorner {
+    Vec2 p2 = Vec2::Zero(); // the polyline vertex (S2, theta2)
+    double k1 = 0.0;        // incoming slope, rad/mm
+    double k2 = 0.0;        // outgoing slope, rad/mm
+    double halfWidth = 0.0; // W, mm (> 0)
+
+    double sBegin() const { return p2.x() - halfWidth; }
+    double sEnd() const { return p2.x() + halfWidth; }
+    // |theta''| at S2, the largest along the corner.
+    double peak() const { return std::abs(k2 - k1) / (1.6 * halfWidth); }
+    // Signed vertical offset of the curve from P2 at S2.
+    double epsilon() const { return (k2 - k1) * halfWidth / 4.8; }
+    // theta, theta', theta'' at s (clamped to the span).
+    GraphPoint at(double s) const;
+};
+
+// The deviation profile P(u) of the plateau corner for u = |S - S2| / W in [0, 1] (0 beyond).
+double plateauDeviation(double u);
+// dP/du, <= 0 on [0, 1] (0 beyond).
+double plateauDeviationSlope(double u);
+// The half-width W of the plateau corner whose deviation at S2 is |epsilon|.
+double plateauHalfWidth(double k1, double k2, double epsilon);
 
 } // namespace bladeaxis::scheduling

@@ -29,9 +29,10 @@ Attempt attempt(const LayerProblem& p, const ScheduleParameters& parameters, dou
     const double tol = parameters.keyToleranceRad;
     a.lines = linearise({p.s, p.lo, p.hi, p.startValue, p.endValue, a.leads, parameters.keyMode,
                          tol, parameters.adjust, 0.1 * parameters.marginRad});
-    const SmoothingSettings settings{parameters.epsilonRule, parameters.cornerForm,
-                                     parameters.finalClearanceRad, parameters.epsilonBisectionSteps,
-                                     parameters.curveChecksPerCubic};
+    const SmoothingSettings settings{
+        parameters.epsilonRule,         parameters.cornerForm,
+        parameters.finalClearanceRad,   parameters.epsilonBisectionSteps,
+        parameters.curveChecksPerCubic, parameters.cornerProfile};
     a.smooth = smoothCorners(a.lines.vertices, p.s, p.rawMin, p.rawMax, settings);
     a.peak = peakSecondDerivative(a.smooth);
     return a;

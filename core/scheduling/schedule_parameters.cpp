@@ -11,6 +11,7 @@ ScheduleParameters faithfulPreset() {
     parameters.leadMode = LeadMode::Fixed;
     parameters.epsilonRule = EpsilonRule::Paper;
     parameters.cornerForm = CornerForm::Euclidean;
+    parameters.cornerProfile = CornerProfile::Bezier;
     parameters.keyMode = KeyMode::Both;
     return parameters;
 }
@@ -21,6 +22,7 @@ ScheduleParameters bestPreset() {
     parameters.leadMode = LeadMode::Auto;
     parameters.epsilonRule = EpsilonRule::Exact;
     parameters.cornerForm = CornerForm::GraphLimit;
+    parameters.cornerProfile = CornerProfile::Plateau;
     return parameters;
 }
 

@@ -16,6 +16,10 @@ enum class KeyMode { Both, Worst };              // spec §4.3
 enum class Adjust { Recursive, Shift };          // spec §4.5
 enum class EpsilonRule { Paper, Exact };         // spec §5.4
 enum class CornerForm { Euclidean, GraphLimit }; // spec §5.2 / §5.5 (Euclidean in rad and mm)
+// [X] The curvature profile of a graph-limit corner: the paired cubics of §5 (theta'' a bump,
+// 8/3 x the least peak for the slope change over the span, §5.6) or the plateau theta'' =
+// A (1 - v^4), v = (S - S2) / W, a sextic in S (1.25 x the least peak, still G2).
+enum class CornerProfile { Bezier, Plateau };
 
 struct ScheduleParameters {
     Preset preset = Preset::Best;
@@ -69,6 +73,7 @@ struct ScheduleParameters {
     // §5: corner construction, epsilon rule, final clearance (rad), bisection effort.
     EpsilonRule epsilonRule = EpsilonRule::Exact;
     CornerForm cornerForm = CornerForm::GraphLimit;
+    CornerProfile cornerProfile = CornerProfile::Plateau; // graph-limit corners only
     double finalClearanceRad = 0.0;
     int epsilonBisectionSteps = 40;
     int curveChecksPerCubic = 64;
@@ -80,7 +85,7 @@ struct ScheduleParameters {
 // Paper rules: epsilon0 rule (§3.2 of [L], corrected Eq. 13), fixed rho = 0.15, Euclidean
 // corners in the rad/mm plane, both key points per guidance line.
 ScheduleParameters faithfulPreset();
-// Recommended: exact epsilon by bisection, automatic rho, graph-limit corners.
+// Recommended: exact epsilon by bisection, automatic rho, graph-limit plateau corners.
 ScheduleParameters bestPreset();
 
 // Checks every parameter against its domain; the message names the parameter and value.

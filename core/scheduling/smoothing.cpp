@@ -48,8 +48,36 @@ double paperRoom(const CornerFrame& c, const ChannelView& channel) {
     return room;
 }
 
+// [X] The plateau corner: W <= f1 dS1 and f2 dS2 (the span of the graph-limit pair), then the
+// paper's room (epsilon0 rule) or the exact rule on W.
+SmoothedCorner smoothPlateau(const CornerFrame& c, const ChannelView& channel,
+                             const SmoothingSettings& settings) {
+    SmoothedCorner corner;
+    corner.s = c.p2.x();
+    corner.profile = CornerProfile::Plateau;
+    const double geometric = std::min(c.f1 * c.dS1, c.f2 * c.dS2);
+    double halfWidth = geometric;
+    if (settings.rule == EpsilonRule::Paper) {
+        const double room = paperRoom(c, channel) - settings.finalClearanceRad;
+        halfWidth = std::min(geometric, plateauHalfWidth(c.k1, c.k2, std::max(room, 0.0)));
+    } else {
+        halfWidth = detail::exactPlateauHalfWidth(c.p2, c.k1, c.k2, geometric, channel,
+                                                  settings.checksPerCubic, settings.bisectionSteps);
+    }
+    if (!(halfWidth > 0.0)) {
+        return corner; // unsmoothed corner, flagged by limitedBy = None
+    }
+    corner.plateau = {c.p2, c.k1, c.k2, halfWidth};
+    corner.epsilon = corner.plateau.epsilon();
+    corner.limitedBy = halfWidth >= geometric ? CornerLimit::Geometry : CornerLimit::Channel;
+    return corner;
+}
+
 SmoothedCorner smoothOne(const CornerFrame& c, const ChannelView& channel,
                          const SmoothingSettings& settings) {
+    if (settings.form == CornerForm::GraphLimit && settings.profile == CornerProfile::Plateau) {
+        return smoothPlateau(c, channel, settings);
+    }
     SmoothedCorner corner;
     corner.s = c.p2.x();
     const double sign = c.k2 > c.k1 ? 1.0 : -1.0;
@@ -118,10 +146,18 @@ PathSamples evaluateSmoothedPath(const SmoothedPath& path, std::span<const doubl
     for (std::size_t i = 0; i < s.size(); ++i) {
         while (corner < path.corners.size() &&
                (path.corners[corner].limitedBy == CornerLimit::None ||
-                path.corners[corner].curve.sEnd() < s[i])) {
+                path.corners[corner].sEnd() < s[i])) {
             ++corner;
         }
-        if (corner < path.corners.size() && path.corners[corner].curve.sBegin() <= s[i]) {
+        if (corner < path.corners.size() && path.corners[corner].sBegin() <= s[i] &&
+            path.corners[corner].profile == CornerProfile::Plateau) {
+            const GraphPoint p = path.corners[corner].plateau.at(s[i]); // explicit in S
+            out.theta[i] = p.value;
+            out.dTheta[i] = p.first;
+            out.ddTheta[i] = p.second;
+            continue;
+        }
+        if (corner < path.corners.size() && path.corners[corner].sBegin() <= s[i]) {
             const BezierPair& pair = path.corners[corner].curve;
             // The cubic evaluatePair would choose.
             const CubicBezier* current =
@@ -161,6 +197,10 @@ double peakSecondDerivative(const SmoothedPath& path) {
     double peak = 0.0;
     for (const SmoothedCorner& corner : path.corners) {
         if (corner.limitedBy == CornerLimit::None) {
+            continue;
+        }
+        if (corner.profile == CornerProfile::Plateau) {
+            peak = std::max(peak, corner.plateau.peak()); // theta'' = A (1 - v^4): |A| at S2
             continue;
         }
         for (const CubicBezier* cubic : {&corner.curve.first, &corner.curve.second}) {

@@ -19,7 +19,16 @@ struct SmoothedCorner {
     double s = 0.0;         // S2, mm
     double epsilon = 0.0;   // signed vertical offset of the joint, rad
     CornerLimit limitedBy = CornerLimit::None;
-    BezierPair curve;
+    CornerProfile profile = CornerProfile::Bezier;
+    BezierPair curve;      // the Bezier pair (profile Bezier)
+    PlateauCorner plateau; // the plateau corner (profile Plateau)
+
+    double sBegin() const {
+        return profile == CornerProfile::Plateau ? plateau.sBegin() : curve.sBegin();
+    }
+    double sEnd() const {
+        return profile == CornerProfile::Plateau ? plateau.sEnd() : curve.sEnd();
+    }
 };
 
 struct SmoothingSettings {
@@ -28,6 +37,8 @@ struct SmoothingSettings {
     double finalClearanceRad = 0.0;
     int bisectionSteps = 40;
     int checksPerCubic = 64;
+    // [X] Graph-limit corners only (the Euclidean form is always the Bezier pair).
+    CornerProfile profile = CornerProfile::Bezier;
 };
 
 struct SmoothedPath {

@@ -158,12 +158,11 @@ bool clearlyFeasible(const CornerGeometry& corner, double m, const ChannelView& 
 // When every sample in the span cleared the chord bound m - reach (scanSide without binding),
 // the rooms and the chord are both linear between samples, so the chord (>= the deviation)
 // stays below the room everywhere if it does at the span ends (chord 0) and at S2 (chord m).
-bool chordClears(const CornerGeometry& corner, double m, const ChannelView& channel,
-                 const CornerRooms& rooms) {
-    const double s2 = corner.p2.x();
-    const Rooms begin = rooms.atAbscissa(s2 + m * corner.unitOffsets.sBegin());
-    const Rooms end = rooms.atAbscissa(s2 + m * corner.unitOffsets.sEnd());
-    if (std::min({begin.nearSide, begin.farSide, end.nearSide, end.farSide}) < 0.0) {
+bool chordClearsSpan(double s2, double begin, double end, double peakDeviation,
+                     const ChannelView& channel, const CornerRooms& rooms) {
+    const Rooms atBegin = rooms.atAbscissa(begin);
+    const Rooms atEnd = rooms.atAbscissa(end);
+    if (std::min({atBegin.nearSide, atBegin.farSide, atEnd.nearSide, atEnd.farSide}) < 0.0) {
         return false;
     }
     const std::size_t j = channel.lowerIndex(s2);
@@ -171,7 +170,14 @@ bool chordClears(const CornerGeometry& corner, double m, const ChannelView& chan
         return true; // S2 is a sample: checked by the scan
     }
     const Rooms middle = rooms.atAbscissa(s2);
-    return middle.nearSide >= m && middle.farSide >= 0.0;
+    return middle.nearSide >= peakDeviation && middle.farSide >= 0.0;
+}
+
+bool chordClears(const CornerGeometry& corner, double m, const ChannelView& channel,
+                 const CornerRooms& rooms) {
+    const double s2 = corner.p2.x();
+    return chordClearsSpan(s2, s2 + m * corner.unitOffsets.sBegin(),
+                           s2 + m * corner.unitOffsets.sEnd(), m, channel, rooms);
 }
 
 // The original rule: bisection of the (monotone) predicate on [0, high].
@@ -264,6 +270,173 @@ double exactEpsilon(const CornerGeometry& corner, double geometric, const Channe
         return m;
     }
     return bisect(corner, m, channel, checks, bisectionSteps);
+}
+
+namespace {
+
+// The plateau corner of half-width w at (p2, k1, k2).
+PlateauCorner plateauAt(const CornerGeometry& corner, double w) {
+    return {corner.p2, corner.kIn, corner.kOut, w};
+}
+
+// |deviation| of the plateau corner of half-width w at distance `distance` from S2.
+double plateauDeviationAt(double turn, double w, double distance) {
+    return turn * w / 1.6 * plateauDeviation(distance / w);
+}
+
+// The largest w whose deviation at distance d > 0 from S2 is `room` (>= 0), given a u0 = d / w0
+// at which the deviation still exceeds the room: with u = d / w, P(u) = R u, R = 1.6 room /
+// (turn d). P(u) - R u is convex and decreasing on [0, 1] and positive at u0, so Newton from u0
+// rises monotonically to the root (quadratically: a few steps from the current bound).
+double plateauSampleBound(double turn, double distance, double room, double u0) {
+    const double ratio = 1.6 * room / (turn * distance);
+    double u = u0;
+    for (int step = 0; step < 100; ++step) {
+        const double f = plateauDeviation(u) - ratio * u;
+        const double next = u - f / (plateauDeviationSlope(u) - ratio);
+        if (!(next < 1.0)) {
+            return distance;
+        }
+        if (next - u <= 1e-15 * next) {
+            return distance / next;
+        }
+        u = next;
+    }
+    return distance / u;
+}
+
+// Lowers w to the bound of every binding sample on one side of S2, scanning outward while the
+// samples lie inside the current span (as scanSide for the Bezier pair).
+void plateauScanSide(const CornerGeometry& corner, const ChannelView& channel, std::size_t split,
+                     int direction, double& w, bool& binding) {
+    const bool right = direction > 0;
+    const double s2 = corner.p2.x();
+    const double slope = right ? corner.kOut : corner.kIn;
+    const double sign = corner.sign;
+    const double turn = std::abs(corner.kOut - corner.kIn);
+    const std::span<const double> nearBound = sign > 0.0 ? channel.rawMax : channel.rawMin;
+    const std::span<const double> farBound = sign > 0.0 ? channel.rawMin : channel.rawMax;
+    const double slack = kRoomTolerance - channel.clearance;
+    const std::size_t n = channel.s.size();
+    for (std::size_t j = right ? split : split - 1; j < n;
+         j += static_cast<std::size_t>(direction)) {
+        const double a = channel.s[j] - s2;
+        const double distance = std::abs(a);
+        if (distance >= w) {
+            break; // outside the span: the curve is the polyline there
+        }
+        const double line = corner.p2.y() + slope * a;
+        const double room = sign * (nearBound[j] - line) + slack;
+        if (sign * (line - farBound[j]) + slack < 0.0 || room < 0.0) {
+            w = distance * (1.0 - 1e-9); // the polyline itself violates: stop short of it
+            binding = true;
+            continue;
+        }
+        // Convex deviation below its chord |epsilon| (1 - distance / w): cannot bind.
+        if (room >= turn * w / 4.8 * (1.0 - distance / w)) {
+            continue;
+        }
+        binding = true;
+        if (distance == 0.0) {
+            w = std::min(w, 4.8 * room / turn);
+            continue;
+        }
+        const double u0 = distance / w;
+        if (room >= turn * w / 1.6 * plateauDeviation(u0)) {
+            continue; // below the chord but not binding at the current w
+        }
+        w = plateauSampleBound(turn, distance, room, u0);
+    }
+}
+
+// The exact rule's predicate for the plateau corner: within the channel at every sample in its
+// span and at 2 `checks` + 1 evenly spaced abscissae (the interpolated channel).
+bool plateauFeasible(const PlateauCorner& plateau, const ChannelView& channel, int checks) {
+    const std::size_t end = channel.upperIndex(plateau.sEnd());
+    for (std::size_t j = channel.lowerIndex(plateau.sBegin()); j < end; ++j) {
+        const double value = plateau.at(channel.s[j]).value;
+        if (value < channel.rawMin[j] + channel.clearance - kFeasibilityTolerance ||
+            value > channel.rawMax[j] - channel.clearance + kFeasibilityTolerance) {
+            return false;
+        }
+    }
+    for (int k = -checks; k <= checks; ++k) {
+        const double x = plateau.p2.x() + plateau.halfWidth * k / checks;
+        const double value = plateau.at(x).value;
+        const auto [low, high] = channel.at(x);
+        if (value < low - kFeasibilityTolerance || value > high + kFeasibilityTolerance) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Sufficient for plateauFeasible, as clearlyFeasible for the pair: rooms linear between
+// abscissae, the deviation monotone on each side of S2.
+bool plateauClearlyFeasible(const CornerGeometry& corner, double w, const ChannelView& channel,
+                            const CornerRooms& rooms) {
+    const double s2 = corner.p2.x();
+    const double turn = std::abs(corner.kOut - corner.kIn);
+    const double peakDeviation = turn * w / 4.8;
+    double previousX = s2 - w;
+    Rooms previous = rooms.atAbscissa(previousX);
+    const std::size_t last = channel.lowerIndex(s2 + w);
+    for (std::size_t j = channel.upperIndex(previousX); j <= last; ++j) {
+        const double x = j < last ? channel.s[j] : s2 + w;
+        const Rooms current = j < last ? rooms.atSample(j) : rooms.atAbscissa(x);
+        if (current.farSide < 0.0 || previous.farSide < 0.0) {
+            return false;
+        }
+        const double low = std::min(previous.nearSide, current.nearSide);
+        if (low < peakDeviation) {
+            const double nearer = x <= s2 ? x : previousX;
+            const double bound = previousX < s2 && x > s2
+                                     ? peakDeviation
+                                     : plateauDeviationAt(turn, w, std::abs(nearer - s2));
+            if (low + kRoundOff < bound) {
+                return false;
+            }
+        }
+        previousX = x;
+        previous = current;
+    }
+    return true;
+}
+
+} // namespace
+
+double exactPlateauHalfWidth(const Vec2& p2, double k1, double k2, double geometric,
+                             const ChannelView& channel, int checks, int bisectionSteps) {
+    if (!(geometric > 0.0) || !(k2 != k1)) {
+        return 0.0;
+    }
+    const CornerGeometry corner{p2, k1, k2, k2 > k1 ? 1.0 : -1.0, {}};
+    double w = geometric;
+    bool binding = false;
+    const std::size_t split = channel.upperIndex(p2.x()); // S2 itself scans left
+    plateauScanSide(corner, channel, split, -1, w, binding);
+    plateauScanSide(corner, channel, split, +1, w, binding);
+    if (!(w > 0.0)) {
+        return 0.0;
+    }
+    const CornerRooms rooms(corner, channel);
+    // Every sample cleared the chord: chord and rooms are linear between samples, so the span
+    // ends (chord 0) and S2 (chord |epsilon|) decide, as chordClears does for the pair.
+    if (!binding && chordClearsSpan(p2.x(), p2.x() - w, p2.x() + w, std::abs(k2 - k1) * w / 4.8,
+                                    channel, rooms)) {
+        return w;
+    }
+    if (plateauClearlyFeasible(corner, w, channel, rooms) ||
+        plateauFeasible(plateauAt(corner, w), channel, checks)) {
+        return w;
+    }
+    double low = 0.0; // bisection of the monotone predicate (homothety in w)
+    double high = w;
+    for (int step = 0; step < bisectionSteps; ++step) {
+        const double mid = 0.5 * (low + high);
+        (plateauFeasible(plateauAt(corner, mid), channel, checks) ? low : high) = mid;
+    }
+    return low;
 }
 
 } // namespace bladeaxis::scheduling::detail

@@ -32,4 +32,11 @@ CornerGeometry cornerGeometry(const Vec2& p2, double kIn, double kOut, double si
 double exactEpsilon(const CornerGeometry& corner, double geometric, const ChannelView& channel,
                     int checks, int bisectionSteps);
 
+// The exact rule for the plateau corner [X]: the largest half-width W in [0, geometric] for
+// which the corner stays in the channel at every sample of its span and at 2 checks + 1 evenly
+// spaced abscissae. Per-sample bounds in closed form up to one polynomial root (homothety in W),
+// then the predicate, and the bisection only where the sufficient condition cannot decide.
+double exactPlateauHalfWidth(const Vec2& p2, double k1, double k2, double geometric,
+                             const ChannelView& channel, int checks, int bisectionSteps);
+
 } // namespace bladeaxis::scheduling::detail

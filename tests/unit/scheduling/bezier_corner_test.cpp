@@ -156,5 +156,68 @@ TEST(BezierCorner, GeometricLimitUsesTheCorrectedLegs) {
     EXPECT_NEAR(graphLimitEpsilonLimit(0.0, 0.04, 10.0, 20.0, 0.5, 1.0), 0.5 * 2.5 * 0.04, 1e-15);
 }
 
+// [X] Plateau corner: theta'' = A (1 - v^4). The analytic properties its use relies on, checked
+// numerically against finite differences of the evaluated curve.
+TEST(PlateauCorner, IsOneTimeSmoothAndTurnsTheSlopeWithThetaSecondFromItsValues) {
+    const PlateauCorner corner{Vec2(5.0, 1.0), 0.02, 0.07, 12.0};
+    const double h = 1e-3;
+    for (double s = corner.sBegin() + 2.0 * h; s < corner.sEnd() - 2.0 * h; s += 0.37) {
+        const GraphPoint p = corner.at(s);
+        const GraphPoint before = corner.at(s - h);
+        const GraphPoint after = corner.at(s + h);
+        EXPECT_NEAR(p.first, (after.value - before.value) / (2.0 * h), 1e-8);
+        EXPECT_NEAR(p.second, (after.first - before.first) / (2.0 * h), 1e-8);
+        EXPECT_GE(p.second, 0.0); // one sign: the slope rises monotonically from k1 to k2
+        EXPECT_GE(p.first, corner.k1 - 1e-15);
+        EXPECT_LE(p.first, corner.k2 + 1e-15);
+    }
+}
+
+TEST(PlateauCorner, MaximumDeviationIsEpsilonAtTheCornerAndShrinksTowardsTheEnds) {
+    for (const auto& [k1, k2] : {std::pair{0.01, 0.05}, {0.08, 0.0}, {0.0, 0.3}}) {
+        const PlateauCorner corner{Vec2(0.0, 0.0), k1, k2, 7.5};
+        EXPECT_NEAR(corner.at(0.0).value, corner.epsilon(), 1e-15);
+        double previous = std::abs(corner.epsilon());
+        for (double a = 0.25; a <= 7.5; a += 0.25) {
+            for (double side : {-1.0, 1.0}) {
+                const double line = (side < 0.0 ? k1 : k2) * side * a;
+                const double deviation = std::abs(corner.at(side * a).value - line);
+                EXPECT_LE(deviation, previous + 1e-15);
+            }
+            previous = std::abs(corner.at(a).value - k2 * a);
+        }
+        EXPECT_NEAR(previous, 0.0, 1e-15);
+    }
+}
+
+// §5.6 for this profile: the peak is 1.25 x the least possible theta'' (constant) that turns
+// the slope by the same amount over the same span 2W; the Bezier pair's is 8/3 x.
+TEST(PlateauCorner, PeakIsFiveQuartersOfTheLeastPossibleForItsSpan) {
+    const PlateauCorner corner{Vec2(1.0, 2.0), 0.01, 0.05, 4.0};
+    double peak = 0.0;
+    for (double s = corner.sBegin(); s <= corner.sEnd(); s += 1e-3) {
+        peak = std::max(peak, std::abs(corner.at(s).second));
+    }
+    const double least = (corner.k2 - corner.k1) / (2.0 * corner.halfWidth);
+    EXPECT_NEAR(peak / least, 1.25, 1e-9);
+    EXPECT_NEAR(corner.peak(), peak, 1e-12);
+}
+
+// Homothety (§5.3 for this profile): at a fixed v the deviation is proportional to W, so it is
+// non-decreasing in W at every S and the exact rule may bound W sample by sample.
+TEST(PlateauCorner, DeviationGrowsWithTheHalfWidth) {
+    for (double a = -6.0; a <= 6.0; a += 0.5) {
+        double previous = 0.0;
+        for (double w = 0.5; w <= 8.0; w += 0.25) {
+            const PlateauCorner corner{Vec2(0.0, 0.0), 0.0, 0.1, w};
+            const double deviation = corner.at(a).value - (a < 0.0 ? 0.0 : 0.1 * a);
+            EXPECT_GE(deviation, previous - 1e-15) << "a " << a << " w " << w;
+            previous = deviation;
+        }
+    }
+    EXPECT_NEAR(plateauHalfWidth(0.0, 0.1, PlateauCorner{Vec2(0.0, 0.0), 0.0, 0.1, 3.0}.epsilon()),
+                3.0, 1e-14);
+}
+
 } // namespace
 } // namespace bladeaxis::scheduling

@@ -1,4 +1,5 @@
-// Spec §10.1 row "smoothing" (§5.4, §5.8): both epsilon rules and both corner forms.
+// Spec §10.1 row "smoothing" (§5.4, §5.8): both epsilon rules, both corner forms and both
+// graph-limit corner profiles.
 #include "core/scheduling/channel.h"
 #include "core/scheduling/linearisation.h"
 #include "core/scheduling/smoothing.h"
@@ -102,6 +103,84 @@ TEST(Smoothing, FinalClearanceIsKept) {
         EXPECT_GE(std::min(samples.theta[i] - x.rawLo[i], x.rawHi[i] - samples.theta[i]),
                   clearance - 1e-9);
     }
+}
+
+// [X] Plateau corners (CornerProfile::Plateau): the same guarantees as the Bezier pair with a
+// flatter theta''.
+TEST(Smoothing, PlateauCurveStaysInTheRawChannelMonotoneAndG2) {
+    for (unsigned seed = 1; seed <= 10; ++seed) {
+        const WigglyLayer x = wigglySetup(seed);
+        for (EpsilonRule rule : {EpsilonRule::Exact, EpsilonRule::Paper}) {
+            SmoothingSettings settings{rule, CornerForm::GraphLimit};
+            settings.profile = CornerProfile::Plateau;
+            const SmoothedPath path =
+                smoothCorners(x.lines.vertices, x.s, x.rawLo, x.rawHi, settings);
+            const PathSamples samples = evaluateSmoothedPath(path, x.s);
+            for (std::size_t i = 0; i < x.s.size(); ++i) {
+                EXPECT_GE(samples.theta[i], x.rawLo[i] - 1e-9) << "seed " << seed << " i " << i;
+                EXPECT_LE(samples.theta[i], x.rawHi[i] + 1e-9) << "seed " << seed << " i " << i;
+                EXPECT_GE(samples.dTheta[i], -1e-12);
+                if (i > 0) {
+                    EXPECT_GE(samples.theta[i], samples.theta[i - 1] - 1e-12);
+                }
+            }
+            double previousEnd = -1e300;
+            for (const SmoothedCorner& c : path.corners) {
+                ASSERT_EQ(c.profile, CornerProfile::Plateau);
+                if (c.limitedBy == CornerLimit::None) {
+                    continue;
+                }
+                EXPECT_GE(c.sBegin(), previousEnd - 1e-12); // disjoint spans
+                previousEnd = c.sEnd();
+                // G2 at the span ends: on the polyline, with its slope and theta'' = 0.
+                for (double end : {c.sBegin(), c.sEnd()}) {
+                    const GraphPoint at = c.plateau.at(end);
+                    const double slope = end < c.s ? c.plateau.k1 : c.plateau.k2;
+                    EXPECT_NEAR(at.value, c.plateau.p2.y() + slope * (end - c.s), 1e-12);
+                    EXPECT_NEAR(at.first, slope, 1e-12);
+                    EXPECT_NEAR(at.second, 0.0, 1e-12);
+                }
+            }
+        }
+    }
+}
+
+TEST(Smoothing, PlateauPeakIsBelowTheBezierPeakOnTheSamePolyline) {
+    for (unsigned seed = 1; seed <= 10; ++seed) {
+        const WigglyLayer x = wigglySetup(seed);
+        SmoothingSettings plateau{EpsilonRule::Exact, CornerForm::GraphLimit};
+        plateau.profile = CornerProfile::Plateau;
+        const double plateauPeak =
+            peakSecondDerivative(smoothCorners(x.lines.vertices, x.s, x.rawLo, x.rawHi, plateau));
+        const double bezierPeak = peakSecondDerivative(smoothCorners(
+            x.lines.vertices, x.s, x.rawLo, x.rawHi, {EpsilonRule::Exact, CornerForm::GraphLimit}));
+        EXPECT_LT(plateauPeak, bezierPeak) << "seed " << seed;
+    }
+}
+
+// The exact rule finds the largest feasible half-width: a channel-limited corner 1e-6 wider
+// leaves the channel at some sample.
+TEST(Smoothing, PlateauExactRuleIsTheLargestFeasibleHalfWidth) {
+    const WigglyLayer x = wigglySetup(4);
+    SmoothingSettings settings{EpsilonRule::Exact, CornerForm::GraphLimit};
+    settings.profile = CornerProfile::Plateau;
+    const SmoothedPath path = smoothCorners(x.lines.vertices, x.s, x.rawLo, x.rawHi, settings);
+    int channelLimited = 0;
+    for (const SmoothedCorner& c : path.corners) {
+        if (c.limitedBy != CornerLimit::Channel) {
+            continue;
+        }
+        ++channelLimited;
+        PlateauCorner wider = c.plateau;
+        wider.halfWidth *= 1.0 + 1e-6;
+        double worst = 0.0;
+        for (std::size_t i = 0; i < x.s.size(); ++i) {
+            const double value = wider.at(x.s[i]).value;
+            worst = std::max({worst, x.rawLo[i] - value, value - x.rawHi[i]});
+        }
+        EXPECT_GT(worst, 0.0) << "corner at S = " << c.s;
+    }
+    EXPECT_GT(channelLimited, 0);
 }
 
 } // namespace

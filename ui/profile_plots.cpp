@@ -10,6 +10,8 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPixmap>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QToolTip>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -227,7 +229,7 @@ class PlotPainter {
 
     void drawYTicks(const QRectF& plot, const Range& range, const QFontMetricsF& metrics) {
         const int maxTicks =
-            std::max(2, static_cast<int>(plot.height() / (2.0 * metrics.height())));
+            std::max(2, static_cast<int>(plot.height() / (1.6 * metrics.height())));
         const double step = niceStep(range.high - range.low, maxTicks);
         for (double value = std::ceil(range.low / step) * step; value <= range.high;
              value += step) {
@@ -359,14 +361,21 @@ ProfilePlots::ProfilePlots(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
-    auto* legendRow = new QWidget(this);
+    // The legend scrolls sideways rather than widening the plots in a narrow window.
+    m_legendArea = new QScrollArea(this);
+    m_legendArea->setFrameShape(QFrame::NoFrame);
+    m_legendArea->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_legendArea->setWidgetResizable(true);
+    m_legendArea->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    auto* legendRow = new QWidget(m_legendArea);
     legendRow->setToolTip(tr("Axis motion against time at the programmed feed, each method on its "
                              "own time axis; the original dashed. Untick a method to hide it and "
                              "rescale; hover a plot to read every method's value."));
     m_legend = new QHBoxLayout(legendRow);
     m_legend->setContentsMargins(6, 2, 6, 0);
+    m_legendArea->setWidget(legendRow);
     m_canvas = new detail::PlotCanvas(*this, this);
-    layout->addWidget(legendRow);
+    layout->addWidget(m_legendArea);
     layout->addWidget(m_canvas, 1);
     setAutoFillBackground(true);
     setBackgroundRole(QPalette::Base);
@@ -535,6 +544,9 @@ void ProfilePlots::rebuildLegend() {
     }
     m_legend->addStretch(1);
     refreshLegendIcons();
+    // Room for the row and, when it is wider than the window, the scroll bar under it.
+    m_legendArea->setFixedHeight(m_legend->parentWidget()->sizeHint().height() +
+                                 m_legendArea->horizontalScrollBar()->sizeHint().height());
 }
 
 void ProfilePlots::refreshLegendIcons() {

@@ -14,6 +14,7 @@
 
 class QCheckBox;
 class QHBoxLayout;
+class QScrollArea;
 
 namespace bladeaxis::ui {
 
@@ -75,6 +76,7 @@ class ProfilePlots final : public QWidget {
 
     std::vector<Curve> m_curves;
     std::vector<QString> m_hidden; // methods the user hid, kept across results
+    QScrollArea* m_legendArea = nullptr;
     QHBoxLayout* m_legend = nullptr;
     std::vector<QCheckBox*> m_boxes;
     detail::PlotCanvas* m_canvas = nullptr;

@@ -293,6 +293,17 @@ class ComparisonTest final : public QObject {
                  qPrintable(QToolTip::text()));
     }
 
+    void plotsFitANarrowWindow() {
+        ProfilePlots plots;
+        plots.setComparison(comparison());
+        // Six methods in the legend must not widen the plots: the legend scrolls instead.
+        QVERIFY(plots.minimumSizeHint().width() <= 400);
+        plots.resize(400, 900);
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        QVERIFY(distinctColours(grabbed(plots, "comparison_plots_narrow.png")) > 10);
+    }
+
     void plotsFollowADarkPalette() {
         ProfilePlots plots;
         plots.resize(1000, 700);

@@ -37,8 +37,9 @@ struct SmoothingSettings {
     double finalClearanceRad = 0.0;
     int bisectionSteps = 40;
     int checksPerCubic = 64;
-    // [X] Graph-limit corners only (the Euclidean form is always the Bezier pair).
-    CornerProfile profile = CornerProfile::Bezier;
+    // [X] Graph-limit corners only (the Euclidean form is always the Bezier pair). The default
+    // is ScheduleParameters' default, for callers that build the settings without it.
+    CornerProfile profile = CornerProfile::Plateau;
 };
 
 struct SmoothedPath {

@@ -128,6 +128,36 @@ TEST(SchedulingProperties, MonotoneAndInsideTheRawChannel) {
     }
 }
 
+double pathPeak(const ScheduleResult& result) {
+    double peak = 0.0;
+    for (const LayerResult& layer : result.layers) {
+        peak = std::max(peak, layer.peakSecondDerivative);
+    }
+    return peak;
+}
+
+// [X] The best preset's plateau corners (1.25 x the least peak for their span) never raise the
+// path's peak theta'' above that of the same preset with the Bezier pairs (8/3 x); both keep the
+// invariants above (the test before runs on the plateau default).
+TEST(SchedulingProperties, PlateauCornersLowerThePeakOfTheBezierCorners) {
+    ScheduleParameters bezier = bestPreset();
+    bezier.cornerProfile = CornerProfile::Bezier;
+    double worstRatio = 0.0;
+    for (const Member& m : family()) {
+        SCOPED_TRACE(m.name);
+        auto withBezier = schedule(m.input, bezier);
+        ASSERT_TRUE(withBezier.has_value());
+        EXPECT_EQ(withBezier->check.reversals, 0u);
+        const double plateauPeak = pathPeak(m.result);
+        const double bezierPeak = pathPeak(*withBezier);
+        EXPECT_LE(plateauPeak, bezierPeak * (1.0 + 1e-9));
+        if (bezierPeak > 0.0) {
+            worstRatio = std::max(worstRatio, plateauPeak / bezierPeak);
+        }
+    }
+    std::printf("[ measure  ] plateau / Bezier peak theta'' per path: at most %.3f\n", worstRatio);
+}
+
 // §10.2 item 3: zero slope and zero theta'' at the ends of intermediate layers (C2 junctions).
 TEST(SchedulingProperties, FlatEndsAtIntermediateLayerJunctions) {
     for (const Member& m : family()) {

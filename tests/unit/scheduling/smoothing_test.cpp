@@ -46,8 +46,9 @@ TEST(Smoothing, CurveStaysInTheRawChannelMonotoneWithZeroCurvatureAtJoints) {
         ASSERT_GT(x.lines.vertices.size(), 4u);
         for (EpsilonRule rule : {EpsilonRule::Exact, EpsilonRule::Paper}) {
             for (CornerForm form : {CornerForm::GraphLimit, CornerForm::Euclidean}) {
-                const SmoothedPath path = smoothCorners(x.lines.vertices, x.s, x.rawLo, x.rawHi,
-                                                        {rule, form, 0.0, 40, 64});
+                const SmoothedPath path =
+                    smoothCorners(x.lines.vertices, x.s, x.rawLo, x.rawHi,
+                                  {rule, form, 0.0, 40, 64, CornerProfile::Bezier});
                 const PathSamples samples = evaluateSmoothedPath(path, x.s);
                 for (std::size_t i = 0; i < x.s.size(); ++i) {
                     ASSERT_GE(samples.theta[i], x.rawLo[i] - 1e-12) << i;
@@ -95,13 +96,15 @@ TEST(Smoothing, ExactEpsilonIsNeverSmallerThanThePaperRule) {
 TEST(Smoothing, FinalClearanceIsKept) {
     const WigglyLayer x = wigglySetup(3);
     const double clearance = 0.02;
-    const SmoothedPath path =
-        smoothCorners(x.lines.vertices, x.s, x.rawLo, x.rawHi,
-                      {EpsilonRule::Exact, CornerForm::GraphLimit, clearance, 40, 64});
-    const PathSamples samples = evaluateSmoothedPath(path, x.s);
-    for (std::size_t i = 0; i < x.s.size(); ++i) {
-        EXPECT_GE(std::min(samples.theta[i] - x.rawLo[i], x.rawHi[i] - samples.theta[i]),
-                  clearance - 1e-9);
+    for (CornerProfile profile : {CornerProfile::Bezier, CornerProfile::Plateau}) {
+        const SmoothedPath path =
+            smoothCorners(x.lines.vertices, x.s, x.rawLo, x.rawHi,
+                          {EpsilonRule::Exact, CornerForm::GraphLimit, clearance, 40, 64, profile});
+        const PathSamples samples = evaluateSmoothedPath(path, x.s);
+        for (std::size_t i = 0; i < x.s.size(); ++i) {
+            EXPECT_GE(std::min(samples.theta[i] - x.rawLo[i], x.rawHi[i] - samples.theta[i]),
+                      clearance - 1e-9);
+        }
     }
 }
 
@@ -152,8 +155,10 @@ TEST(Smoothing, PlateauPeakIsBelowTheBezierPeakOnTheSamePolyline) {
         plateau.profile = CornerProfile::Plateau;
         const double plateauPeak =
             peakSecondDerivative(smoothCorners(x.lines.vertices, x.s, x.rawLo, x.rawHi, plateau));
-        const double bezierPeak = peakSecondDerivative(smoothCorners(
-            x.lines.vertices, x.s, x.rawLo, x.rawHi, {EpsilonRule::Exact, CornerForm::GraphLimit}));
+        SmoothingSettings bezier{EpsilonRule::Exact, CornerForm::GraphLimit};
+        bezier.profile = CornerProfile::Bezier;
+        const double bezierPeak =
+            peakSecondDerivative(smoothCorners(x.lines.vertices, x.s, x.rawLo, x.rawHi, bezier));
         EXPECT_LT(plateauPeak, bezierPeak) << "seed " << seed;
     }
 }

@@ -226,6 +226,10 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply) {
         if (m_toolRadius->value() > 0.0 && !spec.toolRadius) {
             spec.toolRadius = m_toolRadius->value();
         }
+        if (!m_cadPath.isEmpty() && spec.cad.file.empty() && !spec.demo) {
+            spec.cad.file = m_cadPath.toStdString();
+            spec.cad.placement.translation = m_cadTranslation;
+        }
         spec.compare = m_compareAction->isChecked();
         m_spec = spec;
     }

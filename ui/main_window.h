@@ -46,6 +46,9 @@ class MainWindow final : public QMainWindow {
     // Saves the current job, with the layer edits, as a job file.
     Status saveJob(const QString& jobPath);
     void setMachineFile(const QString& machinePath);
+    // Blade CAD (STEP/IGES) for the next job: clearance check, sections and the 3D surface;
+    // empty clears it. The translation places the blade relative to the rotary axis (mm).
+    void setBladeCad(const QString& cadPath, const Vec3& translation = Vec3::Zero());
     bool isRunning() const { return m_thread != nullptr; }
     // True while the job re-runs (or will re-run) with edits the last result does not have.
     bool editsPending() const { return m_thread != nullptr || m_reapplyQueued; }
@@ -115,6 +118,7 @@ class MainWindow final : public QMainWindow {
     void rebuildRecentMenu();
     void openProgramDialog();
     void openMachineDialog();
+    void openCadDialog();
     void openJobDialog();
     void saveJobDialog();
     void exportProgramDialog();
@@ -126,6 +130,8 @@ class MainWindow final : public QMainWindow {
     std::optional<job::JobResult> m_result;
     job::DisplayScene m_scene;
     QString m_machinePath;
+    QString m_cadPath;
+    Vec3 m_cadTranslation = Vec3::Zero();
     QUndoStack m_undo;
     JobThread* m_thread = nullptr;
     bool m_threadIsReapply = false;
@@ -143,6 +149,7 @@ class MainWindow final : public QMainWindow {
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;
     QLabel* m_machineLabel = nullptr;
+    QLabel* m_cadLabel = nullptr;
     QMenu* m_recentMenu = nullptr;
     QAction* m_compareAction = nullptr;
     QAction* m_darkAction = nullptr;

@@ -15,8 +15,10 @@
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QKeySequence>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -56,6 +58,10 @@ void MainWindow::buildFileMenu() {
     connect(menuAction(file, tr("Open &machine…"), QKeySequence(tr("Ctrl+M")),
                        tr("Machine file (JSON); default: the built-in blade machine")),
             &QAction::triggered, this, &MainWindow::openMachineDialog);
+    connect(menuAction(file, tr("Open blade &CAD…"), QKeySequence(tr("Ctrl+B")),
+                       tr("Blade CAD (STEP/IGES) for the clearance check, the sections and the "
+                          "3D surface of the next program")),
+            &QAction::triggered, this, &MainWindow::openCadDialog);
     connect(menuAction(file, tr("Run &demo"), QKeySequence(tr("Ctrl+D")),
                        tr("Re-schedule the built-in demo blade program")),
             &QAction::triggered, this, &MainWindow::runDemo);
@@ -170,6 +176,11 @@ void MainWindow::buildToolBar() {
     bar->addWidget(m_toolRadius);
     m_machineLabel = new QLabel(tr(" Machine: built-in"), bar);
     bar->addWidget(m_machineLabel);
+    m_cadLabel = new QLabel(tr("  Blade CAD: none"), bar);
+    m_cadLabel->setToolTip(tr("Without CAD the blade is reconstructed from the toolpath's "
+                              "contact points and no clearance check runs (the demo has its "
+                              "own surface)"));
+    bar->addWidget(m_cadLabel);
 }
 
 void MainWindow::restoreSettings() {
@@ -193,12 +204,52 @@ void MainWindow::setMachineFile(const QString& machinePath) {
     QSettings().setValue(kMachineKey, machinePath);
 }
 
+void MainWindow::setBladeCad(const QString& cadPath, const Vec3& translation) {
+    m_cadPath = cadPath;
+    m_cadTranslation = translation;
+    m_cadLabel->setText(cadPath.isEmpty()
+                            ? tr("  Blade CAD: none")
+                            : tr("  Blade CAD: %1").arg(QFileInfo(cadPath).fileName()));
+}
+
+void MainWindow::openCadDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open blade CAD"), QString(),
+                                     tr("CAD (*.step *.stp *.iges *.igs);;All files (*)"));
+    if (path.isEmpty()) {
+        return;
+    }
+    bool ok = false;
+    const QString text = QInputDialog::getText(
+        this, tr("Blade placement"),
+        tr("Translation of the CAD relative to the rotary axis, x y z in mm:"), QLineEdit::Normal,
+        QStringLiteral("0 0 0"), &ok);
+    if (!ok) {
+        return;
+    }
+    const QStringList parts = text.simplified().split(QLatin1Char(' '));
+    Vec3 translation = Vec3::Zero();
+    bool valid = parts.size() == 3;
+    for (int k = 0; valid && k < 3; ++k) {
+        translation[k] = parts[k].toDouble(&valid);
+    }
+    if (!valid) {
+        QMessageBox::warning(this, tr("Blade placement"),
+                             tr("Expected three numbers in mm, got '%1'").arg(text));
+        return;
+    }
+    setBladeCad(path, translation);
+    statusBar()->showMessage(tr("Blade CAD %1 is used by the next program you open").arg(path),
+                             8000);
+}
+
 Status MainWindow::openJob(const QString& jobPath) {
     job::JobSpec spec;
     if (Status read = job::readJobFile(jobPath.toStdString(), spec); !read) {
         return read;
     }
     m_undo.clear();
+    setBladeCad(QString::fromStdString(spec.cad.file.string()), spec.cad.placement.translation);
     startJob(std::move(spec), false);
     return {};
 }

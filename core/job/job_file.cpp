@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 namespace bladeaxis::job {
 
 namespace {
@@ -193,7 +195,7 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
     }
     for (const auto& [key, target] :
          {std::pair{"program", &spec.program}, std::pair{"machine", &spec.machineFile},
-          std::pair{"output_program", &spec.outputProgram},
+          std::pair{"cad", &spec.cad.file}, std::pair{"output_program", &spec.outputProgram},
           std::pair{"output_dir", &spec.outputDir}}) {
         if (root.contains(key)) {
             auto path = pathValue(root, key);
@@ -223,6 +225,15 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
         if (auto status = parameters(root.at("parameters"), spec); !status) {
             return status;
         }
+    }
+    if (root.contains("cad_translate_mm")) {
+        const Json& value = root.at("cad_translate_mm");
+        if (!value.is_array() || value.size() != 3 ||
+            !std::ranges::all_of(value, [](const Json& v) { return v.is_number(); })) {
+            return fail("cad_translate_mm", "expected [x, y, z] in mm");
+        }
+        spec.cad.placement.translation = {value[0].get<double>(), value[1].get<double>(),
+                                          value[2].get<double>()};
     }
     if (root.contains("demo")) {
         if (!root.at("demo").is_boolean()) {
@@ -300,6 +311,11 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
     }
     if (spec.demo) {
         json["demo"] = true;
+    }
+    if (!spec.cad.file.empty()) {
+        json["cad"] = relative(spec.cad.file);
+        const Vec3& t = spec.cad.placement.translation;
+        json["cad_translate_mm"] = {t.x(), t.y(), t.z()};
     }
     if (!spec.machineFile.empty()) {
         json["machine"] = relative(spec.machineFile);

@@ -111,9 +111,10 @@ Result<LayerResult> resmoothLayer(const LayerResult& layer, std::span<const Vec2
             return std::unexpected(check.error());
         }
     }
-    const SmoothingSettings settings{parameters.epsilonRule, parameters.cornerForm,
-                                     parameters.finalClearanceRad, parameters.epsilonBisectionSteps,
-                                     parameters.curveChecksPerCubic};
+    const SmoothingSettings settings{
+        parameters.epsilonRule,         parameters.cornerForm,
+        parameters.finalClearanceRad,   parameters.epsilonBisectionSteps,
+        parameters.curveChecksPerCubic, parameters.cornerProfile};
     const SmoothedPath smooth =
         smoothCorners(*snapped, layer.s, layer.thetaMin, layer.thetaMax, settings);
 

@@ -10,6 +10,7 @@
 #include "ui/main_window.h"
 #include "ui/profile_plots.h"
 #include "ui/s_theta_editor.h"
+#include "ui/section_view.h"
 #include "ui/toolpath_view.h"
 
 #include <QComboBox>
@@ -220,6 +221,31 @@ class MainWindowTest final : public QObject {
         QVERIFY(waitForEdits());
         QVERIFY(m_window->spec().layerEdits.empty());
         QVERIFY(m_window->result()->rescheduled->schedule.layers[target].lo == loBefore);
+    }
+
+    // A saved job with a program and its blade CAD: the clearance check runs, and the 3D view
+    // and the section view show the CAD's surface and sections.
+    void jobWithBladeCadShowsTheCadSurface() {
+        const QString folder = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/gui_report");
+        QVERIFY(QFileInfo::exists(folder + "/demo_blade.step")); // from clDataAndReportExport
+        const QString jobFile = folder + "/cad_job.json";
+        std::ofstream(jobFile.toStdString())
+            << R"({"schema": "bladeaxis-job/1", "program": "demo_blade.nc", "tool_radius_mm": )"
+            << *m_window->result()->toolRadius << R"(, "cad": "demo_blade.step"})";
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        QVERIFY(m_window->openJob(jobFile).has_value());
+        QVERIFY(finished.wait(kJobTimeoutMs));
+        QCOMPARE(finished.front().front().toBool(), true);
+        QVERIFY(m_window->result()->cadCheck.has_value());
+        const auto& scene = m_window->view3d()->scene();
+        QCOMPARE(scene.surfaceSource, bladeaxis::job::SurfaceSource::Cad);
+        QVERIFY(!scene.surface.triangles.empty());
+        const int layer = m_window->selectedLayer();
+        QVERIFY(layer >= 0);
+        QVERIFY(!scene.layers[static_cast<std::size_t>(layer)].section.empty());
+        QCOMPARE(m_window->sectionView()->layer(), layer);
+        const QImage image = m_window->grab().toImage();
+        QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window_cad.png")));
     }
 
     void screenshotOfTheMainWindowIsNotBlank() {

@@ -72,6 +72,19 @@ TEST(LayerEditsJobFile, EditsRoundTripExactly) {
     EXPECT_FALSE(read.layerEdits[1].preset.has_value());
 }
 
+TEST(JobFile, BladeCadAndItsPlacementRoundTrip) {
+    JobSpec spec;
+    spec.program = "/data/blade.nc";
+    spec.cad.file = "/data/cad/blade.step";
+    spec.cad.placement.translation = {1.5, -2.0, 0.25};
+    JobSpec read;
+    const Status parsed = parseJobJson(jobJsonText(spec, "/data"), "/data/job.json", read);
+    ASSERT_TRUE(parsed.has_value()) << parsed.error().toString();
+    EXPECT_EQ(read.cad.file, fs::path("/data/cad/blade.step"));
+    EXPECT_EQ(read.cad.placement.translation, spec.cad.placement.translation);
+    EXPECT_NE(jobJsonText(spec, "/data").find("\"cad\": \"cad/blade.step\""), std::string::npos);
+}
+
 TEST(LayerEditsJobFile, MalformedKeyPointsNameTheLine) {
     JobSpec spec;
     const std::string text = "{\n  \"schema\": \"bladeaxis-job/1\",\n  \"layer_edits\": [\n"

@@ -57,6 +57,25 @@ TEST(LayerOverrides, KeyPointEditReplacesOnlyItsLayer) {
     EXPECT_TRUE(changed->check.passes());
 }
 
+// The editor's re-smoothing of the engine's own key points gives the engine's curve: an undo to
+// the unedited polyline shows exactly what the job schedules.
+TEST(LayerOverrides, ResmoothingTheEnginesKeyPointsReproducesItsCurve) {
+    const ScheduleInput input = fiveRevolutionHelix();
+    for (const ScheduleParameters& parameters : {bestPreset(), faithfulPreset()}) {
+        const auto plain = schedule(input, parameters);
+        ASSERT_TRUE(plain.has_value());
+        for (std::size_t k = 0; k < plain->layers.size(); ++k) {
+            const LayerResult& layer = plain->layers[k];
+            const auto again = resmoothLayer(layer, layer.polyline, parameters);
+            ASSERT_TRUE(again.has_value()) << again.error().toString();
+            ASSERT_EQ(again->theta.size(), layer.theta.size());
+            for (std::size_t i = 0; i < layer.theta.size(); ++i) {
+                ASSERT_NEAR(again->theta[i], layer.theta[i], 1e-12) << "layer " << k << " " << i;
+            }
+        }
+    }
+}
+
 TEST(LayerOverrides, MarginChangesItsLayerAndAtMostTheNeighboursJunctions) {
     const ScheduleInput input = fiveRevolutionHelix();
     const auto plain = schedule(input, bestPreset());

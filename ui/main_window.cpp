@@ -124,6 +124,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     splitter->addWidget(m_layers);
     splitter->addWidget(tabs);
     splitter->setStretchFactor(1, 2);
+    splitter->setSizes({420, 780});
     setCentralWidget(splitter);
 
     m_undo.setUndoLimit(500);
@@ -156,7 +157,7 @@ QWidget* MainWindow::buildEditorPage() {
     connect(m_editor, &SThetaEditor::keyPointsEdited, this, &MainWindow::onKeyPointsEdited);
     m_section = new SectionView(split);
     m_section->setToolTip(tr("The layer in its section plane: blade section, ball-centre path, "
-                             "original (grey) and re-scheduled tool axes"));
+                             "original (orange) and re-scheduled (blue) tool axes"));
     split->addWidget(m_editor);
     split->addWidget(m_section);
     split->setStretchFactor(0, 3);
@@ -301,6 +302,10 @@ void MainWindow::showResult(job::DisplayScene scene) {
     if (m_result->comparison) {
         m_plots->setComparison(*m_result->comparison);
         m_comparison->setComparison(*m_result->comparison);
+        // The comparison's stheta-best is the preset's; the edited program is shown beside it.
+        if (!m_spec.layerEdits.empty() && m_result->rescheduled) {
+            m_plots->addProfile(tr("edited"), m_result->rescheduled->profile);
+        }
     } else {
         m_plots->setProfiles(m_result->original, m_result->rescheduled
                                                      ? std::optional(m_result->rescheduled->profile)

@@ -1,7 +1,9 @@
 #include "ui/s_theta_editor.h"
 
+#include "core/base/units.h"
 #include "core/scheduling/layer_edit.h"
 
+#include <QFontMetricsF>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -11,7 +13,8 @@
 namespace bladeaxis::ui {
 namespace {
 
-constexpr double kMargin = 30.0;
+constexpr double kMargin = 44.0; // room for the tick labels
+constexpr int kTicks = 5;
 constexpr double kPickRadius = 8.0;
 
 } // namespace
@@ -174,9 +177,67 @@ void SThetaEditor::paintEvent(QPaintEvent*) {
         painter.drawText(rect(), Qt::AlignCenter, tr("Select a layer"));
         return;
     }
+    paintAxes(painter);
     paintBands(painter);
     paintCurves(painter);
+    paintLegend(painter);
     paintMessages(painter);
+}
+
+// S in mm along the bottom, theta in degrees (relative to the layer start) up the left side.
+void SThetaEditor::paintAxes(QPainter& painter) const {
+    const auto& l = *m_layer;
+    const QColor text = palette().text().color();
+    painter.setPen(QPen(palette().mid().color(), 1.0));
+    const QPointF origin = toWidget(l.s.front(), m_thetaLow);
+    const QPointF xEnd = toWidget(l.s.back(), m_thetaLow);
+    const QPointF yEnd = toWidget(l.s.front(), m_thetaHigh);
+    painter.drawLine(origin, xEnd);
+    painter.drawLine(origin, yEnd);
+    painter.setPen(text);
+    const QFontMetricsF metrics(painter.font());
+    for (int k = 0; k <= kTicks; ++k) {
+        const double f = static_cast<double>(k) / kTicks;
+        const double s = l.s.front() + f * (l.s.back() - l.s.front());
+        const QPointF x = toWidget(s, m_thetaLow);
+        const QString sLabel = QString::number(s, 'f', 0);
+        painter.drawLine(x, x + QPointF(0.0, 4.0));
+        painter.drawText(x + QPointF(-0.5 * metrics.horizontalAdvance(sLabel), 16.0), sLabel);
+        const double theta = m_thetaLow + f * (m_thetaHigh - m_thetaLow);
+        const QPointF y = toWidget(l.s.front(), theta);
+        const QString thetaLabel = QString::number(units::radToDeg(theta), 'f', 0);
+        painter.drawLine(y, y - QPointF(4.0, 0.0));
+        painter.drawText(y + QPointF(-6.0 - metrics.horizontalAdvance(thetaLabel), 4.0),
+                         thetaLabel);
+    }
+    painter.drawText(QPointF(width() - kMargin - 40.0, height() - 4.0), tr("S [mm]"));
+    painter.drawText(QPointF(4.0, kMargin - 24.0), tr("θ [°]"));
+}
+
+void SThetaEditor::paintLegend(QPainter& painter) const {
+    struct Entry {
+        QString name;
+        QColor colour;
+        bool band;
+    };
+    const Entry entries[] = {{tr("raw channel"), QColor(120, 160, 220, 110), true},
+                             {tr("monotone hull"), QColor(80, 180, 120, 140), true},
+                             {tr("original θ"), QColor(150, 150, 150), false},
+                             {tr("key points"), QColor(230, 140, 30), false},
+                             {tr("scheduled θ"), QColor(200, 40, 40), false}};
+    double y = kMargin + 4.0;
+    const double x = width() - kMargin - 110.0;
+    for (const Entry& entry : entries) {
+        if (entry.band) {
+            painter.fillRect(QRectF(x, y - 8.0, 18.0, 10.0), entry.colour);
+        } else {
+            painter.setPen(QPen(entry.colour, 2.0));
+            painter.drawLine(QPointF(x, y - 3.0), QPointF(x + 18.0, y - 3.0));
+        }
+        painter.setPen(palette().text().color());
+        painter.drawText(QPointF(x + 24.0, y + 1.0), entry.name);
+        y += 15.0;
+    }
 }
 
 // Raw channel (blue) and monotone hull (green) as bands.

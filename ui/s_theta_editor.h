@@ -52,6 +52,8 @@ class SThetaEditor final : public QWidget {
     Vec2 fromWidget(QPointF point) const;
     std::optional<std::size_t> vertexNear(QPointF point) const;
     void finishEdit(std::vector<Vec2> before, std::vector<Vec2> after, const QString& text);
+    void paintAxes(QPainter& painter) const;
+    void paintLegend(QPainter& painter) const;
     void paintBands(QPainter& painter) const;
     void paintCurves(QPainter& painter) const;
     void paintMessages(QPainter& painter) const;

@@ -167,6 +167,7 @@ class MainWindowTest final : public QObject {
         QVERIFY(waitForEdits());
         const auto& layer = m_window->result()->rescheduled->schedule.layers[target];
         QVERIFY(layer.polyline == afterKeys);
+        QVERIFY(m_window->plots()->methods().contains(QStringLiteral("edited")));
         QVERIFY(m_window->result()->rescheduled->schedule.check.reversals == 0);
         QCOMPARE(m_window->selectedLayer(), target);
         const std::string gui = BLADEAXIS_GUI_OUTPUT_DIR "/gui_edited.nc";

@@ -232,6 +232,7 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply) {
             spec.cad.placement.translation = m_cadTranslation;
         }
         spec.compare = m_compareAction->isChecked();
+        spec.compareOptimum = m_optimumAction->isChecked();
         m_spec = spec;
     }
     // Edits do not change the comparison (its methods schedule the preset's own layers): a

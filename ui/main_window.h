@@ -152,6 +152,7 @@ class MainWindow final : public QMainWindow {
     QLabel* m_cadLabel = nullptr;
     QMenu* m_recentMenu = nullptr;
     QAction* m_compareAction = nullptr;
+    QAction* m_optimumAction = nullptr;
     QAction* m_darkAction = nullptr;
 };
 

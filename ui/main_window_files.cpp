@@ -36,6 +36,7 @@ constexpr int kMaxRecentFiles = 8;
 const char* const kRecentKey = "recentFiles";
 const char* const kDarkKey = "view/dark";
 const char* const kCompareKey = "job/compare";
+const char* const kOptimumKey = "job/optimum";
 const char* const kMachineKey = "job/machine";
 const char* const kToolRadiusKey = "job/toolRadius";
 
@@ -105,6 +106,11 @@ void MainWindow::buildEditMenu() {
     m_compareAction->setChecked(true);
     m_compareAction->setToolTip(tr("Also run quaternion interpolation, both S-θ presets and the "
                                    "optimum on the same ball centres (next job)"));
+    m_optimumAction = edit->addAction(tr("Compare with the &optimum"));
+    m_optimumAction->setCheckable(true);
+    m_optimumAction->setChecked(true);
+    m_optimumAction->setToolTip(tr("Include optimal-qp and optimal-lp in the comparison (slow on "
+                                   "large programs)"));
 }
 
 void MainWindow::buildViewMenu() {
@@ -190,6 +196,9 @@ void MainWindow::restoreSettings() {
     m_compareAction->setChecked(settings.value(kCompareKey, true).toBool());
     connect(m_compareAction, &QAction::toggled, this,
             [](bool on) { QSettings().setValue(kCompareKey, on); });
+    m_optimumAction->setChecked(settings.value(kOptimumKey, true).toBool());
+    connect(m_optimumAction, &QAction::toggled, this,
+            [](bool on) { QSettings().setValue(kOptimumKey, on); });
     m_toolRadius->setValue(settings.value(kToolRadiusKey, 0.0).toDouble());
     const QString machine = settings.value(kMachineKey).toString();
     if (!machine.isEmpty() && QFileInfo::exists(machine)) {

@@ -72,6 +72,7 @@ struct RawOptions {
     bool analyseOnly = false;
     bool compare = false;
     bool sweep = false;
+    bool noOptimum = false;
     bool reproduce = false;
     int blades = 36;
 };
@@ -99,6 +100,8 @@ void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
                     "Also compare with the other methods: compare.json, compare.csv, report.html");
     group->add_flag("--sweep", raw.sweep,
                     "With --compare: machining times with the rotary-axis limits x0.5 ... x2");
+    group->add_flag("--no-optimum", raw.noOptimum,
+                    "With --compare: leave out the optimal schedules (slow on large programs)");
     for (const job::ParameterInfo& info : job::scheduleParameterSchema()) {
         std::string help = info.help;
         if (!info.unit.empty()) {
@@ -209,6 +212,7 @@ Status applySchedule(const RawOptions& raw, BatchOptions& options) {
     options.job.reschedule = !raw.analyseOnly;
     options.job.compare = raw.compare || raw.sweep;
     options.job.sweepLimits = raw.sweep;
+    options.job.compareOptimum = !raw.noOptimum;
     if (raw.analyseOnly && (!options.job.outputProgram.empty() || !options.job.outputCl.empty())) {
         return makeError(ErrorCode::InvalidArgument,
                          "--analyse-only and --output/--cl-output exclude each other");

@@ -226,6 +226,7 @@ Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& ca
     context.analysis.toolRadius = context.toolRadius;
     compare::CompareOptions options;
     options.best = spec.parameters;
+    options.optimum = spec.compareOptimum;
     // The job's schedule: same centres, same parameters; an edited one is not the preset's.
     if (result.rescheduled && spec.layerEdits.empty()) {
         options.bestSchedule = &result.rescheduled->schedule;

@@ -27,9 +27,10 @@ struct JobSpec {
     std::filesystem::path machineFile; // empty: the built-in default blade machine
     std::optional<double> toolRadius;  // mm; overrides the radius stated in a CL file
     analysis::AxisProfileOptions analysis;
-    bool reschedule = true;   // false: analyse the input only (`--analyse-only`)
-    bool compare = false;     // also run and evaluate every comparison method (`--compare`)
-    bool sweepLimits = false; // with compare: machining times with the rotary limits x0.5 ... x2
+    bool reschedule = true;     // false: analyse the input only (`--analyse-only`)
+    bool compare = false;       // also run and evaluate every comparison method (`--compare`)
+    bool sweepLimits = false;   // with compare: machining times with the rotary limits x0.5 ... x2
+    bool compareOptimum = true; // with compare: the optimal schedules (slow on large programs)
     scheduling::ScheduleParameters parameters = scheduling::bestPreset();
     std::string presetName = "best"; // recorded in the report; "custom" once edited
     // The engineer's edits of single layers (the GUI's S-theta editor), saved with the job and

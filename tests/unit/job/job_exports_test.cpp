@@ -85,3 +85,32 @@ TEST(LayerMotion, MatchesTheLayersOfReportJson) {
 
 } // namespace
 } // namespace bladeaxis::job
+
+namespace bladeaxis::job {
+namespace {
+
+TEST(CompareJob, WithoutTheOptimumLeavesOutTheOptimalMethods) {
+    JobSpec spec;
+    spec.demo = true;
+    spec.compare = true;
+    spec.compareOptimum = false;
+    NullProgressSink progress;
+    CancelToken cancel;
+    const auto result = runJob(spec, progress, cancel);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    ASSERT_TRUE(result->comparison.has_value());
+    EXPECT_EQ(result->comparison->find("optimal-qp"), nullptr);
+    EXPECT_EQ(result->comparison->find("optimal-lp"), nullptr);
+    EXPECT_NE(result->comparison->find("stheta-best"), nullptr);
+    EXPECT_NE(result->comparison->find("quaternion"), nullptr);
+}
+
+TEST(BatchCli, NoOptimumIsAcceptedWithCompare) {
+    std::ostringstream out, err;
+    const int code = app::runBatchCommandLine(
+        {"bladeaxis", "--batch", "--demo", "--quiet", "--compare", "--no-optimum"}, out, err);
+    EXPECT_EQ(code, 0) << err.str();
+}
+
+} // namespace
+} // namespace bladeaxis::job

@@ -188,6 +188,13 @@ std::vector<ParameterInfo> curveParameters() {
                    {"euclidean", scheduling::CornerForm::Euclidean},
                    {"graph-limit", scheduling::CornerForm::GraphLimit}},
                &P::cornerForm),
+        choice("corner_profile",
+               "Graph-limit corners: the paper's Bezier pair or the plateau corner whose peak "
+               "theta'' is 1.25x the least possible (docs/results.md)",
+               std::vector<std::pair<std::string, scheduling::CornerProfile>>{
+                   {"bezier", scheduling::CornerProfile::Bezier},
+                   {"plateau", scheduling::CornerProfile::Plateau}},
+               &P::cornerProfile),
         number("final_clearance_deg", "deg", "Clearance c_final kept after smoothing (§5.4)", 0, 45,
                &P::finalClearanceRad, kDeg),
         integer("eps_bisection_steps", "Bisection steps of the exact epsilon rule (§5.4)", 1, 200,

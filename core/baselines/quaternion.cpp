@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace bladeaxis::baselines {
 
@@ -292,6 +293,16 @@ Result<QuaternionResult> quaternionOrientations(const scheduling::ScheduleInput&
     if (settings.keysPerLayer < 1 || !(settings.margin >= 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
                          "quaternion settings: keys per layer >= 1 and margin >= 0 expected");
+    }
+    if (input.axes.size() != n) {
+        return makeError(ErrorCode::InvalidArgument, "one tool axis per ball centre expected");
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!input.centres[i].allFinite() || !input.axes[i].allFinite() ||
+            !std::isfinite(reference.thetaOriginalAbsolute[i])) {
+            return makeError(ErrorCode::Geometry,
+                             "CL point " + std::to_string(i) + " is not finite (NaN or infinite)");
+        }
     }
     const Frame frame = frameOf(input, reference);
     QuaternionResult result;

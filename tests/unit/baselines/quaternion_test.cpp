@@ -161,5 +161,62 @@ TEST(QuaternionBaseline, MismatchedReferenceIsAnError) {
     EXPECT_EQ(result.error().code, ErrorCode::InvalidArgument);
 }
 
+// Largest jump of the one-sided slopes dtheta/ds at the interior keys.
+double largestSlopeJumpAtKeys(const QuaternionResult& result) {
+    const auto theta = thetas(result.axes, demo().reference.traversalSign);
+    const auto& centres = demo().input.centres;
+    double largest = 0.0;
+    for (std::size_t k = 1; k + 1 < result.keys.size(); ++k) {
+        const std::size_t i = result.keys[k];
+        const double left = (theta[i] - theta[i - 1]) / (centres[i] - centres[i - 1]).norm();
+        const double right = (theta[i + 1] - theta[i]) / (centres[i + 1] - centres[i]).norm();
+        largest = std::max(largest, std::abs(right - left));
+    }
+    return largest;
+}
+
+// SLERP is only C0 at the keys (the angle rate jumps); SQUAD's tangent quaternions make the
+// rate continuous there, up to the unequal key spacing in arc length.
+TEST(QuaternionBaseline, SquadSmoothsTheRateJumpsOfSlerpAtTheKeys) {
+    QuaternionSettings slerp, squad;
+    slerp.maxAdaptiveKeys = squad.maxAdaptiveKeys = 0;
+    slerp.keysPerLayer = squad.keysPerLayer = 16;
+    squad.interpolation = QuaternionInterpolation::Squad;
+    auto a = quaternionOrientations(demo().input, demo().reference, slerp);
+    auto b = quaternionOrientations(demo().input, demo().reference, squad);
+    ASSERT_TRUE(a && b);
+    const double slerpJump = largestSlopeJumpAtKeys(*a);
+    const double squadJump = largestSlopeJumpAtKeys(*b);
+    EXPECT_GT(slerpJump, 0.0);
+    EXPECT_LT(squadJump, 0.5 * slerpJump) << "slerp " << slerpJump << " squad " << squadJump;
+}
+
+// With dense keys the great-circle axis SLERP (projected on the B0 cone) and the frame SLERP
+// agree closely: both join the same key orientations by the short way.
+TEST(QuaternionBaseline, VectorAndFrameSlerpAgreeBetweenDenseKeys) {
+    QuaternionSettings frame, vector;
+    frame.maxAdaptiveKeys = vector.maxAdaptiveKeys = 0;
+    frame.keysPerLayer = vector.keysPerLayer = 32;
+    vector.mode = QuaternionMode::Vector;
+    auto a = quaternionOrientations(demo().input, demo().reference, frame);
+    auto b = quaternionOrientations(demo().input, demo().reference, vector);
+    ASSERT_TRUE(a && b);
+    ASSERT_EQ(a->keys, b->keys);
+    double largest = 0.0;
+    for (std::size_t i = 0; i < a->axes.size(); ++i) {
+        largest = std::max(largest, std::acos(std::clamp(a->axes[i].dot(b->axes[i]), -1.0, 1.0)));
+    }
+    EXPECT_LT(largest, 0.02) << "rad";
+}
+
+TEST(QuaternionBaseline, NonFiniteInputIsAnErrorNotACrash) {
+    scheduling::ScheduleInput broken = demo().input;
+    broken.axes[broken.axes.size() / 2] = Vec3(std::nan(""), 0.0, 1.0);
+    auto result = quaternionOrientations(broken, demo().reference, {});
+    ASSERT_FALSE(result.has_value());
+    EXPECT_TRUE(result.error().code == ErrorCode::InvalidArgument ||
+                result.error().code == ErrorCode::Geometry);
+}
+
 } // namespace
 } // namespace bladeaxis::baselines

@@ -144,14 +144,21 @@ void fillGlyphs(vtkPolyData* data, const job::DisplayScene& scene, const std::ve
     data->Modified();
 }
 
-double peakSpeed(const job::DisplayScene& scene) {
-    double peak = 0.0;
+// Top of the colour bar: the 98th percentile of either program's speeds, so that the
+// original's reversal spikes do not turn the whole re-scheduled path blue (faster is red).
+double speedScaleOf(const job::DisplayScene& scene) {
+    double scale = 0.0;
     for (const auto* speeds : {&scene.aSpeedOriginal, &scene.aSpeedRescheduled}) {
-        for (const double speed : *speeds) {
-            peak = std::max(peak, speed);
+        if (speeds->empty()) {
+            continue;
         }
+        std::vector<double> sorted = *speeds;
+        const auto rank =
+            static_cast<std::ptrdiff_t>(0.98 * static_cast<double>(sorted.size() - 1));
+        std::nth_element(sorted.begin(), sorted.begin() + rank, sorted.end());
+        scale = std::max(scale, sorted[static_cast<std::size_t>(rank)]);
     }
-    return peak;
+    return scale;
 }
 
 } // namespace
@@ -220,7 +227,7 @@ void ToolpathView::showScene(const job::DisplayScene& scene) {
     if (scene.toolRadius > 0.0) {
         vtk.toolRadius = scene.toolRadius;
     }
-    vtk.speedScale = peakSpeed(scene);
+    vtk.speedScale = speedScaleOf(scene);
     fillSurface(vtk.surface.data, scene);
     fillPath(vtk.path.data, scene);
     const double glyphLength = scene.toolRadius > 0.0 ? 1.5 * scene.toolRadius : 10.0;
@@ -451,7 +458,8 @@ void ToolpathView::paintOverlay(QImage& frame) {
         painter.drawText(
             12, 20, original ? tr("|dA/dt| original (rad/s)") : tr("|dA/dt| re-scheduled (rad/s)"));
         painter.drawText(12, 56, QStringLiteral("0"));
-        painter.drawText(bar.right() - 30, 56, QString::number(m_vtk->speedScale, 'g', 3));
+        painter.drawText(bar.right() - 40, 56,
+                         QStringLiteral("\u2265 ") + QString::number(m_vtk->speedScale, 'g', 3));
     } else {
         painter.drawText(12, 20,
                          m_selected >= 0 ? tr("Coloured by layer; layer %1 in red").arg(m_selected)

@@ -24,6 +24,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTimer>
+#include <QToolBar>
 #include <QVBoxLayout>
 #include <cmath>
 #include <utility>
@@ -170,6 +171,9 @@ QWidget* MainWindow::buildEditorPage() {
 QWidget* MainWindow::build3dPage() {
     auto* page = new QWidget(this);
     auto* layout = new QVBoxLayout(page);
+    m_view3dBar = new QToolBar(page);
+    m_view3dBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    layout->addWidget(m_view3dBar);
     m_view3d = new ToolpathView(page);
     m_toolSlider = new QSlider(Qt::Horizontal, page);
     m_toolSlider->setToolTip(tr("Scrub along the toolpath: shows the tool (ball and shank) there"));

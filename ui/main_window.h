@@ -21,6 +21,7 @@ class QProgressBar;
 class QPushButton;
 class QSlider;
 class QTableWidget;
+class QToolBar;
 
 namespace bladeaxis::ui {
 
@@ -145,6 +146,7 @@ class MainWindow final : public QMainWindow {
     ComparisonTable* m_comparison = nullptr;
     ToolpathView* m_view3d = nullptr;
     QSlider* m_toolSlider = nullptr;
+    QToolBar* m_view3dBar = nullptr; // the View menu's 3D actions, above the 3D view
     QDoubleSpinBox* m_toolRadius = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;

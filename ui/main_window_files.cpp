@@ -125,28 +125,32 @@ void MainWindow::buildViewMenu() {
     view->addSeparator();
     auto* colouring = new QActionGroup(this);
     const std::pair<QString, ToolpathView::Colouring> colourings[] = {
-        {tr("Colour by &layer"), ToolpathView::Colouring::Layer},
-        {tr("Colour by &A speed (re-scheduled)"), ToolpathView::Colouring::ASpeed},
-        {tr("Colour by A speed (&original)"), ToolpathView::Colouring::OriginalASpeed}};
+        {tr("Colour: &layer"), ToolpathView::Colouring::Layer},
+        {tr("Colour: &A speed"), ToolpathView::Colouring::ASpeed},
+        {tr("Colour: A speed (&original)"), ToolpathView::Colouring::OriginalASpeed}};
     for (const auto& [text, mode] : colourings) {
         QAction* action = view->addAction(text);
         action->setCheckable(true);
         action->setChecked(mode == ToolpathView::Colouring::Layer);
         colouring->addAction(action);
+        m_view3dBar->addAction(action);
         connect(action, &QAction::triggered, this,
                 [this, value = mode] { m_view3d->setColouring(value); });
     }
+    m_view3dBar->addSeparator();
     view->addSeparator();
     const std::pair<QString, void (ToolpathView::*)(bool)> toggles[] = {
-        {tr("Show &blade surface"), &ToolpathView::setSurfaceVisible},
-        {tr("Show &original tool axes"), &ToolpathView::setOriginalAxesVisible},
-        {tr("Show re-&scheduled tool axes"), &ToolpathView::setRescheduledAxesVisible}};
+        {tr("&Blade"), &ToolpathView::setSurfaceVisible},
+        {tr("&Original axes"), &ToolpathView::setOriginalAxesVisible},
+        {tr("Re-&scheduled axes"), &ToolpathView::setRescheduledAxesVisible}};
     for (const auto& [text, setter] : toggles) {
         QAction* action = view->addAction(text);
         action->setCheckable(true);
         action->setChecked(true);
+        m_view3dBar->addAction(action);
         connect(action, &QAction::toggled, m_view3d, setter);
     }
+    m_view3dBar->addSeparator();
     view->addSeparator();
     const std::tuple<QString, QString, void (ToolpathView::*)()> presets[] = {
         {tr("&Front"), tr("1"), &ToolpathView::viewFront},
@@ -156,6 +160,7 @@ void MainWindow::buildViewMenu() {
         {tr("&Fit"), tr("F"), &ToolpathView::fitView}};
     for (const auto& [text, key, slot] : presets) {
         QAction* action = menuAction(view, text, QKeySequence(key), tr("3D view preset"));
+        m_view3dBar->addAction(action);
         connect(action, &QAction::triggered, m_view3d, slot);
     }
 }

@@ -5,6 +5,7 @@
 
 #include "core/job/job.h"
 #include "core/report/compare_report.h"
+#include "tests/gui/image_checks.h"
 #include "ui/comparison_table.h"
 #include "ui/profile_plots.h"
 
@@ -25,33 +26,13 @@
 
 namespace {
 
+using bladeaxis::gui_test::distinctColours;
+using bladeaxis::gui_test::pixelsNear;
 using bladeaxis::ui::ComparisonTable;
 using bladeaxis::ui::ProfilePlots;
 
-std::size_t distinctColours(const QImage& image) {
-    std::set<QRgb> colours;
-    for (int y = 0; y < image.height(); y += 2) {
-        for (int x = 0; x < image.width(); x += 2) {
-            colours.insert(image.pixel(x, y));
-        }
-    }
-    return colours.size();
-}
-
-// Pixels within a small distance of `colour` (antialiasing blends the line edges).
-std::size_t pixelsNear(const QImage& image, const QColor& colour) {
-    std::size_t count = 0;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            const QColor pixel = QColor::fromRgb(image.pixel(x, y));
-            const int distance = std::abs(pixel.red() - colour.red()) +
-                                 std::abs(pixel.green() - colour.green()) +
-                                 std::abs(pixel.blue() - colour.blue());
-            count += distance < 24 ? 1U : 0U;
-        }
-    }
-    return count;
-}
+// Antialiasing blends the line edges: per channel, this close counts as the line colour.
+constexpr int kLineTolerance = 8;
 
 // A key the report may leave out (T2 without a time-optimal result): null when absent.
 nlohmann::json optionalField(const nlohmann::json& object, const char* key) {
@@ -84,16 +65,9 @@ class ComparisonTest final : public QObject {
 
   private slots:
     void initTestCase() {
-        bladeaxis::job::JobSpec spec;
-        spec.demo = true;
-        spec.compare = true;
-        bladeaxis::NullProgressSink progress;
-        bladeaxis::CancelToken cancel;
-        auto result = bladeaxis::job::runJob(spec, progress, cancel);
-        QVERIFY2(result.has_value(), result ? "" : result.error().toString().c_str());
-        QVERIFY(result->comparison.has_value());
-        QVERIFY(result->rescheduled.has_value());
-        m_result = std::move(*result);
+        m_result = bladeaxis::gui_test::runDemoJob(true);
+        QVERIFY(m_result->comparison.has_value());
+        QVERIFY(m_result->rescheduled.has_value());
         QVERIFY(comparison().find("quaternion") != nullptr);
         QVERIFY(comparison().find("optimal-qp") != nullptr);
     }
@@ -252,7 +226,7 @@ class ComparisonTest final : public QObject {
             if (method.method != "original") { // the original is drawn in the text colour
                 const QColor colour =
                     ProfilePlots::methodColour(QString::fromStdString(method.method), false);
-                QVERIFY2(pixelsNear(all, colour) > 100, method.method.c_str());
+                QVERIFY2(pixelsNear(all, colour, kLineTolerance) > 100, method.method.c_str());
             }
         }
 
@@ -268,7 +242,8 @@ class ComparisonTest final : public QObject {
         QVERIFY(!plots.isMethodVisible(QStringLiteral("stheta-best")));
         const QImage hidden = grabbed(plots, "comparison_plots_hidden.png");
         QVERIFY(hidden != all);
-        QVERIFY(pixelsNear(hidden, best) * 4 < pixelsNear(all, best));
+        QVERIFY(pixelsNear(hidden, best, kLineTolerance) * 4 <
+                pixelsNear(all, best, kLineTolerance));
 
         // The hover readout lists the visible methods only, each at the hovered time.
         const QString readout = plots.valuesAt(1.0, ProfilePlots::AVelocity);
@@ -316,7 +291,7 @@ class ComparisonTest final : public QObject {
         const QColor corner = QColor::fromRgb(image.pixel(image.width() - 2, image.height() - 2));
         QVERIFY(corner.lightness() < 128);
         const QColor best = ProfilePlots::methodColour(QStringLiteral("stheta-best"), true);
-        QVERIFY(pixelsNear(image, best) > 100);
+        QVERIFY(pixelsNear(image, best, kLineTolerance) > 100);
     }
 
     void plotsWithoutAComparisonShowTheJobsBeforeAndAfter() {

@@ -5,6 +5,7 @@
 #include "app/batch/batch_runner.h"
 #include "core/io/program.h"
 #include "core/job/job_file.h"
+#include "tests/gui/image_checks.h"
 #include "ui/comparison_table.h"
 #include "ui/layer_settings_panel.h"
 #include "ui/main_window.h"
@@ -36,17 +37,6 @@
 namespace {
 
 constexpr int kJobTimeoutMs = 240'000;
-
-// Distinct colours in the image: a blank (unpainted) window has one or two.
-std::size_t distinctColours(const QImage& image) {
-    std::set<QRgb> colours;
-    for (int y = 0; y < image.height(); y += 2) {
-        for (int x = 0; x < image.width(); x += 2) {
-            colours.insert(image.pixel(x, y));
-        }
-    }
-    return colours.size();
-}
 
 std::string fileBytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -252,7 +242,7 @@ class MainWindowTest final : public QObject {
     void screenshotOfTheMainWindowIsNotBlank() {
         const QImage image = m_window->grab().toImage();
         QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window.png")));
-        QVERIFY(distinctColours(image) > 10);
+        QVERIFY(bladeaxis::gui_test::distinctColours(image) > 10);
     }
 
     void beforeAfterPlotsAndDarkPaletteRender() {
@@ -260,11 +250,11 @@ class MainWindowTest final : public QObject {
         plots->resize(800, 600);
         const QImage light = plots->grab().toImage();
         QVERIFY(light.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/axis_motion.png")));
-        QVERIFY(distinctColours(light) > 10);
+        QVERIFY(bladeaxis::gui_test::distinctColours(light) > 10);
         m_window->setDarkPalette(true);
         const QImage dark = m_window->grab().toImage();
         QVERIFY(dark.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window_dark.png")));
-        QVERIFY(distinctColours(dark) > 10);
+        QVERIFY(bladeaxis::gui_test::distinctColours(dark) > 10);
         m_window->setDarkPalette(false);
     }
 

@@ -3,6 +3,7 @@
 
 #include "core/job/display_scene.h"
 #include "core/job/job.h"
+#include "tests/gui/image_checks.h"
 #include "ui/section_view.h"
 
 #include <QImage>
@@ -11,36 +12,11 @@
 
 namespace {
 
+using bladeaxis::gui_test::distinctColours;
+using bladeaxis::gui_test::pixelsNear;
+
 bladeaxis::job::DisplayScene demoScene() {
-    bladeaxis::job::JobSpec spec;
-    spec.demo = true;
-    bladeaxis::NullProgressSink progress;
-    bladeaxis::CancelToken cancel;
-    auto job = bladeaxis::job::runJob(spec, progress, cancel);
-    if (!job) {
-        qFatal("demo job failed: %s", job.error().toString().c_str());
-    }
-    return bladeaxis::job::buildDisplayScene(*job);
-}
-
-std::size_t distinctColours(const QImage& image) {
-    std::set<QRgb> colours;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            colours.insert(image.pixel(x, y));
-        }
-    }
-    return colours.size();
-}
-
-std::size_t pixelsOf(const QImage& image, const QColor& colour) {
-    std::size_t count = 0;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            count += image.pixelColor(x, y) == colour ? 1U : 0U;
-        }
-    }
-    return count;
+    return bladeaxis::job::buildDisplayScene(bladeaxis::gui_test::runDemoJob(false));
 }
 
 // The section is filled with this colour (section_view.cpp), the axes are orange and blue.
@@ -63,7 +39,7 @@ class SectionViewTest final : public QObject {
     void withoutALayerTheViewAsksForOne() {
         m_view.clearLayer();
         const QImage image = m_view.grab().toImage();
-        QCOMPARE(pixelsOf(image, kSectionFill), std::size_t{0});
+        QCOMPARE(pixelsNear(image, kSectionFill, 0), std::size_t{0});
     }
 
     void selectedLayerShowsItsSectionCentresAndBothAxes() {
@@ -73,12 +49,12 @@ class SectionViewTest final : public QObject {
         const QImage image = m_view.grab().toImage();
         QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/section_view.png")));
         QVERIFY(distinctColours(image) > 20);
-        const double sectionShare = static_cast<double>(pixelsOf(image, kSectionFill)) /
+        const double sectionShare = static_cast<double>(pixelsNear(image, kSectionFill, 0)) /
                                     static_cast<double>(image.width() * image.height());
         qInfo("section view: the blade section fills %.1f %% of the view", 100.0 * sectionShare);
         QVERIFY(sectionShare > 0.02);
-        QVERIFY(pixelsOf(image, kOriginal) > 50);
-        QVERIFY(pixelsOf(image, kRescheduled) > 50);
+        QVERIFY(pixelsNear(image, kOriginal, 0) > 50);
+        QVERIFY(pixelsNear(image, kRescheduled, 0) > 50);
     }
 
     void anotherLayerDrawsDifferently() {
@@ -92,7 +68,7 @@ class SectionViewTest final : public QObject {
     void layerOutsideTheSceneClearsTheView() {
         m_view.setLayer(m_scene, static_cast<int>(m_scene.layers.size()));
         QCOMPARE(m_view.layer(), -1);
-        QCOMPARE(pixelsOf(m_view.grab().toImage(), kSectionFill), std::size_t{0});
+        QCOMPARE(pixelsNear(m_view.grab().toImage(), kSectionFill, 0), std::size_t{0});
     }
 
   private:

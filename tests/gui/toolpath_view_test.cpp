@@ -3,6 +3,7 @@
 
 #include "core/job/display_scene.h"
 #include "core/job/job.h"
+#include "tests/gui/image_checks.h"
 #include "ui/toolpath_view.h"
 
 #include <QImage>
@@ -12,29 +13,12 @@ namespace {
 
 using bladeaxis::ui::ToolpathView;
 
-const bladeaxis::job::JobResult& demoResult() {
-    static const bladeaxis::job::JobResult result = [] {
-        bladeaxis::job::JobSpec spec;
-        spec.demo = true;
-        bladeaxis::NullProgressSink progress;
-        bladeaxis::CancelToken cancel;
-        auto job = bladeaxis::job::runJob(spec, progress, cancel);
-        if (!job) {
-            qFatal("demo job failed: %s", job.error().toString().c_str());
-        }
-        return std::move(*job);
-    }();
-    return result;
-}
+using bladeaxis::gui_test::pixelsNear;
+using bladeaxis::gui_test::shareDifferentFrom;
 
-double shareDifferentFrom(const QImage& image, QRgb background) {
-    std::size_t covered = 0;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            covered += image.pixel(x, y) != background ? 1U : 0U;
-        }
-    }
-    return static_cast<double>(covered) / static_cast<double>(image.width() * image.height());
+const bladeaxis::job::JobResult& demoResult() {
+    static const bladeaxis::job::JobResult result = bladeaxis::gui_test::runDemoJob(false);
+    return result;
 }
 
 // Pixels that differ between two frames of the same size.
@@ -46,22 +30,6 @@ std::size_t changedPixels(const QImage& a, const QImage& b) {
         }
     }
     return changed;
-}
-
-// Pixels close to a colour (the section is drawn in yellow, nothing else is).
-std::size_t pixelsNear(const QImage& image, const QColor& colour, int tolerance) {
-    std::size_t count = 0;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            const QColor c = image.pixelColor(x, y);
-            count += std::abs(c.red() - colour.red()) <= tolerance &&
-                             std::abs(c.green() - colour.green()) <= tolerance &&
-                             std::abs(c.blue() - colour.blue()) <= tolerance
-                         ? 1U
-                         : 0U;
-        }
-    }
-    return count;
 }
 
 bool save(const QImage& image, const char* name) {

@@ -14,7 +14,7 @@
 #include "core/job/job.h"
 #include "core/job/reschedule.h"
 #include "core/kinematics/machine_model.h"
-#include "tests/bench/million_tile.h"
+#include "tests/bench/million_program.h"
 
 #include <benchmark/benchmark.h>
 
@@ -22,69 +22,18 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace {
 
 using namespace bladeaxis;
 namespace fs = std::filesystem;
+using bench::fail;
 
 constexpr double kToolRadius = 8.0;          // mm, the demo path's ball
-constexpr int kTiles = bench::kMillionTiles; // 1,007,361 records
-
-[[noreturn]] void fail(const char* what, const Error& error) {
-    std::fprintf(stderr, "%s: %s\n", what, error.toString().c_str());
-    std::exit(1);
-}
-
-toolpath::Toolpath tiledPath() {
-    const blade::BladeSpec bladeSpec = bench::twistFreeDemoBlade();
-    const blade::HelicalPathSpec pathSpec = bench::fineTilePath();
-    auto bladeModel = blade::Blade::create(bladeSpec);
-    if (!bladeModel) {
-        fail("blade", bladeModel.error());
-    }
-    auto tile = blade::generateHelicalPath(*bladeModel, pathSpec);
-    if (!tile) {
-        fail("path", tile.error());
-    }
-    const double advance = pathSpec.pitch * pathSpec.revolutions;
-    toolpath::Toolpath path;
-    path.sourceFile = "million.nc";
-    const auto& records = tile->path.records;
-    for (int t = 0; t < kTiles; ++t) {
-        // The closing record of a tile is the first record of the next one.
-        const std::size_t count = records.size() - (t + 1 < kTiles ? 1 : 0);
-        for (std::size_t i = 0; i < count; ++i) {
-            toolpath::ClRecord record = records[i];
-            record.tip.x() += advance * t;
-            path.records.push_back(record);
-        }
-    }
-    return path;
-}
 
 const fs::path& millionProgram() {
-    static const fs::path file = [] {
-        const fs::path path = fs::temp_directory_path() / "bladeaxis_bench_million.nc";
-        const pid_t child = fork();
-        if (child == 0) {
-            auto text = io::nc::emitGcode(tiledPath(), kinematics::defaultBladeMachine(), {});
-            if (!text) {
-                fail("emit", text.error());
-            }
-            const Status written = writeFileAtomically(path, *text);
-            std::_Exit(written ? 0 : 1);
-        }
-        int status = 0;
-        if (child < 0 || waitpid(child, &status, 0) != child || !WIFEXITED(status) ||
-            WEXITSTATUS(status) != 0) {
-            std::fprintf(stderr, "could not generate %s\n", path.c_str());
-            std::exit(1);
-        }
-        return path;
-    }();
+    static const fs::path file =
+        bench::writeMillionProgram(fs::temp_directory_path() / "bladeaxis_bench_million.nc");
     return file;
 }
 

@@ -12,7 +12,7 @@
 #include "core/io/program.h"
 #include "core/job/display_scene.h"
 #include "core/job/job.h"
-#include "tests/bench/million_tile.h"
+#include "tests/bench/million_program.h"
 #include "ui/toolpath_view.h"
 
 #include <benchmark/benchmark.h>
@@ -23,73 +23,24 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace {
 
 using namespace bladeaxis;
 namespace fs = std::filesystem;
+using bench::fail;
 using Clock = std::chrono::steady_clock;
 
 constexpr double kToolRadius = 8.0; // mm, the demo path's ball
 constexpr int kFrameWidth = 800, kFrameHeight = 600;
 
-[[noreturn]] void fail(const char* what, const Error& error) {
-    std::fprintf(stderr, "%s: %s\n", what, error.toString().c_str());
-    std::exit(1);
-}
-
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-toolpath::Toolpath millionRecordPath() {
-    auto bladeModel = blade::Blade::create(bench::twistFreeDemoBlade());
-    if (!bladeModel) {
-        fail("blade", bladeModel.error());
-    }
-    const blade::HelicalPathSpec pathSpec = bench::fineTilePath();
-    auto tile = blade::generateHelicalPath(*bladeModel, pathSpec);
-    if (!tile) {
-        fail("path", tile.error());
-    }
-    const double advance = pathSpec.pitch * pathSpec.revolutions;
-    toolpath::Toolpath path;
-    path.sourceFile = "million.nc";
-    const auto& records = tile->path.records;
-    for (int t = 0; t < bench::kMillionTiles; ++t) {
-        // The closing record of a tile is the first record of the next one.
-        const std::size_t count = records.size() - (t + 1 < bench::kMillionTiles ? 1 : 0);
-        for (std::size_t i = 0; i < count; ++i) {
-            toolpath::ClRecord record = records[i];
-            record.tip.x() += advance * t;
-            path.records.push_back(record);
-        }
-    }
-    return path;
-}
-
 const fs::path& millionProgram() {
-    static const fs::path file = [] {
-        const fs::path path = fs::temp_directory_path() / "bladeaxis_bench_view_million.nc";
-        const pid_t child = fork();
-        if (child == 0) {
-            auto text =
-                io::nc::emitGcode(millionRecordPath(), kinematics::defaultBladeMachine(), {});
-            if (!text) {
-                fail("emit", text.error());
-            }
-            std::_Exit(writeFileAtomically(path, *text) ? 0 : 1);
-        }
-        int status = 0;
-        if (child < 0 || waitpid(child, &status, 0) != child || !WIFEXITED(status) ||
-            WEXITSTATUS(status) != 0) {
-            std::fprintf(stderr, "could not generate %s\n", path.c_str());
-            std::exit(1);
-        }
-        return path;
-    }();
+    static const fs::path file =
+        bench::writeMillionProgram(fs::temp_directory_path() / "bladeaxis_bench_view_million.nc");
     return file;
 }
 

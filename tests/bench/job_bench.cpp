@@ -29,7 +29,7 @@ using namespace bladeaxis;
 namespace fs = std::filesystem;
 using bench::fail;
 
-constexpr double kToolRadius = 8.0;          // mm, the demo path's ball
+constexpr double kToolRadius = 8.0; // mm, the demo path's ball
 
 const fs::path& millionProgram() {
     static const fs::path file =

@@ -52,19 +52,78 @@ void markInfeasible(LayerProblem& problem, std::size_t k, const std::string& why
                                "; the original orientation is kept");
 }
 
-// §2.5 / §3.1 / §4.6 checks of the end values against the hull.
-void checkEnds(LayerProblem& p, const AbsoluteLayer& a, double startAbs, double endAbs,
-               std::size_t k) {
-    const MonotoneHull& h = a.hull;
+// §2.5 / §3.1 / §4.6: why the end values cannot be joined monotonically inside the hull, or
+// nullptr when they can.
+const char* infeasibility(const MonotoneHull& h, double startAbs, double endAbs) {
     if (h.infeasible) {
-        markInfeasible(p, k, "the monotone hull is empty even without margin (pinch)");
-    } else if (startAbs < h.lo.front() - kEndTolerance || startAbs > h.hi.front() + kEndTolerance) {
-        markInfeasible(p, k, "the start orientation lies outside the hull");
-    } else if (endAbs < h.lo.back() - kEndTolerance || endAbs > h.hi.back() + kEndTolerance) {
-        markInfeasible(p, k, "the end orientation lies outside the hull");
-    } else if (endAbs - startAbs < -kEndTolerance || endAbs - startAbs > 2.0 * units::kTwoPi) {
-        markInfeasible(p, k, "inconsistent base points (theta_e outside [0, 4 pi])");
+        return "the monotone hull is empty even without margin (pinch)";
     }
+    if (startAbs < h.lo.front() - kEndTolerance || startAbs > h.hi.front() + kEndTolerance) {
+        return "the start orientation lies outside the hull";
+    }
+    if (endAbs < h.lo.back() - kEndTolerance || endAbs > h.hi.back() + kEndTolerance) {
+        return "the end orientation lies outside the hull";
+    }
+    if (endAbs - startAbs < -kEndTolerance || endAbs - startAbs > 2.0 * units::kTwoPi) {
+        return "inconsistent base points (theta_e outside [0, 4 pi])";
+    }
+    return nullptr;
+}
+
+struct LayerEnds {
+    double startAbs = 0.0, endAbs = 0.0;
+};
+
+// §3.1 junction values, or §3.3 free ends: the input orientation clamped into the hull, keeping
+// theta monotone.
+LayerEnds endsOf(const AbsoluteLayer& a, const LayerSpan& span, double startJunction,
+                 double endJunction) {
+    const MonotoneHull& h = a.hull;
+    LayerEnds ends;
+    ends.startAbs = span.startFree ? std::clamp(a.original.front(), h.lo.front(),
+                                                std::max(h.lo.front(), h.hi.front()))
+                                   : startJunction;
+    ends.endAbs = span.endFree ? std::clamp(a.original.back(), std::max(h.lo.back(), ends.startAbs),
+                                            std::max({h.hi.back(), h.lo.back(), ends.startAbs}))
+                               : endJunction;
+    return ends;
+}
+
+// [A] A layer that keeps its original orientation (MONOTONE_INFEASIBLE) does not end at the
+// junction angles its neighbours were given, so joining them there would make the rotary axis
+// jump at both base points. Its neighbours' shared ends become free ends instead (§3.3): they
+// meet the kept original orientation itself, clamped into their hull, and the junction stays
+// continuous whenever the original lies inside it. One pass suffices: freeing an end only
+// clamps it into its own hull, so no further layer becomes infeasible.
+std::vector<LayerSpan> spansAroundKeptLayers(const LayerSplit& split,
+                                             std::span<const AbsoluteLayer> absolute,
+                                             std::span<const double> junction,
+                                             std::vector<std::string>& warnings) {
+    std::vector<LayerSpan> spans = split.layers;
+    const std::size_t count = spans.size();
+    std::vector<bool> kept(count, false);
+    for (std::size_t k = 0; k < count; ++k) {
+        const LayerEnds ends = endsOf(absolute[k], spans[k], junction[k], junction[k + 1]);
+        kept[k] = infeasibility(absolute[k].hull, ends.startAbs, ends.endAbs) != nullptr;
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+        if (!kept[k]) {
+            continue;
+        }
+        if (k > 0 && !kept[k - 1] && !spans[k - 1].endFree) {
+            spans[k - 1].endFree = true;
+            warnings.push_back("layer " + std::to_string(k - 1) +
+                               " ends at the original orientation of the kept layer " +
+                               std::to_string(k));
+        }
+        if (k + 1 < count && !kept[k + 1] && !spans[k + 1].startFree) {
+            spans[k + 1].startFree = true;
+            warnings.push_back("layer " + std::to_string(k + 1) +
+                               " starts at the original orientation of the kept layer " +
+                               std::to_string(k));
+        }
+    }
+    return spans;
 }
 
 } // namespace
@@ -84,20 +143,18 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
     for (std::size_t k = 1; k < count; ++k) {
         junction[k] = std::min(absolute[k].hull.hi.front(), absolute[k - 1].hull.hi.back());
     }
+    std::vector<std::string> junctionWarnings;
+    const std::vector<LayerSpan> spans =
+        spansAroundKeptLayers(split, absolute, junction, junctionWarnings);
     std::vector<LayerProblem> problems(count);
     for (std::size_t k = 0; k < count; ++k) {
         LayerProblem& p = problems[k];
         AbsoluteLayer& a = absolute[k];
-        p.span = split.layers[k];
+        p.span = spans[k];
         const MonotoneHull& h = a.hull;
-        // §3.3 free ends: clamp the input orientation into the hull, keeping theta monotone.
-        const double startAbs = p.span.startFree ? std::clamp(a.original.front(), h.lo.front(),
-                                                              std::max(h.lo.front(), h.hi.front()))
-                                                 : junction[k];
-        const double endAbs = p.span.endFree
-                                  ? std::clamp(a.original.back(), std::max(h.lo.back(), startAbs),
-                                               std::max({h.hi.back(), h.lo.back(), startAbs}))
-                                  : junction[k + 1];
+        const LayerEnds ends = endsOf(a, p.span, junction[k], junction[k + 1]);
+        const double startAbs = ends.startAbs;
+        const double endAbs = ends.endAbs;
         p.reference = startAbs;
         p.startValue = 0.0;
         p.endValue = endAbs - startAbs;
@@ -115,7 +172,9 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
         if (p.shortLayer) {
             addFlag(p, LayerStatus::ShortLayer);
         }
-        checkEnds(p, a, startAbs, endAbs, k);
+        if (const char* why = infeasibility(h, startAbs, endAbs)) {
+            markInfeasible(p, k, why);
+        }
         // The absolute vectors move into the problem and become relative in place.
         const auto shifted = [startAbs](std::vector<double>& values) {
             for (double& v : values) {
@@ -128,6 +187,10 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
         p.lo = shifted(a.hull.lo);
         p.hi = shifted(a.hull.hi);
         p.original = shifted(a.original);
+    }
+    if (!problems.empty()) {
+        problems.front().warnings.insert(problems.front().warnings.begin(),
+                                         junctionWarnings.begin(), junctionWarnings.end());
     }
     return problems;
 }

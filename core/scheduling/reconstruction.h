@@ -22,6 +22,10 @@ struct ReconstructionCheck {
     double maxUnitError = 0.0;     // max ||V| - 1|
     double maxTiltError = 0.0;     // max |V . a - sin B0|
     std::size_t reversals = 0;     // sign changes of dtheta beyond tol::kReversalStepRad (§6.4)
+    // Largest |theta_end(k) - theta_start(k+1)| at a base point, rad: 0 when every layer meets its
+    // neighbour (§6.5); a layer kept original whose orientation lies outside its neighbour's hull
+    // leaves a step there.
+    double maxJunctionGapRad = 0.0;
 
     bool passes() const {
         return maxCentreErrorMm < 1e-9 && maxUnitError < 1e-12 && maxTiltError < 1e-12;

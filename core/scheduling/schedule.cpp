@@ -1,5 +1,6 @@
 #include "core/scheduling/schedule.h"
 
+#include "core/base/number_io.h"
 #include "core/base/tolerances.h"
 #include "core/base/units.h"
 #include "core/scheduling/channel.h"
@@ -42,6 +43,10 @@ const char* toString(LayerStatus status) {
 }
 
 namespace {
+
+// §6.5 asks for 1e-12 on the axis vectors; the angles of two layers that meet at a junction are
+// computed from the same junction value, so anything above round-off is a real step.
+constexpr double kJunctionGapRad = 1e-9;
 
 // Channel stage (§1.5-§2): everything before the layers become independent.
 struct ChannelStage {
@@ -215,6 +220,27 @@ void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput
     result.newTips = std::move(rebuilt.tips);
 }
 
+// §6.5 junction gap: where layer k ends and layer k+1 starts, in absolute angle. The shared
+// base point is written once, so a gap shows as a step of the rotary axis next to it.
+void checkJunctions(ScheduleResult& result) {
+    for (std::size_t k = 0; k + 1 < result.layers.size(); ++k) {
+        const LayerResult& before = result.layers[k];
+        const LayerResult& after = result.layers[k + 1];
+        if (before.theta.empty() || after.theta.empty()) {
+            continue;
+        }
+        const double gap = std::abs((before.junctionAngle + before.theta.back()) -
+                                    (after.junctionAngle + after.theta.front()));
+        result.check.maxJunctionGapRad = std::max(result.check.maxJunctionGapRad, gap);
+        if (gap > kJunctionGapRad) {
+            result.warnings.push_back("the orientation steps by " +
+                                      formatFixed(units::radToDeg(gap), 3) + " deg where layer " +
+                                      std::to_string(k) + " meets layer " + std::to_string(k + 1) +
+                                      " (input record " + std::to_string(after.first) + ")");
+        }
+    }
+}
+
 void addCheckWarnings(ScheduleResult& result) {
     if (!result.check.passes()) {
         result.warnings.push_back("reconstruction check failed: centre error " +
@@ -285,6 +311,7 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
         return std::unexpected(applied.error());
     }
     assemble(result, *path, input, outcomes);
+    checkJunctions(result);
     addCheckWarnings(result);
     return result;
 }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -187,6 +188,19 @@ TEST(ScheduleCases, TaperNearNinetyDegreesIsMonotoneInfeasibleAndKeepsTheOrigina
     }
     EXPECT_GT(infeasible, 0u);
     EXPECT_FALSE(result->warnings.empty());
+    // §6.5 junction gaps: measured at every base point, and any step is reported.
+    double largest = 0.0;
+    for (std::size_t k = 0; k + 1 < result->layers.size(); ++k) {
+        const LayerResult& a = result->layers[k];
+        const LayerResult& b = result->layers[k + 1];
+        largest = std::max(largest, std::abs(a.junctionAngle + a.theta.back() - b.junctionAngle -
+                                             b.theta.front()));
+    }
+    EXPECT_DOUBLE_EQ(result->check.maxJunctionGapRad, largest);
+    const bool stepReported = std::ranges::any_of(result->warnings, [](const std::string& w) {
+        return w.find("orientation steps by") != std::string::npos;
+    });
+    EXPECT_EQ(stepReported, largest > 1e-9);
 }
 
 TEST(ScheduleCases, NoisyCoordinatesStillGiveAMonotoneSchedule) {

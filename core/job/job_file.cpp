@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <optional>
+#include <utility>
 
 namespace bladeaxis::job {
 
@@ -25,6 +27,31 @@ int lineOfKey(std::string_view text, std::string_view key) {
     }
     return 1 +
            static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
+
+// The names of --derivatives, shared by the reader and the writer.
+constexpr std::pair<const char*, analysis::DerivativeMethod> kDerivativeMethods[] = {
+    {"spline", analysis::DerivativeMethod::Spline},
+    {"fd", analysis::DerivativeMethod::FiniteDifference},
+    {"filter", analysis::DerivativeMethod::Filtered},
+};
+
+std::optional<analysis::DerivativeMethod> derivativeMethodOf(std::string_view name) {
+    for (const auto& [key, method] : kDerivativeMethods) {
+        if (name == key) {
+            return method;
+        }
+    }
+    return std::nullopt;
+}
+
+const char* derivativeMethodName(analysis::DerivativeMethod method) {
+    for (const auto& [key, value] : kDerivativeMethods) {
+        if (value == method) {
+            return key;
+        }
+    }
+    return "spline";
 }
 
 class JobReader {
@@ -110,6 +137,22 @@ Status JobReader::analysisOptions(const Json& root, JobSpec& spec) const {
             return std::unexpected(feed.error());
         }
         spec.analysis.feedOverride = units::perMinuteToPerSecond(*feed);
+    }
+    if (root.contains("derivatives")) {
+        const Json& value = root.at("derivatives");
+        const auto method = value.is_string() ? derivativeMethodOf(value.get<std::string>())
+                                              : std::optional<analysis::DerivativeMethod>();
+        if (!method) {
+            return fail("derivatives", "expected \"spline\", \"fd\" or \"filter\"");
+        }
+        spec.analysis.method = *method;
+    }
+    if (root.contains("filter_ms")) {
+        auto window = positiveNumber(root, "filter_ms");
+        if (!window) {
+            return std::unexpected(window.error());
+        }
+        spec.analysis.filterSeconds = *window / 1000.0;
     }
     return {};
 }
@@ -339,6 +382,14 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
     if (!spec.layerEdits.empty()) {
         json["layer_edits"] = layerEditsJson(spec.layerEdits);
     }
+    // The analysis settings, so that a saved job re-runs to the same report.
+    json["feed_reference"] =
+        spec.analysis.feedReference == analysis::FeedReference::Tip ? "tip" : "centre";
+    if (spec.analysis.feedOverride > 0.0) {
+        json["feed_mm_min"] = units::perSecondToPerMinute(spec.analysis.feedOverride);
+    }
+    json["derivatives"] = derivativeMethodName(spec.analysis.method);
+    json["filter_ms"] = spec.analysis.filterSeconds * 1000.0;
     if (!spec.outputProgram.empty()) {
         json["output_program"] = relative(spec.outputProgram);
     }

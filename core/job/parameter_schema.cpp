@@ -145,11 +145,23 @@ std::vector<ParameterInfo> geometryParameters() {
                    {"local", scheduling::Visibility::Local},
                    {"global", scheduling::Visibility::Global}},
                &P::visibility),
+        flag("lead_band",
+             "Narrow the channel to lead angles lead_band_min_deg..max_deg from the surface "
+             "normal (§2.4)",
+             &P::leadBand),
+        number("lead_band_min_deg", "deg", "Smallest lead angle of the lead band (§2.4)", -89, 89,
+               &P::leadBandMinRad, kDeg),
+        number("lead_band_max_deg", "deg", "Largest lead angle of the lead band (§2.4)", -89, 89,
+               &P::leadBandMaxRad, kDeg),
         number("margin_deg", "deg", "Margin m from the channel before the monotone hull (§2.5)", 0,
                45, &P::marginRad, kDeg),
         flag("despike",
              "Replace isolated channel outliers by a local median (§4.6, non-conservative)",
              &P::despike),
+        flag("allow_nonmonotone",
+             "A layer without a monotone path gets the original projected into the raw channel "
+             "and smoothed (A may reverse) instead of keeping the original (§2.5)",
+             &P::allowNonmonotone),
     };
 }
 
@@ -174,6 +186,13 @@ std::vector<ParameterInfo> curveParameters() {
                std::vector<std::pair<std::string, scheduling::KeyMode>>{
                    {"both", scheduling::KeyMode::Both}, {"worst", scheduling::KeyMode::Worst}},
                &P::keyMode),
+        choice(
+            "adjust",
+            "Key points crossing the channel: recursion only, or first the paper's shift of "
+            "the key inward (§4.5)",
+            std::vector<std::pair<std::string, scheduling::Adjust>>{
+                {"recursive", scheduling::Adjust::Recursive}, {"shift", scheduling::Adjust::Shift}},
+            &P::adjust),
         number("key_tolerance_deg", "deg",
                "Feasibility tolerance of the key-point recursion (§4.3)", 0, 1, &P::keyToleranceRad,
                kDeg),

@@ -2,6 +2,7 @@
 
 #include "core/analysis/time_optimal.h"
 #include "core/base/number_io.h"
+#include "core/base/units.h"
 #include "core/io/cl/apt.h"
 #include "core/io/nc/gcode.h"
 #include "core/kinematics/kinematics.h"
@@ -165,6 +166,28 @@ Status checkOutcome(const RescheduleOutcome& outcome, const std::string& file) {
     return {};
 }
 
+// §6.4: a modulo A axis moves the shortest way to each programmed angle, so a block whose A
+// step reaches half a turn would rotate backwards (or either way). The continuous A of the new
+// program must therefore step by less than 180 deg per block; a reversing half-turn in one
+// block is never what the schedule meant.
+Status checkModuloSteps(const RescheduleInput& input, const RescheduleOutcome& outcome) {
+    if (input.machine->aMode != kinematics::RotaryMode::Modulo) {
+        return {};
+    }
+    constexpr double kHalfTurnRad = units::kPi - 1e-6;
+    for (std::size_t i = 1; i < outcome.axes.size(); ++i) {
+        const double step = std::abs(outcome.axes[i].a - outcome.axes[i - 1].a);
+        if (step >= kHalfTurnRad) {
+            return makeError(ErrorCode::CheckFailed,
+                             "the re-scheduled A steps by " +
+                                 formatFixed(units::radToDeg(step), 3) +
+                                 " deg in one block: a modulo A axis would turn the short way",
+                             {input.program->path().sourceFile, passOf(input)[i].line, 0});
+        }
+    }
+    return {};
+}
+
 } // namespace
 
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel) {
@@ -208,6 +231,9 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     }
     outcome.maxCentreDeviationMm = *deviation;
     if (auto status = checkOutcome(outcome, input.program->path().sourceFile); !status) {
+        return std::unexpected(status.error());
+    }
+    if (auto status = checkModuloSteps(input, outcome); !status) {
         return std::unexpected(status.error());
     }
     if (input.analyseNewMotion) {

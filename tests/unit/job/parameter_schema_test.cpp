@@ -59,6 +59,14 @@ TEST(JobFile, WrittenJobReadsBackToTheSameSpec) {
     spec.parameters = scheduling::faithfulPreset();
     spec.presetName = "faithful";
     ASSERT_TRUE(findParameter("margin_deg")->set(spec.parameters, "4.5"));
+    ASSERT_TRUE(findParameter("adjust")->set(spec.parameters, "shift"));
+    ASSERT_TRUE(findParameter("lead_band")->set(spec.parameters, "true"));
+    ASSERT_TRUE(findParameter("lead_band_min_deg")->set(spec.parameters, "-20"));
+    ASSERT_TRUE(findParameter("allow_nonmonotone")->set(spec.parameters, "true"));
+    spec.analysis.feedReference = analysis::FeedReference::Centre;
+    spec.analysis.feedOverride = 40.0;
+    spec.analysis.method = analysis::DerivativeMethod::Filtered;
+    spec.analysis.filterSeconds = 0.012;
     spec.outputProgram = dir / "out.nc";
     const std::string text = jobJsonText(spec, dir);
     JobSpec back;
@@ -71,6 +79,23 @@ TEST(JobFile, WrittenJobReadsBackToTheSameSpec) {
     for (const ParameterInfo& info : scheduleParameterSchema()) {
         EXPECT_EQ(info.get(back.parameters), info.get(spec.parameters)) << info.key;
     }
+    EXPECT_EQ(back.parameters.adjust, scheduling::Adjust::Shift);
+    EXPECT_TRUE(back.parameters.leadBand);
+    EXPECT_NEAR(back.parameters.leadBandMinRad, -20.0 * 3.141592653589793 / 180.0, 1e-15);
+    EXPECT_TRUE(back.parameters.allowNonmonotone);
+    EXPECT_EQ(back.analysis.feedReference, analysis::FeedReference::Centre);
+    EXPECT_DOUBLE_EQ(back.analysis.feedOverride, 40.0);
+    EXPECT_EQ(back.analysis.method, analysis::DerivativeMethod::Filtered);
+    EXPECT_DOUBLE_EQ(back.analysis.filterSeconds, 0.012);
+}
+
+TEST(JobFile, UnknownDerivativeMethodNamesTheKey) {
+    const std::string text = "{\n \"schema\": \"bladeaxis-job/1\",\n \"derivatives\": \"cubic\"\n}";
+    JobSpec spec;
+    const auto status = parseJobJson(text, "job.json", spec);
+    ASSERT_FALSE(status.has_value());
+    EXPECT_NE(status.error().message.find("derivatives: expected"), std::string::npos);
+    EXPECT_EQ(status.error().where.line, 3);
 }
 
 TEST(JobFile, UnknownParameterNamesTheKeyAndLine) {

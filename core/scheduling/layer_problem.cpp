@@ -70,6 +70,29 @@ const char* infeasibility(const MonotoneHull& h, double startAbs, double endAbs)
     return nullptr;
 }
 
+// [A] The shortest lead-out, as a fraction of the layer length: the smallest lead fraction the
+// automatic search of §3.4 tries.
+constexpr double kShortestLeadFraction = 0.02;
+
+// §3.1 puts J_k at the top of the hull at the base point. After a concave run the hull is flat
+// there (the concave rule holds theta_max at the exit's forward limit), so a horizontal
+// lead-out at J_k fits. At a fallback base point (no concave run) HI still rises up to the base
+// point, and a horizontal lead-out at HI(end) would leave the hull at once: the layer could
+// only end with a one-sample lead, outside the margin, and the zero end slope of §3.2 would
+// have no room. So J_k is never above HI where the shortest lead-out starts (HI is
+// non-decreasing, so that is HI's least value over the lead-out).
+double hullTopBeforeLeadOut(const PlanePath& path, const LayerSpan& span,
+                            const AbsoluteLayer& layer) {
+    const double start = path.arcLength[span.first];
+    const double length = path.arcLength[span.last] - start;
+    const double leadOutStart = start + (1.0 - kShortestLeadFraction) * length;
+    std::size_t j = layer.hull.hi.size() - 1;
+    while (j > 0 && path.arcLength[span.first + j] > leadOutStart) {
+        --j;
+    }
+    return layer.hull.hi[j];
+}
+
 struct LayerEnds {
     double startAbs = 0.0, endAbs = 0.0;
 };
@@ -138,10 +161,12 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
     for (std::size_t k = 0; k < count; ++k) {
         absolute.push_back(absoluteLayer(path, channel, split.layers[k], margins[k]));
     }
-    // J_k for k >= 1: the base vector on layer k's hull, never above layer k-1's end hull [A].
+    // J_k for k >= 1: the base vector on layer k's hull, never above layer k-1's hull over its
+    // shortest lead-out [A].
     std::vector<double> junction(count + 1, 0.0);
     for (std::size_t k = 1; k < count; ++k) {
-        junction[k] = std::min(absolute[k].hull.hi.front(), absolute[k - 1].hull.hi.back());
+        junction[k] = std::min(absolute[k].hull.hi.front(),
+                               hullTopBeforeLeadOut(path, split.layers[k - 1], absolute[k - 1]));
     }
     std::vector<std::string> junctionWarnings;
     const std::vector<LayerSpan> spans =

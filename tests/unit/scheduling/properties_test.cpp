@@ -281,6 +281,113 @@ TEST(SchedulingProperties, RigidRotationAboutTheRotaryAxis) {
     }
 }
 
+// §10.2 item 8, second half: translating the CL set along the rotary axis a = x changes only X:
+// the same orientations, the tips moved by the same distance.
+TEST(SchedulingProperties, TranslationAlongTheRotaryAxisMovesOnlyX) {
+    const Vec3 shift(37.5, 0.0, 0.0);
+    for (const Member& m : family()) {
+        SCOPED_TRACE(m.name);
+        ScheduleInput moved = m.input;
+        for (Vec3& q : moved.centres) {
+            q += shift;
+        }
+        auto second = schedule(moved, bestPreset());
+        ASSERT_TRUE(second.has_value());
+        ASSERT_EQ(second->newAxes.size(), m.result.newAxes.size());
+        for (std::size_t i = 0; i < moved.centres.size(); ++i) {
+            ASSERT_LT((second->newAxes[i] - m.result.newAxes[i]).norm(), 1e-9) << i;
+            const Vec3 tipChange = second->newTips[i] - m.result.newTips[i];
+            ASSERT_NEAR(tipChange.x(), shift.x(), 1e-8) << i;
+            ASSERT_NEAR(tipChange.y(), 0.0, 1e-8) << i;
+            ASSERT_NEAR(tipChange.z(), 0.0, 1e-8) << i;
+        }
+    }
+}
+
+double polylineAt(const std::vector<Vec2>& polyline, double s) {
+    const auto after = std::upper_bound(polyline.begin(), polyline.end(), s,
+                                        [](double value, const Vec2& p) { return value < p.x(); });
+    if (after == polyline.begin()) {
+        return polyline.front().y();
+    }
+    if (after == polyline.end()) {
+        return polyline.back().y();
+    }
+    const Vec2& a = *(after - 1);
+    const Vec2& b = *after;
+    return b.x() > a.x() ? a.y() + (b.y() - a.y()) * (s - a.x()) / (b.x() - a.x()) : b.y();
+}
+
+// §10.2 item 2, second half: before smoothing, the polyline through the key points keeps the
+// margin m from the raw channel, i.e. it lies inside the shrunk monotone hull [LO, HI] (whose
+// margin is reduced only where a pinch was relieved, §2.5). This includes layers that end at a
+// fallback base point, where the hull still rises up to the junction.
+TEST(SchedulingProperties, PolylineKeepsTheMarginBeforeSmoothing) {
+    for (const Member& m : family()) {
+        SCOPED_TRACE(m.name);
+        for (std::size_t k = 0; k < m.result.layers.size(); ++k) {
+            const LayerResult& layer = m.result.layers[k];
+            ASSERT_GE(layer.polyline.size(), 2u) << k;
+            for (std::size_t i = 0; i < layer.s.size(); ++i) {
+                const double theta = polylineAt(layer.polyline, layer.s[i]);
+                ASSERT_GE(theta, layer.lo[i] - 1e-9) << k << " " << i;
+                ASSERT_LE(theta, layer.hi[i] + 1e-9) << k << " " << i;
+            }
+        }
+    }
+}
+
+// §10.2 item 3 at the path's ends: the first layer ends and the last layer starts flat at their
+// junctions, like the intermediate layers.
+TEST(SchedulingProperties, FlatEndsAtTheJunctionsOfTheFirstAndLastLayers) {
+    for (const Member& m : family()) {
+        SCOPED_TRACE(m.name);
+        if (m.result.layers.size() < 2) {
+            continue;
+        }
+        const LayerResult& first = m.result.layers.front();
+        const LayerResult& last = m.result.layers.back();
+        if (!hasFlag(first, LayerStatus::ShortLayer)) {
+            EXPECT_NEAR(first.dTheta.back(), 0.0, 1e-9);
+            EXPECT_NEAR(first.ddTheta.back(), 0.0, 1e-9);
+        }
+        if (!hasFlag(last, LayerStatus::ShortLayer)) {
+            EXPECT_NEAR(last.dTheta.front(), 0.0, 1e-9);
+            EXPECT_NEAR(last.ddTheta.front(), 0.0, 1e-9);
+        }
+    }
+}
+
+// §10.2 item 6, free ends: the clamp of the input orientation into the hull is idempotent, so
+// the path's first and last orientations reproduce exactly on the output.
+TEST(SchedulingProperties, FreeEndsReproduceOnTheOutput) {
+    for (const Member& m : family()) {
+        SCOPED_TRACE(m.name);
+        ScheduleInput again = m.input;
+        again.axes = m.result.newAxes;
+        auto second = schedule(again, bestPreset());
+        ASSERT_TRUE(second.has_value());
+        const auto absolute = [](const LayerResult& layer, bool front) {
+            return layer.junctionAngle + (front ? layer.theta.front() : layer.theta.back());
+        };
+        EXPECT_NEAR(absolute(second->layers.front(), true), absolute(m.result.layers.front(), true),
+                    1e-9);
+        EXPECT_NEAR(absolute(second->layers.back(), false), absolute(m.result.layers.back(), false),
+                    1e-9);
+    }
+}
+
+// No layer of the family needs the one-sample lead of a pinched base point: the junction
+// leaves room for a horizontal lead-out (§3.1, §3.4).
+TEST(SchedulingProperties, NoLayerNeedsAOneSampleLead) {
+    for (const Member& m : family()) {
+        SCOPED_TRACE(m.name);
+        for (const std::string& warning : m.result.warnings) {
+            EXPECT_EQ(warning.find("one-sample lead"), std::string::npos) << warning;
+        }
+    }
+}
+
 // §10.2 item 11: one base point per revolution, give or take one.
 TEST(SchedulingProperties, LayerCountFollowsTheRevolutions) {
     for (const Member& m : family()) {

@@ -101,6 +101,7 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
         {"max_reconstruction_error_mm", outcome.schedule.check.maxCentreErrorMm},
         {"min_channel_clearance_deg", units::radToDeg(outcome.minChannelClearanceRad)},
         {"layers_kept_original", outcome.layersKeptOriginal},
+        {"max_junction_gap_deg", units::radToDeg(outcome.schedule.check.maxJunctionGapRad)},
     };
     const std::vector<int> lines = passLines(result);
     report::BeforeAfter data{&result.original, &outcome.profile, result.axes, outcome.axes, lines};

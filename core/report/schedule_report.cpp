@@ -5,6 +5,7 @@
 #include "core/base/units.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace bladeaxis::report {
@@ -24,10 +25,12 @@ struct Peaks {
     double acceleration = 0.0;
 };
 
-// Peak |A'| and |A''| over the samples of a profile whose records fall in [first, last].
-Peaks aPeaksWithin(const analysis::AxisProfile& profile, std::size_t first, std::size_t last) {
+// Peak |q'| and |q''| of one axis over the samples of a profile whose records fall in
+// [first, last].
+Peaks peaksWithin(const analysis::AxisProfile& profile, AxisId axis, std::size_t first,
+                  std::size_t last) {
     Peaks peaks;
-    const analysis::AxisSeries& a = profile.axis(AxisId::A);
+    const analysis::AxisSeries& a = profile.axis(axis);
     const auto begin =
         std::lower_bound(profile.sampleRecord.begin(), profile.sampleRecord.end(), first);
     for (auto it = begin; it != profile.sampleRecord.end() && *it <= last; ++it) {
@@ -95,13 +98,29 @@ std::vector<LayerMotion> layerMotion(const scheduling::ScheduleResult& schedule,
     std::vector<LayerMotion> motion;
     motion.reserve(schedule.layers.size());
     for (const scheduling::LayerResult& layer : schedule.layers) {
-        const Peaks before = aPeaksWithin(*data.before, layer.first, layer.last);
-        const Peaks after = aPeaksWithin(*data.after, layer.first, layer.last);
+        const Peaks before = peaksWithin(*data.before, AxisId::A, layer.first, layer.last);
+        const Peaks after = peaksWithin(*data.after, AxisId::A, layer.first, layer.last);
         motion.push_back({reversalsWithin(data.axesBefore, layer.first, layer.last),
                           reversalsWithin(data.axesAfter, layer.first, layer.last), before.velocity,
                           after.velocity, before.acceleration, after.acceleration});
     }
     return motion;
+}
+
+// Peak X/Y/Z velocity (mm/s) and acceleration (mm/s^2) of one layer before and after, at the
+// programmed feed: where on the blade the linear axes gain or lose.
+void addLinearPeaks(nlohmann::json& json, const scheduling::LayerResult& layer,
+                    const BeforeAfter& data) {
+    for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z}) {
+        std::string name = "peak_";
+        name += static_cast<char>(std::tolower(kinematics::axisName(axis)[0]));
+        const Peaks before = peaksWithin(*data.before, axis, layer.first, layer.last);
+        const Peaks after = peaksWithin(*data.after, axis, layer.first, layer.last);
+        json[name + "_velocity_mm_s_before"] = before.velocity;
+        json[name + "_velocity_mm_s_after"] = after.velocity;
+        json[name + "_acceleration_mm_s2_before"] = before.acceleration;
+        json[name + "_acceleration_mm_s2_after"] = after.acceleration;
+    }
 }
 
 nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const BeforeAfter& data) {
@@ -124,6 +143,7 @@ nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const Befo
         json["peak_a_velocity_deg_s_after"] = radToDeg(m.peakVelocityAfter);
         json["peak_a_acceleration_deg_s2_before"] = radToDeg(m.peakAccelerationBefore);
         json["peak_a_acceleration_deg_s2_after"] = radToDeg(m.peakAccelerationAfter);
+        addLinearPeaks(json, layer, data);
         json["min_channel_clearance_deg"] = radToDeg(layer.minClearance);
         json["lead_fraction"] = layer.leadFraction;
         json["key_points"] = layer.keyPoints.size();

@@ -38,8 +38,8 @@ struct LayerMotion {
 std::vector<LayerMotion> layerMotion(const scheduling::ScheduleResult& schedule,
                                      const BeforeAfter& data);
 
-// One object per layer: statuses, source lines, reversals and peak A velocity/acceleration
-// before and after, channel clearance, lead fraction, corners, peak theta'', compute time.
+// One object per layer: statuses, source lines, reversals, peak A (and X/Y/Z) velocity and
+// acceleration before and after, channel clearance, lead fraction, corners, peak theta'', time.
 nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const BeforeAfter& data);
 
 // Relative reductions (before - after) / before of the headline figures.

@@ -74,6 +74,7 @@ class AptReader {
     ParsedStatement m_parsed;
     std::vector<Error> m_errors;
     bool m_finished = false;
+    bool m_pathEnded = false;
 };
 
 void AptReader::fail(std::size_t bodyPos, std::string message) {
@@ -118,6 +119,8 @@ void AptReader::dispatch() {
         readTldata();
     } else if (equalsIgnoreCase(word, "FINI")) {
         m_finished = true;
+    } else if (equalsIgnoreCase(word, "END-OF-PATH")) {
+        m_pathEnded = true; // NX CLSF ends each tool path so, and has no FINI
     }
     // Everything else (PARTNO, PPRINT, LOADTL, SPINDL, COOLNT, MSYS, TOOL PATH, PAINT, CUTCOM,
     // END, ...) does not move the tool: it stays in AptProgram::text and is otherwise ignored.
@@ -340,6 +343,9 @@ Result<AptProgram> AptReader::run() {
     if (m_program.path.records.empty()) {
         return makeError(ErrorCode::Parse, "no GOTO statement in the file",
                          SourceLocation{std::string(m_file), 1, 1});
+    }
+    if (!m_finished && !m_pathEnded) { // a file cut short still parses statement by statement
+        warn("no FINI or END-OF-PATH: the file may be truncated");
     }
     return std::move(m_program);
 }

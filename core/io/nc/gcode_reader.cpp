@@ -36,6 +36,7 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
     const std::string_view text = program.text;
     std::size_t begin = 0;
     int lineNumber = 0;
+    bool ended = false;
     while (begin < text.size() && !errors.full()) {
         ++lineNumber;
         const void* newline = std::memchr(text.data() + begin, '\n', text.size() - begin);
@@ -51,8 +52,17 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
             errors.add(lineNumber, static_cast<int>(issue->offset) + 1, std::move(issue->message));
         } else {
             interpreter.apply(block, line, static_cast<std::uint32_t>(begin), lineNumber);
+            ended = ended || block.programEnd;
         }
         begin = end + 1;
+    }
+    // [A] A program cut short (a failed transfer, a full disk) still parses block by block;
+    // without its M2/M30 the engineer must be told, since the re-scheduled copy would be as
+    // short.
+    if (!ended && errors.empty()) {
+        program.path.warnings.push_back(
+            SourceLocation{std::string(errors.fileName()), lineNumber, 0}.toString() +
+            ": no program end (M2 or M30): the file may be truncated");
     }
 }
 

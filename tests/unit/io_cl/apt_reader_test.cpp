@@ -90,7 +90,8 @@ TEST(ParseApt, ConvertsInchesToMillimetres) {
 }
 
 TEST(ParseApt, TakesTheBallRadiusFromTldataAndCutter) {
-    const AptProgram nx = parseOk("TLDATA/MILL,10.0000,5.0000,75.0000,0,0\nRAPID\nGOTO/0,0,0\n");
+    const AptProgram nx =
+        parseOk("TLDATA/MILL,10.0000,5.0000,75.0000,0,0\nRAPID\nGOTO/0,0,0\nFINI\n");
     EXPECT_EQ(nx.path.toolRadius, 5.0);
     EXPECT_TRUE(nx.path.warnings.empty());
     const AptProgram apt = parseOk("CUTTER/12\nRAPID\nGOTO/0,0,0\n");
@@ -98,7 +99,7 @@ TEST(ParseApt, TakesTheBallRadiusFromTldataAndCutter) {
 }
 
 TEST(ParseApt, WarnsWhenTheCutterIsNotABallEnd) {
-    const AptProgram program = parseOk("PARTNO X\nCUTTER/10,1\nRAPID\nGOTO/0,0,0\n");
+    const AptProgram program = parseOk("PARTNO X\nCUTTER/10,1\nRAPID\nGOTO/0,0,0\nFINI\n");
     EXPECT_EQ(program.path.toolRadius, 5.0);
     ASSERT_EQ(program.path.warnings.size(), 1u);
     EXPECT_NE(program.path.warnings[0].find("test.cls:2: the cutter is not a ball end"),
@@ -165,6 +166,29 @@ TEST(ReadAptFile, ReportsAMissingFile) {
     Result<AptProgram> program = readAptFile(kClDir / "does_not_exist.cls");
     ASSERT_FALSE(program.has_value());
     EXPECT_EQ(program.error().code, ErrorCode::FileNotFound);
+}
+
+} // namespace
+} // namespace bladeaxis::io::cl
+
+namespace bladeaxis::io::cl {
+namespace {
+
+// A CL file cut short still parses statement by statement; the missing FINI (APT) or
+// END-OF-PATH (NX CLSF) is what tells.
+TEST(ParseApt, FileWithoutFiniOrEndOfPathIsReadWithATruncationWarning) {
+    const auto complete =
+        parseApt("MULTAX\nFEDRAT/MMPM,600\nGOTO/0,0,9,0,0,1\nGOTO/1,0,9,0,0,1\nFINI\n", "c.cls");
+    ASSERT_TRUE(complete.has_value());
+    EXPECT_TRUE(complete->path.warnings.empty());
+    const auto clsf = parseApt("MULTAX\nFEDRAT/MMPM,600\nGOTO/0,0,9,0,0,1\nEND-OF-PATH\n", "c.cls");
+    ASSERT_TRUE(clsf.has_value());
+    EXPECT_TRUE(clsf->path.warnings.empty());
+    const auto truncated =
+        parseApt("MULTAX\nFEDRAT/MMPM,600\nGOTO/0,0,9,0,0,1\nGOTO/1,0,9,0,0,1\n", "c.cls");
+    ASSERT_TRUE(truncated.has_value());
+    ASSERT_EQ(truncated->path.warnings.size(), 1u);
+    EXPECT_NE(truncated->path.warnings[0].find("may be truncated"), std::string::npos);
 }
 
 } // namespace

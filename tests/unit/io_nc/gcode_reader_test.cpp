@@ -105,7 +105,7 @@ TEST(GcodeReader, AcceptsLowerCaseRunTogetherWordsAndBareDecimalPoints) {
 }
 
 TEST(GcodeReader, UnprogrammedBIsZeroWithAWarning) {
-    const auto program = parse("G0 X1 Y2 Z3 A4\nG1 X2 F100\n");
+    const auto program = parse("G0 X1 Y2 Z3 A4\nG1 X2 F100\nM30\n");
     ASSERT_TRUE(program.has_value()) << program.error().toString();
     EXPECT_DOUBLE_EQ(program->path.records[0].axes->b, 0.0);
     ASSERT_EQ(program->path.warnings.size(), 1u);
@@ -164,6 +164,30 @@ TEST(GcodeReader, RecordSourcesPointAtTheAxisWords) {
     EXPECT_EQ(text.substr(source.lineBegin + source.wordBegin[3], source.wordLength[3]), "5.000");
     EXPECT_FALSE(source.hasWord(2));
     EXPECT_EQ(sizeof(RecordSource), 24u);
+}
+
+} // namespace
+} // namespace bladeaxis::io::nc
+
+namespace bladeaxis::io::nc {
+namespace {
+
+// A program cut short still parses block by block; the missing M2/M30 is what tells.
+TEST(GcodeReader, ProgramWithoutM30IsReadWithATruncationWarningOnItsLastLine) {
+    const auto complete = parseGcode("G21 G90 G94\nG1 X0 Y0 Z10 A0 B5 F1000\nX1\nM30\n", "t.nc",
+                                     kinematics::defaultBladeMachine());
+    ASSERT_TRUE(complete.has_value());
+    EXPECT_TRUE(complete->path.warnings.empty());
+    const auto lowercaseM2 = parseGcode("g21 g90 g94\ng1 x0 y0 z10 a0 b5 f1000\nm2\n", "t.nc",
+                                        kinematics::defaultBladeMachine());
+    ASSERT_TRUE(lowercaseM2.has_value());
+    EXPECT_TRUE(lowercaseM2->path.warnings.empty());
+    const auto truncated = parseGcode("G21 G90 G94\nG1 X0 Y0 Z10 A0 B5 F1000\nX1\n", "t.nc",
+                                      kinematics::defaultBladeMachine());
+    ASSERT_TRUE(truncated.has_value());
+    ASSERT_EQ(truncated->path.warnings.size(), 1u);
+    EXPECT_NE(truncated->path.warnings[0].find("t.nc:3"), std::string::npos);
+    EXPECT_NE(truncated->path.warnings[0].find("may be truncated"), std::string::npos);
 }
 
 } // namespace

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 
@@ -81,6 +83,29 @@ TEST(LayerMotion, MatchesTheLayersOfReportJson) {
         anyReversalBefore = anyReversalBefore || motion[k].reversalsBefore > 0;
     }
     EXPECT_TRUE(anyReversalBefore); // the demo's original program reverses
+}
+
+// Per-layer linear-axis peaks lie within the program's overall peaks, and the largest layer
+// peak is the overall one whenever the overall peak falls inside the cutting pass.
+TEST(LayerMotion, LinearAxisPeaksPerLayerStayWithinTheProgramPeaks) {
+    const auto report = nlohmann::json::parse(reportJsonText(demoResult()));
+    const auto& layers = report.at("rescheduled").at("layers");
+    for (const char* axis : {"X", "Y", "Z"}) {
+        const std::string key = std::string("peak_") + static_cast<char>(std::tolower(axis[0]));
+        for (const char* when : {"before", "after"}) {
+            const auto& overall = std::string(when) == "before"
+                                      ? report.at("original").at("axes")
+                                      : report.at("rescheduled").at("analysis").at("axes");
+            const double programPeak = overall.at(axis).at("peak_velocity_mm_s").get<double>();
+            double layerPeak = 0.0;
+            for (const auto& layer : layers) {
+                layerPeak =
+                    std::max(layerPeak, layer.at(key + "_velocity_mm_s_" + when).get<double>());
+            }
+            EXPECT_GT(layerPeak, 0.0) << axis << ' ' << when;
+            EXPECT_LE(layerPeak, programPeak + 1e-9) << axis << ' ' << when;
+        }
+    }
 }
 
 } // namespace

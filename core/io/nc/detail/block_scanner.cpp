@@ -151,7 +151,10 @@ std::optional<ScanIssue> scanWord(std::string_view line, std::size_t& i, Scanned
     block.codeEnd = word.valueEnd;
     block.hasWords = true;
     if (letter == 'M') {
-        return std::nullopt; // kept verbatim; several M words may share a block
+        // Kept verbatim; several M words may share a block. M2/M30 are noted so that a reader
+        // can tell a complete program from a truncated one.
+        block.programEnd = block.programEnd || word.value == 2.0 || word.value == 30.0;
+        return std::nullopt;
     }
     if (letter == 'G') {
         if (block.gCount == kMaxGCodesPerBlock) {
@@ -197,6 +200,7 @@ std::optional<ScanIssue> scanBlock(std::string_view line, ScannedBlock& block) {
     block.codeEnd = 0;
     block.firstComment = kNoOffset;
     block.hasWords = false;
+    block.programEnd = false;
     std::size_t i = 0;
     while (i < line.size()) {
         const char c = line[i];

@@ -36,6 +36,7 @@ struct ScannedBlock {
     std::uint32_t codeEnd = 0;              // just past the last word's number
     std::uint32_t firstComment = kNoOffset; // the first '(' or ';'
     bool hasWords = false;                  // any word at all, G and M included
+    bool programEnd = false;                // M2 or M30: the program ends in this block
 
     bool has(char letter) const { return (present >> (letter - 'A')) & 1u; }
     const WordSpan& word(char letter) const {

@@ -15,6 +15,8 @@ namespace {
 
 constexpr double kEndSlack = 1e-3;
 constexpr int kFamilyBlades = 10; // with the demo: about 2 s
+constexpr std::size_t kLargestConvergingQp = 401;
+constexpr std::size_t kLargestConvergingLp = 1001;
 
 // An intermediate layer of length L from 0 to thetaEnd with a channel wide enough not to bind.
 LayerBounds wideLayer(double length, double thetaEnd, std::size_t samples) {
@@ -51,6 +53,29 @@ TEST(OptimalLayer, MinimumPeakIsTheBangBangOracle) {
     const double inner = length - 2.0 * length / 160.0;
     const double oracle = 4.0 * thetaEnd / (inner * inner);
     EXPECT_NEAR(lp->peakSecondDifference, oracle, 0.02 * oracle);
+}
+
+// Spec §10.1 asks for the §9.4 analytic optima within 1 % at n = 2000 and a KKT residual below
+// 1e-6. Neither solver converges at n = 2001 on this wide layer: the ADMM not within its 50000
+// iterations (7 s; the Hessian's condition grows like n^4), the interior point not within its
+// 200. The checks run at the largest sizes that converge within test time (a known limit of
+// both solvers on long layers, reported by optimumFailures when it happens in a comparison).
+TEST(OptimalLayer, MinimumPeakIsTheBangBangOracleWithinOnePercentOnAThousandSamples) {
+    const double length = 200.0, thetaEnd = 6.0;
+    auto lp = minimumPeakLayer(wideLayer(length, thetaEnd, kLargestConvergingLp));
+    ASSERT_TRUE(lp.has_value()) << lp.error().toString();
+    const double peak = 4.0 * thetaEnd / (length * length);
+    EXPECT_NEAR(lp->peakSecondDifference, peak, 0.01 * peak);
+}
+
+TEST(OptimalLayer, SmoothestIsTheCubicOracleWithinOnePercentWithResidualsBelowOneMillionth) {
+    const double length = 200.0, thetaEnd = 6.0;
+    auto qp = smoothestLayer(wideLayer(length, thetaEnd, kLargestConvergingQp));
+    ASSERT_TRUE(qp.has_value()) << qp.error().toString();
+    const double energy = 12.0 * thetaEnd * thetaEnd / std::pow(length, 3);
+    EXPECT_NEAR(qp->secondDifferenceEnergy, energy, 0.01 * energy);
+    EXPECT_LT(qp->solver.primalResidual, 1e-6);
+    EXPECT_LT(qp->solver.dualResidual, 1e-6);
 }
 
 std::vector<scheduling::LayerResult> scheduledLayers(const blade::BladeSpec& bladeSpec,

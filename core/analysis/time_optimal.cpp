@@ -117,6 +117,23 @@ class Problem {
         return std::max(high, 0.0);
     }
 
+    // The largest path acceleration u for crossing interval i from rest to rest: accelerate
+    // over its first half, brake over the second, reaching x = u Delta mid-way. The stage's
+    // bounds hold for +-u at every state up to that: |q'| u + |q''| u Delta <= a per axis, and
+    // u Delta within the velocity, feed and jerk-heuristic bound.
+    double restToRestAcceleration(std::size_t i) const {
+        const Stage s = stage(i);
+        const double delta = step(i);
+        double u = s.maxState / delta;
+        for (std::size_t j = 0; j < kAxes; ++j) {
+            const double demand = std::abs(s.first[j]) + std::abs(s.second[j]) * delta;
+            if (limited(m_acceleration[j]) && demand > 0.0) {
+                u = std::min(u, m_acceleration[j] / demand);
+            }
+        }
+        return u;
+    }
+
     // The largest feasible u at (i, x) with x_{i+1} <= next.
     double largestControl(std::size_t i, double x, double next) const {
         const Bounds b = bounds(i, stage(i), next);
@@ -181,12 +198,18 @@ Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& 
         const double u = problem.largestControl(i, x, controllable[i + 1]);
         const double next = std::clamp(x + 2.0 * problem.step(i) * u, 0.0, controllable[i + 1]);
         const double speeds = std::sqrt(x) + std::sqrt(next);
-        if (!(speeds > 0.0)) {
+        // A constant u cannot cross an interval that starts and ends at rest. The greedy pass
+        // reaches rest before the last interval where a jagged path forces full braking at
+        // the last but one sample (the A axis of a reciprocating original): cross it from rest
+        // to rest instead, 2 sqrt(Delta / u).
+        const double restAcceleration = speeds > 0.0 ? 0.0 : problem.restToRestAcceleration(i);
+        if (!(speeds > 0.0) && !(restAcceleration > 0.0)) {
             return makeError(ErrorCode::Geometry,
                              "the axis limits do not let the tool move along the path near s = " +
                                  std::to_string(profile.pathParameter[i]) + " mm");
         }
-        result.time += 2.0 * problem.step(i) / speeds;
+        result.time += speeds > 0.0 ? 2.0 * problem.step(i) / speeds
+                                    : 2.0 * std::sqrt(problem.step(i) / restAcceleration);
         result.pathSpeed[i + 1] = std::sqrt(next);
         x = next;
     }

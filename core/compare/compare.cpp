@@ -100,6 +100,16 @@ const MethodResult* Comparison::find(std::string_view method) const {
     return nullptr;
 }
 
+std::vector<std::string> Comparison::missingFigures() const {
+    std::vector<std::string> missing = optimumFailures;
+    for (const MethodResult& method : methods) {
+        if (!method.t2Failure.empty()) {
+            missing.push_back(method.method + ": T2: " + method.t2Failure);
+        }
+    }
+    return missing;
+}
+
 double reduction(double before, double after) {
     return before > 0.0 ? (before - after) / before : 0.0;
 }
@@ -161,7 +171,8 @@ Status addQuaternion(const EvaluationContext& context, const scheduling::Schedul
 }
 
 // optimal-qp and optimal-lp (spec §9): the smoothest and the lowest-peak schedules in the same
-// channel. A layer the solver cannot finish leaves the method out, with the reason.
+// channel. A layer the solver cannot finish leaves the method out, with the reason (reported by
+// compare.json, the batch summary, report.html and the reproduction).
 template <class Add>
 Status addOptimum(Add& add, Comparison& comparison) {
     const std::pair<const char*, optimal::Objective> methods[] = {
@@ -170,7 +181,8 @@ Status addOptimum(Add& add, Comparison& comparison) {
     for (const auto& [name, objective] : methods) {
         auto optimum = optimal::optimalPath(comparison.reference, objective);
         if (!optimum) {
-            comparison.optimumFailure += std::string(name) + ": " + optimum.error().message + "; ";
+            comparison.optimumFailures.push_back(std::string(name) + ": " +
+                                                 optimum.error().message);
             continue;
         }
         std::vector<Vec3> axes;

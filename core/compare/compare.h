@@ -37,9 +37,14 @@ struct Comparison {
     std::vector<MethodResult> quaternionSettings; // every feasible setting of the fairness rule
     std::vector<std::string> quaternionFailures;  // settings that could not be used, and why
     std::vector<FairnessEntry> quaternionFairness;
-    std::string optimumFailure; // why optimal-qp is missing, when it is
+    // Why optimal-qp or optimal-lp is missing, one entry per missing method ("optimal-qp: layer
+    // 3: ..."); empty when both were computed or not asked for.
+    std::vector<std::string> optimumFailures;
 
     const MethodResult* find(std::string_view method) const;
+    // Every figure the comparison could not compute, with the reason: the optimum's failures
+    // and each method whose T2 is missing ("stheta-best: T2: ..."), for the reports to print.
+    std::vector<std::string> missingFigures() const;
     // The quaternion baseline's best value of a metric over its settings (fairness rule);
     // nullopt without a quaternion result.
     std::optional<double> bestQuaternion(std::string_view metric) const;

@@ -70,6 +70,8 @@ Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::strin
     result.t1 = analysis::constantFeedTime(result.profile, *context.machine, false);
     if (auto t2 = analysis::timeOptimalTime(result.profile, *context.machine)) {
         result.t2 = t2->time;
+    } else {
+        result.t2Failure = t2.error().message;
     }
     if (auto t2j = analysis::timeOptimalTime(result.profile, *context.machine,
                                              {.jerkHeuristic = true, .maxJerkRounds = 20})) {

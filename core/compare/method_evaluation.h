@@ -42,6 +42,7 @@ struct MethodResult {
     analysis::AxisProfile profile;
     analysis::ConstantFeedTime t1;
     std::optional<double> t2;     // s, time-optimal under the machine limits, when computed
+    std::string t2Failure;        // why t2 is missing, when it is
     std::optional<double> t2Jerk; // s, T2 with the jerk heuristic (spec §8.3 "T2+J")
     ChannelMetrics channel;
     std::vector<LimitSweepPoint> sweep; // empty unless requested

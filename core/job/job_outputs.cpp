@@ -394,6 +394,9 @@ std::string comparisonSummary(const compare::Comparison& comparison) {
         peak.resize(std::max<std::size_t>(peak.size(), 23), ' ');
         text += "             " + name + reversals + peak + formatFixed(method.t1.time, 1) + "\n";
     }
+    for (const std::string& reason : comparison.missingFigures()) {
+        text += "not computed " + reason + "\n";
+    }
     return text;
 }
 

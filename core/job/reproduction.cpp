@@ -197,6 +197,7 @@ Result<ReproductionResult> runReproduction(const ReproductionSpec& spec, Progres
         } else {
             figures.layers = comparison->reference.layers.size();
             figures.figures = comparisonFigures(*comparison);
+            figures.missing = comparison->missingFigures();
         }
         result.blades.push_back(std::move(figures));
     }
@@ -226,6 +227,9 @@ std::string reproductionJsonText(const ReproductionResult& result) {
                              {"figures", blade.figures}};
         if (!blade.error.empty()) {
             entry["error"] = blade.error;
+        }
+        if (!blade.missing.empty()) {
+            entry["missing_figures"] = blade.missing;
         }
         json["per_blade"].push_back(entry);
     }
@@ -262,7 +266,16 @@ std::string reproductionSummary(const ReproductionResult& result) {
             std::string label = "  " + name;
             label.resize(std::max<std::size_t>(label.size() + 1, 48), ' ');
             text += label + "median " + formatFixed(spread.median, 3) + "  IQR [" +
-                    formatFixed(spread.q1, 3) + ", " + formatFixed(spread.q3, 3) + "]\n";
+                    formatFixed(spread.q1, 3) + ", " + formatFixed(spread.q3, 3) + "]  (" +
+                    std::to_string(spread.count) + " blades)\n";
+        }
+    }
+    for (const BladeFigures& blade : result.blades) {
+        for (const std::string& reason : blade.missing) {
+            text += "not computed  " + blade.blade + ": " + reason + "\n";
+        }
+        if (!blade.error.empty()) {
+            text += "failed        " + blade.blade + ": " + blade.error + "\n";
         }
     }
     return text;

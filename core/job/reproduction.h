@@ -27,11 +27,14 @@ struct BladeFigures {
     std::size_t layers = 0;
     std::map<std::string, std::map<std::string, double>> figures; // method -> figure -> value
     std::string error; // non-empty when this blade could not be compared
+    // Figures the comparison could not compute and why (compare::Comparison::missingFigures):
+    // the medians that need them cover fewer blades (Spread::count).
+    std::vector<std::string> missing;
 };
 
 struct Spread {
     double median = 0.0, q1 = 0.0, q3 = 0.0;
-    std::size_t count = 0;
+    std::size_t count = 0; // blades with this figure
 };
 
 struct ReproductionResult {

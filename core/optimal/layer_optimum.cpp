@@ -3,6 +3,7 @@
 #include "core/optimal/interior_point_lp.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -14,15 +15,65 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 using Triplet = Eigen::Triplet<double>;
 
-// Rows of D2 (interior samples) as triplets, column offset 0.
-void addSecondDifferenceRow(std::span<const double> s, std::size_t i, double scale,
-                            Eigen::Index row, std::vector<Triplet>& triplets) {
+// One second difference of the objective: D2 = sum coefficient * theta[column], weighted by
+// the length of S it stands for (w_i of spec §9.1).
+struct SecondDifferenceRow {
+    std::array<std::pair<Eigen::Index, double>, 3> terms{};
+    std::size_t count = 0;
+    double weight = 0.0;
+
+    double at(std::span<const double> theta) const {
+        double value = 0.0;
+        for (std::size_t k = 0; k < count; ++k) {
+            value += terms[k].second * theta[static_cast<std::size_t>(terms[k].first)];
+        }
+        return value;
+    }
+};
+
+// D2 at an interior sample i (spec §9.1).
+SecondDifferenceRow interiorRow(std::span<const double> s, std::size_t i) {
     const double before = s[i] - s[i - 1], after = s[i + 1] - s[i];
     const double c = 2.0 / (before + after);
     const auto col = static_cast<Eigen::Index>(i);
-    triplets.emplace_back(row, col - 1, scale * c / before);
-    triplets.emplace_back(row, col, -scale * c * (1.0 / before + 1.0 / after));
-    triplets.emplace_back(row, col + 1, scale * c / after);
+    return {
+        {{{col - 1, c / before}, {col, -c * (1.0 / before + 1.0 / after)}, {col + 1, c / after}}},
+        3,
+        0.5 * (before + after)};
+}
+
+// D2 at the end sample `end` with its neighbour `inner` mirrored beyond it (theta' = 0 there):
+// 2 (theta_inner - theta_end) / h^2, standing for the half step inside the layer.
+SecondDifferenceRow mirroredRow(std::span<const double> s, std::size_t end, std::size_t inner) {
+    const double h = std::abs(s[inner] - s[end]);
+    const double c = 2.0 / (h * h);
+    return {{{{static_cast<Eigen::Index>(end), -c}, {static_cast<Eigen::Index>(inner), c}, {}}},
+            2,
+            0.5 * h};
+}
+
+// Every second difference the objectives measure, for bounds with at least 3 samples.
+std::vector<SecondDifferenceRow> objectiveRows(const LayerBounds& b) {
+    const std::size_t n = b.s.size();
+    std::vector<SecondDifferenceRow> rows;
+    rows.reserve(n);
+    if (b.mirroredStart && !b.freeStart) {
+        rows.push_back(mirroredRow(b.s, 0, 1));
+    }
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        rows.push_back(interiorRow(b.s, i));
+    }
+    if (b.mirroredEnd && !b.freeEnd) {
+        rows.push_back(mirroredRow(b.s, n - 1, n - 2));
+    }
+    return rows;
+}
+
+void addRow(const SecondDifferenceRow& row, double scale, Eigen::Index rowIndex,
+            std::vector<Triplet>& triplets) {
+    for (std::size_t k = 0; k < row.count; ++k) {
+        triplets.emplace_back(rowIndex, row.terms[k].first, scale * row.terms[k].second);
+    }
 }
 
 struct Rows {
@@ -52,23 +103,27 @@ void addScheduleRows(const LayerBounds& b, Rows& rows) {
     }
     if (!b.freeStart) {
         rows.add({{0, 1.0}}, b.start, b.start);
-        rows.add({{0, -1.0}, {1, 1.0}}, 0.0, 0.0);
+        if (!b.mirroredStart) {
+            rows.add({{0, -1.0}, {1, 1.0}}, 0.0, 0.0);
+        }
     }
     if (!b.freeEnd) {
         rows.add({{n - 1, 1.0}}, b.end, b.end);
-        rows.add({{n - 2, -1.0}, {n - 1, 1.0}}, 0.0, 0.0);
+        if (!b.mirroredEnd) {
+            rows.add({{n - 2, -1.0}, {n - 1, 1.0}}, 0.0, 0.0);
+        }
     }
 }
 
 QpProblem smoothestQp(const LayerBounds& b) {
     const auto n = static_cast<Eigen::Index>(b.s.size());
     std::vector<Triplet> d2;
-    for (std::size_t i = 1; i + 1 < b.s.size(); ++i) {
+    const std::vector<SecondDifferenceRow> objective = objectiveRows(b);
+    for (std::size_t r = 0; r < objective.size(); ++r) {
         // sqrt(w_i) folded into the row, so D' D is the weighted Hessian.
-        const double weight = 0.5 * (b.s[i + 1] - b.s[i - 1]);
-        addSecondDifferenceRow(b.s, i, std::sqrt(weight), static_cast<Eigen::Index>(i - 1), d2);
+        addRow(objective[r], std::sqrt(objective[r].weight), static_cast<Eigen::Index>(r), d2);
     }
-    SparseMatrix D(n - 2, n);
+    SparseMatrix D(static_cast<Eigen::Index>(objective.size()), n);
     D.setFromTriplets(d2.begin(), d2.end());
     Rows rows;
     addScheduleRows(b, rows);
@@ -91,9 +146,8 @@ SparseLp minimumPeakLp(const LayerBounds& b) {
     const double scale = 0.25 * length * length;
     std::vector<Triplet> inequality, equality;
     std::vector<double> rhs, equalityRhs;
-    auto addRow = [&](std::vector<Triplet>& rows, std::vector<double>& values,
-                      std::initializer_list<std::pair<Eigen::Index, double>> entries,
-                      double value) {
+    auto add = [&](std::vector<Triplet>& rows, std::vector<double>& values,
+                   std::initializer_list<std::pair<Eigen::Index, double>> entries, double value) {
         const auto row = static_cast<Eigen::Index>(values.size());
         for (const auto& [col, coefficient] : entries) {
             rows.emplace_back(row, col, coefficient);
@@ -102,27 +156,31 @@ SparseLp minimumPeakLp(const LayerBounds& b) {
     };
     for (Eigen::Index i = 0; i < n; ++i) {
         const auto k = static_cast<std::size_t>(i);
-        addRow(inequality, rhs, {{i, 1.0}}, b.upper[k]);
-        addRow(inequality, rhs, {{i, -1.0}}, -b.lower[k]);
+        add(inequality, rhs, {{i, 1.0}}, b.upper[k]);
+        add(inequality, rhs, {{i, -1.0}}, -b.lower[k]);
         if (i + 1 < n) {
-            addRow(inequality, rhs, {{i, 1.0}, {i + 1, -1.0}}, 0.0); // monotone
+            add(inequality, rhs, {{i, 1.0}, {i + 1, -1.0}}, 0.0); // monotone
         }
     }
-    for (std::size_t i = 1; i + 1 < b.s.size(); ++i) {
+    for (const SecondDifferenceRow& d2 : objectiveRows(b)) {
         for (double sign : {1.0, -1.0}) {
             const auto row = static_cast<Eigen::Index>(rhs.size());
-            addSecondDifferenceRow(b.s, i, sign * scale, row, inequality);
+            addRow(d2, sign * scale, row, inequality);
             inequality.emplace_back(row, n, -1.0);
             rhs.push_back(0.0);
         }
     }
     if (!b.freeStart) {
-        addRow(equality, equalityRhs, {{0, 1.0}}, b.start);
-        addRow(equality, equalityRhs, {{0, -1.0}, {1, 1.0}}, 0.0);
+        add(equality, equalityRhs, {{0, 1.0}}, b.start);
+        if (!b.mirroredStart) {
+            add(equality, equalityRhs, {{0, -1.0}, {1, 1.0}}, 0.0);
+        }
     }
     if (!b.freeEnd) {
-        addRow(equality, equalityRhs, {{n - 1, 1.0}}, b.end);
-        addRow(equality, equalityRhs, {{n - 2, -1.0}, {n - 1, 1.0}}, 0.0);
+        add(equality, equalityRhs, {{n - 1, 1.0}}, b.end);
+        if (!b.mirroredEnd) {
+            add(equality, equalityRhs, {{n - 2, -1.0}, {n - 1, 1.0}}, 0.0);
+        }
     }
     SparseLp lp;
     lp.c = Vector::Zero(n + 1);
@@ -165,6 +223,12 @@ LayerBounds boundsOf(const scheduling::LayerResult& layer, bool firstLayer, bool
     b.end = layer.theta.empty() ? 0.0 : layer.theta.back();
     b.freeStart = firstLayer;
     b.freeEnd = lastLayer;
+    const std::size_t n = b.s.size();
+    auto fits = [&](double value, std::size_t i) {
+        return i < n && value >= b.lower[i] && value <= b.upper[i];
+    };
+    b.mirroredStart = !firstLayer && n > 1 && !fits(b.start, 1);
+    b.mirroredEnd = !lastLayer && n > 1 && !fits(b.end, n - 2);
     return b;
 }
 
@@ -198,6 +262,27 @@ double secondDifferenceEnergy(std::span<const double> s, std::span<const double>
     return energy;
 }
 
+double peakSecondDifference(const LayerBounds& bounds, std::span<const double> theta) {
+    double peak = 0.0;
+    if (bounds.s.size() >= 3 && theta.size() == bounds.s.size()) {
+        for (const SecondDifferenceRow& row : objectiveRows(bounds)) {
+            peak = std::max(peak, std::abs(row.at(theta)));
+        }
+    }
+    return peak;
+}
+
+double secondDifferenceEnergy(const LayerBounds& bounds, std::span<const double> theta) {
+    double energy = 0.0;
+    if (bounds.s.size() >= 3 && theta.size() == bounds.s.size()) {
+        for (const SecondDifferenceRow& row : objectiveRows(bounds)) {
+            const double d2 = row.at(theta);
+            energy += row.weight * d2 * d2;
+        }
+    }
+    return energy;
+}
+
 Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds, const AdmmSettings& settings) {
     if (auto status = validate(bounds); !status) {
         return std::unexpected(status.error());
@@ -216,8 +301,8 @@ Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds, const AdmmSetting
     LayerOptimum optimum;
     const auto n = static_cast<Eigen::Index>(bounds.s.size());
     optimum.theta.assign(solution->x.data(), solution->x.data() + n);
-    optimum.peakSecondDifference = peakSecondDifference(bounds.s, optimum.theta);
-    optimum.secondDifferenceEnergy = secondDifferenceEnergy(bounds.s, optimum.theta);
+    optimum.peakSecondDifference = peakSecondDifference(bounds, optimum.theta);
+    optimum.secondDifferenceEnergy = secondDifferenceEnergy(bounds, optimum.theta);
     optimum.solver = std::move(*solution);
     optimum.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -236,8 +321,8 @@ Result<LayerOptimum> minimumPeakLayer(const LayerBounds& bounds) {
     LayerOptimum optimum;
     const auto n = static_cast<Eigen::Index>(bounds.s.size());
     optimum.theta.assign(solution->x.data(), solution->x.data() + n);
-    optimum.peakSecondDifference = peakSecondDifference(bounds.s, optimum.theta);
-    optimum.secondDifferenceEnergy = secondDifferenceEnergy(bounds.s, optimum.theta);
+    optimum.peakSecondDifference = peakSecondDifference(bounds, optimum.theta);
+    optimum.secondDifferenceEnergy = secondDifferenceEnergy(bounds, optimum.theta);
     optimum.solver.iterations = solution->iterations;
     optimum.solver.converged = solution->converged;
     optimum.seconds =

@@ -22,14 +22,22 @@ struct LayerBounds {
     std::vector<double> s, lower, upper; // mm, rad (relative to the layer's junction angle)
     double start = 0.0, end = 0.0;       // junction values, rad
     bool freeStart = false, freeEnd = false;
+    // The zero end slope is a flat first/last step (spec §9.1) where the hull allows one. At a
+    // pinched base point (§4.6: the junction value lies outside the hull at the neighbouring
+    // sample, as at the fallback base point of a section without a concave run) no flat step
+    // fits, and the engine rises into the base point with theta' = 0 only analytically. There
+    // the condition is a mirrored ghost sample (theta_-1 = theta_1), the usual discrete form of
+    // theta' = 0: its second difference 2 (theta_1 - theta_0) / h_0^2 joins the objective.
+    bool mirroredStart = false, mirroredEnd = false;
 };
 
+// The junction values are the engine's; an end is mirrored where a flat step is infeasible.
 LayerBounds boundsOf(const scheduling::LayerResult& layer, bool firstLayer, bool lastLayer);
 
 struct LayerOptimum {
     std::vector<double> theta;
-    double peakSecondDifference = 0.0;   // max |D2_i|, rad/mm^2
-    double secondDifferenceEnergy = 0.0; // sum w_i D2_i^2
+    double peakSecondDifference = 0.0;   // max |D2_i| (mirrored ends included), rad/mm^2
+    double secondDifferenceEnergy = 0.0; // sum w_i D2_i^2 (mirrored ends included)
     QpSolution solver;
     double seconds = 0.0;
 };
@@ -52,5 +60,11 @@ Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Obj
 std::vector<double> secondDifferences(std::span<const double> s, std::span<const double> theta);
 double peakSecondDifference(std::span<const double> s, std::span<const double> theta);
 double secondDifferenceEnergy(std::span<const double> s, std::span<const double> theta);
+
+// The objectives of the problem `bounds` for any schedule of its samples: the interior D2_i
+// and, at a mirrored end, the ghost sample's. What the optimum minimises, so a feasible
+// schedule (the engine's) can be compared with it like for like.
+double peakSecondDifference(const LayerBounds& bounds, std::span<const double> theta);
+double secondDifferenceEnergy(const LayerBounds& bounds, std::span<const double> theta);
 
 } // namespace bladeaxis::optimal

@@ -19,6 +19,7 @@ using compare::MethodResult;
 using kinematics::AxisId;
 
 constexpr std::array<AxisId, 4> kTableAxes{AxisId::X, AxisId::Y, AxisId::Z, AxisId::A};
+constexpr std::size_t kAllLayersUpTo = 4; // report.html plots every layer of a short path
 
 // Rotary values are reported in degrees, linear ones in mm.
 double display(AxisId axis, double value) {
@@ -70,6 +71,9 @@ nlohmann::json methodJson(const MethodResult& method, const compare::Comparison&
     json["t1_gain_vs_original"] = compare::reduction(original.t1.time, method.t1.time);
     if (method.t2Jerk) {
         json["t2_jerk_heuristic_s"] = *method.t2Jerk;
+    }
+    if (!method.t2Failure.empty()) {
+        json["t2_failure"] = method.t2Failure;
     }
     if (method.t2 && original.t2) {
         json["t2_s"] = *method.t2;
@@ -197,33 +201,36 @@ void addReductionColumns(const compare::Comparison& comparison,
     const MethodResult& reference = tableReference(comparison);
     const MethodResult& original = comparison.methods.front();
     const std::string against = reference.method;
-    for (const auto& [quantity, shortName] :
-         {std::pair<std::string, std::string>{"velocity", "vel."}, {"acceleration", "acc."}}) {
-        const std::string metric = "A peak " + quantity;
-        columns.push_back(
-            {{"A_" + quantity + "_reduction_vs_reference",
-              "A " + shortName + " reduction vs " + against,
-              "(reference - method) / reference; the quaternion reference is its best setting "
-              "for this metric",
-              Better::Higher},
-             [&comparison, &reference, metric](const MethodResult& method) {
-                 const double value =
-                     compare::reduction(referenceValue(comparison, reference, metric),
-                                        compare::metricValue(method, metric));
-                 return numberCell(value, percent(value), fairnessNote(comparison, metric));
-             }});
-        if (&reference == &original) {
-            continue; // the reference already is the original
+    for (AxisId axis : kTableAxes) {
+        const std::string name = kinematics::axisName(axis);
+        for (const auto& [quantity, shortName] :
+             {std::pair<std::string, std::string>{"velocity", "vel."}, {"acceleration", "acc."}}) {
+            const std::string metric = name + " peak " + quantity;
+            columns.push_back(
+                {{name + "_" + quantity + "_reduction_vs_reference",
+                  name + " " + shortName + " reduction vs " + against,
+                  "(reference - method) / reference; the quaternion reference is its best "
+                  "setting for this metric",
+                  Better::Higher},
+                 [&comparison, &reference, metric](const MethodResult& method) {
+                     const double value =
+                         compare::reduction(referenceValue(comparison, reference, metric),
+                                            compare::metricValue(method, metric));
+                     return numberCell(value, percent(value), fairnessNote(comparison, metric));
+                 }});
+            if (&reference == &original) {
+                continue; // the reference already is the original
+            }
+            columns.push_back({{name + "_" + quantity + "_reduction_vs_original",
+                                name + " " + shortName + " reduction vs original",
+                                "(original - method) / original", Better::Higher},
+                               [&original, metric](const MethodResult& method) {
+                                   const double value =
+                                       compare::reduction(compare::metricValue(original, metric),
+                                                          compare::metricValue(method, metric));
+                                   return numberCell(value, percent(value));
+                               }});
         }
-        columns.push_back({{"A_" + quantity + "_reduction_vs_original",
-                            "A " + shortName + " reduction vs original",
-                            "(original - method) / original", Better::Higher},
-                           [&original, metric](const MethodResult& method) {
-                               const double value =
-                                   compare::reduction(compare::metricValue(original, metric),
-                                                      compare::metricValue(method, metric));
-                               return numberCell(value, percent(value));
-                           }});
     }
 }
 
@@ -260,6 +267,16 @@ void addTimeColumns(const compare::Comparison& comparison, std::vector<ColumnDef
                            const double gain = compare::reduction(*original.t2, *method.t2);
                            return numberCell(gain, percent(gain));
                        }});
+    columns.push_back(
+        {{"t2_speedup_vs_original", "T2 efficiency vs original",
+          "original / T2 - 1, the other reading of the paper's efficiency gain", Better::Higher},
+         [&original](const MethodResult& method) {
+             if (!method.t2 || !original.t2) {
+                 return emptyCell();
+             }
+             const double speedup = *original.t2 / *method.t2 - 1.0;
+             return numberCell(speedup, percent(speedup));
+         }});
 }
 
 // The gaps to the optimum in the same channel (spec 9.5), as ratios: 1 is the optimum itself.
@@ -317,39 +334,23 @@ std::vector<ColumnDefinition> tableColumns(const compare::Comparison& comparison
     return columns;
 }
 
-// The columns report.html prints, in its order.
-constexpr std::array<std::string_view, 17> kHtmlColumns{"method",
-                                                        "X_peak_velocity",
-                                                        "X_peak_acceleration",
-                                                        "Y_peak_velocity",
-                                                        "Y_peak_acceleration",
-                                                        "Z_peak_velocity",
-                                                        "Z_peak_acceleration",
-                                                        "A_peak_velocity",
-                                                        "A_peak_acceleration",
-                                                        "A_velocity_reduction_vs_reference",
-                                                        "A_acceleration_reduction_vs_reference",
-                                                        "a_reversals",
-                                                        "t1_s",
-                                                        "t1_gain_vs_original",
-                                                        "t2_s",
-                                                        "min_clearance_deg",
-                                                        "compute_ms"};
-
 struct PrintedTable {
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> rows;
 };
 
+// Every column of compareTable, as the GUI shows it: one definition for both.
 PrintedTable printedTable(const CompareTable& table) {
     PrintedTable printed;
-    printed.rows.resize(table.rows.size());
-    for (std::string_view key : kHtmlColumns) {
-        const auto column = static_cast<std::size_t>(table.columnOf(key));
-        printed.header.push_back(table.columns[column].header);
-        for (std::size_t row = 0; row < table.rows.size(); ++row) {
-            printed.rows[row].push_back(table.rows[row][column].text);
+    for (const CompareTableColumn& column : table.columns) {
+        printed.header.push_back(column.header);
+    }
+    for (const std::vector<CompareTableCell>& row : table.rows) {
+        std::vector<std::string> texts;
+        for (const CompareTableCell& cell : row) {
+            texts.push_back(cell.text);
         }
+        printed.rows.push_back(std::move(texts));
     }
     return printed;
 }
@@ -454,7 +455,47 @@ std::vector<std::vector<std::string>> sweepRows(const compare::Comparison& compa
     return rows;
 }
 
+// The table's derived figures (reductions, gains, gaps to the optimum), as fractions or ratios:
+// compare.csv appends them to the raw values so that it carries what report.html shows.
+std::vector<std::size_t> derivedColumns(const CompareTable& table) {
+    std::vector<std::size_t> derived;
+    for (std::size_t i = 0; i < table.columns.size(); ++i) {
+        const std::string& key = table.columns[i].key;
+        if (key.ends_with("_vs_reference") || key.ends_with("_vs_original") ||
+            key.find("_ratio_to_optimal_") != std::string::npos) {
+            derived.push_back(i);
+        }
+    }
+    return derived;
+}
+
+// A column key for the CSV, naming the reduction's reference method ("..._vs_quaternion").
+std::string csvKey(const CompareTable& table, std::size_t column) {
+    std::string key = table.columns[column].key;
+    constexpr std::string_view kReference = "_vs_reference";
+    if (key.ends_with(kReference)) {
+        key.replace(key.size() - kReference.size(), kReference.size(),
+                    "_vs_" + table.reductionReference);
+    }
+    return key;
+}
+
 } // namespace
+
+std::vector<std::size_t> plottedLayers(const compare::Comparison& comparison) {
+    const std::size_t count = comparison.reference.layers.size();
+    std::vector<std::size_t> layers;
+    if (count <= kAllLayersUpTo) {
+        for (std::size_t k = 0; k < count; ++k) {
+            layers.push_back(k);
+        }
+        return layers;
+    }
+    layers = {mostReciprocatingLayer(comparison), count / 2, count - 1};
+    std::sort(layers.begin(), layers.end());
+    layers.erase(std::unique(layers.begin(), layers.end()), layers.end());
+    return layers;
+}
 
 int CompareTable::columnOf(std::string_view key) const {
     for (std::size_t i = 0; i < columns.size(); ++i) {
@@ -500,18 +541,27 @@ nlohmann::json compareJson(const compare::Comparison& comparison) {
                                                      {"value", entry.value}};
     }
     json["quaternion_failures"] = comparison.quaternionFailures;
+    json["optimum_failures"] = comparison.optimumFailures;
+    json["missing_figures"] = comparison.missingFigures();
     return json;
 }
 
 std::string compareCsv(const compare::Comparison& comparison) {
+    const CompareTable table = compareTable(comparison);
+    const std::vector<std::size_t> derived = derivedColumns(table);
     std::string csv = "method,setting";
     for (AxisId axis : kTableAxes) {
         const std::string name = kinematics::axisName(axis);
         csv += "," + name + "_peak_velocity_" + velocityUnit(axis) + "," + name +
                "_peak_acceleration_" + accelerationUnit(axis);
     }
-    csv += ",a_reversals,t1_s,t2_s,min_clearance_deg,peak_theta_dd_deg_mm2,compute_s\n";
-    for (const MethodResult& method : comparison.methods) {
+    csv += ",a_reversals,t1_s,t2_s,min_clearance_deg,peak_theta_dd_deg_mm2,compute_s";
+    for (std::size_t column : derived) {
+        csv += "," + csvKey(table, column);
+    }
+    csv += "\n";
+    for (std::size_t row = 0; row < comparison.methods.size(); ++row) {
+        const MethodResult& method = comparison.methods[row];
         csv += method.method + ",\"" + method.setting + "\"";
         for (AxisId axis : kTableAxes) {
             const auto& series = method.profile.axis(axis);
@@ -523,7 +573,12 @@ std::string compareCsv(const compare::Comparison& comparison) {
                (method.t2 ? formatShortest(*method.t2) : std::string()) + "," +
                formatShortest(units::radToDeg(method.channel.minClearance)) + "," +
                formatShortest(units::radToDeg(method.channel.peakSecondDerivative)) + "," +
-               formatShortest(method.computeSeconds) + "\n";
+               formatShortest(method.computeSeconds);
+        for (std::size_t column : derived) {
+            const auto& value = table.rows[row][column].value;
+            csv += "," + (value ? formatShortest(*value) : std::string());
+        }
+        csv += "\n";
     }
     return csv;
 }
@@ -545,6 +600,13 @@ std::string compareHtml(const compare::Comparison& comparison, const std::string
     }
     const auto [header, rows] = printedTable(compareTable(comparison));
     page.table(header, rows);
+    if (const auto missing = comparison.missingFigures(); !missing.empty()) {
+        std::string text = "Not computed (the table shows \"-\" or leaves the method out):";
+        for (const std::string& reason : missing) {
+            text += " " + reason + ".";
+        }
+        page.paragraph(text);
+    }
     if (!comparison.quaternionFairness.empty()) {
         std::vector<std::vector<std::string>> fairness;
         for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
@@ -563,10 +625,17 @@ std::string compareHtml(const compare::Comparison& comparison, const std::string
         page.figure(axisPlot(comparison, AxisId::A, derivative));
     }
     page.heading("Layers in the S-theta plane");
-    const std::size_t layer = mostReciprocatingLayer(comparison);
-    page.figure(channelPlot(comparison, layer),
-                "The layer where the original orientation swings back the most: raw channel, "
-                "monotone hull and every method's theta(S).");
+    page.paragraph("Raw channel, monotone hull and every method's theta(S).");
+    const std::size_t reciprocating = mostReciprocatingLayer(comparison);
+    const std::size_t layers = comparison.reference.layers.size();
+    for (std::size_t layer : plottedLayers(comparison)) {
+        std::string caption =
+            "Layer " + std::to_string(layer + 1) + " of " + std::to_string(layers);
+        if (layer == reciprocating) {
+            caption += ", where the original orientation swings back the most";
+        }
+        page.figure(channelPlot(comparison, layer), caption + ".");
+    }
     page.heading("Linear axes");
     for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z}) {
         page.figure(axisPlot(comparison, axis, 1));

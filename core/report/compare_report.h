@@ -38,19 +38,25 @@ struct CompareTable {
     int columnOf(std::string_view key) const;        // -1 when absent
 };
 
-// Every column of the table: per-axis peaks (X, Y, Z, A), A reductions against the quaternion
-// baseline (its best setting per metric, spec 7.2) and against the original, A reversals,
-// T1 and T2 with their gains, the gaps to the optimum (spec 9.5) when it was computed, the
-// minimum channel clearance and the compute time. report.html prints a subset of them.
+// Every column of the table: per-axis peaks (X, Y, Z, A), their reductions against the
+// quaternion baseline (its best setting per metric, spec 7.2) and against the original, A
+// reversals, T1 and T2 with their gains, the gaps to the optimum (spec 9.5) when it was
+// computed, the minimum channel clearance and the compute time. report.html prints all of them.
 CompareTable compareTable(const compare::Comparison& comparison);
 
 nlohmann::json compareJson(const compare::Comparison& comparison);
 
-// One row per method; units in the header.
+// One row per method; units in the header. The raw values, then the table's derived figures
+// (reductions, gains, gaps to the optimum) as fractions or ratios, keyed as in compareTable
+// with "_vs_reference" naming the reference method.
 std::string compareCsv(const compare::Comparison& comparison);
 
-// `title` names the program; layers to plot in the S-theta plane are chosen by the report
-// (the first intermediate layer and the one where the original reverses most).
+// The layers report.html draws in the S-theta plane, ascending: every layer of a path with at
+// most 4, else the one where the original swings back the most, the middle one and the last.
+std::vector<std::size_t> plottedLayers(const compare::Comparison& comparison);
+
+// `title` names the program. Besides the table (every column of compareTable) and the A-axis
+// and X/Y/Z plots, one S-theta figure per plottedLayers entry with every method's theta(S).
 std::string compareHtml(const compare::Comparison& comparison, const std::string& title);
 
 } // namespace bladeaxis::report

@@ -153,6 +153,17 @@ TEST(TimeOptimal, JerkHeuristicOnlyEverSlowsDownAndIdlesWithoutJerkLimits) {
     EXPECT_DOUBLE_EQ(unlimited->time, timeOptimalTime(profile, machine)->time);
 }
 
+// Issue 4: a constant path acceleration per interval cannot cross an interval that starts and
+// ends at rest; T2 used to fail there (the original of some family blades reaches rest at the
+// last but one sample). Accelerating over half of it and braking over the other half takes
+// 2 sqrt(L / a) on one axis, the §10.1 triangle.
+TEST(TimeOptimal, AnIntervalFromRestToRestIsTheTriangleProfile) {
+    const double length = 0.5, a = 100.0;
+    const auto result = timeOptimalTime(straightLine(length, 2, 1e4), linearMachine(1e3, a));
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    EXPECT_NEAR(result->time, 2.0 * std::sqrt(length / a), 1e-9);
+}
+
 TEST(TimeOptimal, TooShortOrFeedlessProfilesAreErrors) {
     AxisProfile profile;
     profile.pathParameter = {0.0};

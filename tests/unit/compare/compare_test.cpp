@@ -1,3 +1,4 @@
+#include "core/analysis/time_optimal.h"
 #include "core/analysis/time_optimal_sweep.h"
 #include "core/blade/presets.h"
 #include "core/compare/compare.h"
@@ -17,9 +18,9 @@ struct DemoPass {
     std::vector<kinematics::MachineAxes> axes;
     double toolRadius = 0.0;
 
-    DemoPass() {
-        auto bladeModel = blade::Blade::create(blade::demoBladeSpec());
-        const blade::HelicalPathSpec spec = blade::demoPathSpec();
+    DemoPass(const blade::BladeSpec& bladeSpec = blade::demoBladeSpec(),
+             const blade::HelicalPathSpec& spec = blade::demoPathSpec()) {
+        auto bladeModel = blade::Blade::create(bladeSpec);
         auto generated = blade::generateHelicalPath(*bladeModel, spec);
         records = generated->path.records;
         toolRadius = spec.toolRadius;
@@ -161,6 +162,50 @@ TEST(Compare, QuaternionBaselineStillReciprocatesAndTheEngineBeatsItsBestSetting
     for (const MethodResult& setting : comparison.quaternionSettings) {
         EXPECT_GE(metricValue(setting, "A peak acceleration"), *bestAcceleration);
     }
+}
+
+// Issue 4: a section without a concave run (fallback base points, pinched at the junction)
+// used to lose both optimal schedules without a word.
+TEST(Compare, ASymmetricBladeHasBothOptimaAndNoMissingFigures) {
+    blade::BladeSpec symmetric = blade::demoBladeSpec();
+    symmetric.profile = blade::NacaProfile{0.0, 0.4, 0.12};
+    blade::HelicalPathSpec path = blade::demoPathSpec();
+    path.revolutions = 4;
+    const DemoPass pass(symmetric, path);
+    auto comparison = compareMethods(pass.context(), {}, CancelToken{});
+    ASSERT_TRUE(comparison.has_value()) << comparison.error().toString();
+    EXPECT_NE(comparison->find("optimal-qp"), nullptr);
+    EXPECT_NE(comparison->find("optimal-lp"), nullptr);
+    EXPECT_TRUE(comparison->optimumFailures.empty()) << comparison->optimumFailures.front();
+    EXPECT_TRUE(comparison->missingFigures().empty()) << comparison->missingFigures().front();
+}
+
+// Issue 4: the jagged originals of some family blades brake to rest at the last but one sample,
+// and their T2 (and with it every T2 gain of that blade) used to be dropped.
+TEST(Compare, EveryFamilyOriginalHasATimeOptimalTime) {
+    auto family = blade::syntheticFamily(2022, 8);
+    ASSERT_TRUE(family.has_value()) << family.error().toString();
+    const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    for (const blade::FamilyMember& member : *family) {
+        const DemoPass pass(member.blade, member.path);
+        auto profile = analysis::analyseAxisMotion(pass.axes, pass.records, {});
+        ASSERT_TRUE(profile.has_value()) << member.name;
+        auto t2 = analysis::timeOptimalTime(*profile, machine);
+        ASSERT_TRUE(t2.has_value()) << member.name << ": " << t2.error().toString();
+        EXPECT_GE(t2->time, profile->pathLength / profile->feed) << member.name;
+        EXPECT_TRUE(std::isfinite(t2->time)) << member.name;
+    }
+}
+
+TEST(Compare, MissingFiguresNameTheMethodAndTheReason) {
+    Comparison comparison = demoComparison();
+    comparison.optimumFailures = {"optimal-lp: layer 2: no convergence"};
+    comparison.methods.front().t2.reset();
+    comparison.methods.front().t2Failure = "the axis limits do not let the tool move";
+    const auto missing = comparison.missingFigures();
+    ASSERT_EQ(missing.size(), 2u);
+    EXPECT_EQ(missing[0], "optimal-lp: layer 2: no convergence");
+    EXPECT_EQ(missing[1], "original: T2: the axis limits do not let the tool move");
 }
 
 TEST(Reduction, IsThePapersOptimisationRatio) {

@@ -32,14 +32,37 @@ TEST(Reproduction, EveryBladeIsComparedAndTheEngineNeverReverses) {
     ASSERT_EQ(result.blades.size(), 5u);
     for (const BladeFigures& blade : result.blades) {
         EXPECT_TRUE(blade.error.empty()) << blade.blade << ": " << blade.error;
+        EXPECT_TRUE(blade.missing.empty()) << blade.blade << ": " << blade.missing.front();
         EXPECT_EQ(blade.figures.at("stheta-best").at("a_reversals"), 0.0) << blade.blade;
     }
+    // Issue 4: the symmetric member (family-3) used to lose its optimum and thus its gaps.
+    EXPECT_EQ(result.summary.at("stheta-best").at("peak_theta_dd_ratio_to_optimal_lp").count, 5u);
+    EXPECT_EQ(result.summary.at("stheta-best").at("t2_gain_vs_original").count, 5u);
     const Spread& reduction =
         result.summary.at("stheta-best").at("a_peak_acceleration_reduction_vs_original");
     EXPECT_EQ(reduction.count, 5u);
     EXPECT_GT(reduction.median, 0.5);
     EXPECT_LE(reduction.q1, reduction.median);
     EXPECT_LE(reduction.median, reduction.q3);
+}
+
+TEST(Reproduction, SummaryCountsTheBladesOfEachMedianAndNamesWhatIsMissing) {
+    ReproductionResult result;
+    BladeFigures blade;
+    blade.blade = "family-7";
+    blade.figures["stheta-best"]["t2_gain_vs_original"] = 0.4;
+    blade.missing = {"optimal-qp: layer 2: did not converge"};
+    result.blades = {blade, blade};
+    result.blades[1].blade = "family-8";
+    result.blades[1].missing.clear();
+    result.summary["stheta-best"]["t2_gain_vs_original"] = spreadOf({0.4, 0.4});
+    const std::string text = reproductionSummary(result);
+    EXPECT_NE(text.find("(2 blades)"), std::string::npos) << text;
+    EXPECT_NE(text.find("family-7: optimal-qp: layer 2: did not converge"), std::string::npos)
+        << text;
+    EXPECT_EQ(text.find("family-8:"), std::string::npos) << text;
+    const std::string json = reproductionJsonText(result);
+    EXPECT_NE(json.find("\"missing_figures\""), std::string::npos);
 }
 
 TEST(Reproduction, IsDeterministicForASeed) {

@@ -28,6 +28,14 @@ scheduling::ScheduleInput scheduleInputOf(const EvaluationContext& context) {
     return input;
 }
 
+double layerStageSeconds(const scheduling::ScheduleResult& result) {
+    double seconds = 0.0;
+    for (const scheduling::LayerResult& layer : result.layers) {
+        seconds += layer.seconds;
+    }
+    return seconds;
+}
+
 struct Scheduled {
     scheduling::ScheduleResult result;
     double seconds = 0.0;
@@ -196,6 +204,7 @@ Status addOptimum(Add& add, Comparison& comparison) {
         if (auto s = add(name, setting, std::move(axes), optimum->seconds); !s) {
             return s;
         }
+        comparison.methods.back().layerStageSeconds = optimum->seconds;
     }
     return {};
 }
@@ -244,11 +253,13 @@ Result<Comparison> compareMethods(EvaluationContext context, const CompareOption
         !s) {
         return std::unexpected(s.error());
     }
+    comparison.methods.back().layerStageSeconds = layerStageSeconds(faithful->result);
     if (auto s = add("stheta-best", "exact epsilon, auto lead fraction",
                      comparison.reference.newAxes, best->seconds);
         !s) {
         return std::unexpected(s.error());
     }
+    comparison.methods.back().layerStageSeconds = layerStageSeconds(comparison.reference);
     if (auto s = addQuaternion(context, input, options, cancel, comparison); !s) {
         return std::unexpected(s.error());
     }

@@ -47,6 +47,11 @@ struct MethodResult {
     ChannelMetrics channel;
     std::vector<LimitSweepPoint> sweep; // empty unless requested
     double computeSeconds = 0.0;        // wall time of the method itself (not of its evaluation)
+    // Spec §8.5 "wall time per layer": the per-layer stage alone, summed over the layers (the
+    // engine's layers after its channel stage, or the optimum's solves, which start from the
+    // engine's bounds), so that both sides exclude the shared path preparation. 0 when the
+    // method has no layers.
+    double layerStageSeconds = 0.0;
 };
 
 // T1 (and T2 when the result has one) for each factor.

@@ -87,6 +87,11 @@ std::map<std::string, double> figuresOf(const MethodResult& method,
     if (qp != nullptr && qp != &method && method.computeSeconds > 0.0) {
         figures["compute_speedup_vs_optimal_qp"] = qp->computeSeconds / method.computeSeconds;
     }
+    if (qp != nullptr && qp != &method && method.layerStageSeconds > 0.0) {
+        // Like for like, per layer (spec §8.5): both sides without the shared path preparation.
+        figures["compute_speedup_per_layer_vs_optimal_qp"] =
+            qp->layerStageSeconds / method.layerStageSeconds;
+    }
     return figures;
 }
 

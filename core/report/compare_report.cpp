@@ -96,7 +96,8 @@ nlohmann::json methodJson(const MethodResult& method, const compare::Comparison&
             json["rotary_limit_sweep"].push_back(entry);
         }
     }
-    json["timing"] = {{"compute_s", method.computeSeconds}};
+    json["timing"] = {{"compute_s", method.computeSeconds},
+                      {"layer_stage_s", method.layerStageSeconds}};
     return json;
 }
 

@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <random>
 
 namespace bladeaxis::scheduling {
 namespace {
@@ -217,6 +220,107 @@ TEST(PlateauCorner, DeviationGrowsWithTheHalfWidth) {
     }
     EXPECT_NEAR(plateauHalfWidth(0.0, 0.1, PlateauCorner{Vec2(0.0, 0.0), 0.0, 0.1, 3.0}.epsilon()),
                 3.0, 1e-14);
+}
+
+} // namespace
+} // namespace bladeaxis::scheduling
+
+namespace bladeaxis::scheduling {
+namespace {
+
+// Signed distance of `point` from the line through `origin` with direction `angle`.
+double offLine(const Vec2& point, const Vec2& origin, double angle) {
+    const Vec2 d = point - origin;
+    return d.x() * std::sin(angle) - d.y() * std::cos(angle);
+}
+
+double angleGap(double a, double b) {
+    return std::abs(std::remainder(a - b, 2.0 * std::numbers::pi));
+}
+
+// Spec §5.7 re-established: 20 000 random corners (alpha, beta in [0, 1.45] rad, random P2 and
+// segment lengths, epsilon in (0, epsilon_geo]) checked against every row of its table, on the
+// control points and on 64 curve points per cubic. Tolerances are relative to the corner's size.
+TEST(BezierCorner, TwentyThousandRandomCornersMeetEveryPropertyOfTheSpecTable) {
+    std::mt19937_64 random(5707);
+    std::uniform_real_distribution<double> angle(0.0, 1.45), coordinate(-50.0, 50.0),
+        length(0.5, 60.0), fraction(1e-3, 1.0);
+    std::size_t corners = 0;
+    while (corners < 20000) {
+        const double alpha = angle(random), beta = angle(random);
+        if (std::abs(beta - alpha) < 1e-3) {
+            continue; // no corner to smooth
+        }
+        ++corners;
+        const Vec2 p2(coordinate(random), coordinate(random));
+        const double l1 = length(random), l2 = length(random);
+        const double limit = euclideanEpsilonLimit(alpha, beta, l1, l2, 0.5, 0.5);
+        const bool atLimit = corners % 4 == 0; // a quarter exactly at epsilon_geo
+        const double magnitude = atLimit ? limit : fraction(random) * limit;
+        const double eps = beta > alpha ? magnitude : -magnitude;
+        const BezierPair pair = euclideanCornerPair(p2, alpha, beta, eps);
+        const auto& bi = pair.first.control;
+        const auto& bj = pair.second.control;
+        const double gamma = 0.5 * (alpha + beta);
+        const double scale = std::max({1.0, p2.norm(), l1, l2});
+        SCOPED_TRACE(::testing::Message() << "corner " << corners << " alpha " << alpha << " beta "
+                                          << beta << " eps " << eps);
+        // B_i0, B_i1 on P1P2; B_j1, B_j3 on P2P3; B_i1, B_i3, B_j1 on the line of direction gamma.
+        ASSERT_LT(std::abs(offLine(bi[0], p2, alpha)), 1e-12 * scale);
+        ASSERT_LT(std::abs(offLine(bi[1], p2, alpha)), 1e-12 * scale);
+        ASSERT_LT(std::abs(offLine(bj[1], p2, beta)), 1e-12 * scale);
+        ASSERT_LT(std::abs(offLine(bj[3], p2, beta)), 1e-12 * scale);
+        ASSERT_LT(std::abs(offLine(bi[1], bi[3], gamma)), 1e-12 * scale);
+        ASSERT_LT(std::abs(offLine(bj[1], bi[3], gamma)), 1e-12 * scale);
+        // Equal legs and the joint B_i3 = B_j0.
+        ASSERT_NEAR((bi[1] - bi[0]).norm(), (bi[3] - bi[1]).norm(), 1e-12 * scale);
+        ASSERT_NEAR((bj[1] - bj[0]).norm(), (bj[3] - bj[1]).norm(), 1e-12 * scale);
+        ASSERT_EQ(bi[3], bj[0]);
+        // Tangents alpha at B_i0, beta at B_j3, gamma on both sides of B_i3; zero curvature at
+        // the four joints.
+        ASSERT_LT(angleGap(directionOf(pair.first.firstDerivative(0.0)), alpha), 1e-9);
+        ASSERT_LT(angleGap(directionOf(pair.first.firstDerivative(1.0)), gamma), 1e-9);
+        ASSERT_LT(angleGap(directionOf(pair.second.firstDerivative(0.0)), gamma), 1e-9);
+        ASSERT_LT(angleGap(directionOf(pair.second.firstDerivative(1.0)), beta), 1e-9);
+        for (const CubicBezier* cubic : {&pair.first, &pair.second}) {
+            for (double t : {0.0, 1.0}) {
+                const Vec2 d1 = cubic->firstDerivative(t);
+                const Vec2 d2 = cubic->secondDerivative(t);
+                const double curvature =
+                    (d1.x() * d2.y() - d1.y() * d2.x()) / std::pow(d1.norm(), 3.0);
+                ASSERT_LT(std::abs(curvature) * std::abs(eps), 1e-9);
+            }
+        }
+        // d1 <= l1/2 and d2 <= l2/2 (exactly at the limit for epsilon_geo).
+        ASSERT_LE((bi[0] - p2).norm(), 0.5 * l1 * (1.0 + 1e-12));
+        ASSERT_LE((bj[3] - p2).norm(), 0.5 * l2 * (1.0 + 1e-12));
+        // On the curve: a graph (S increasing), theta non-decreasing, one-signed curvature, on
+        // the corner's side of the polyline, at most |epsilon| from it, |epsilon| at S2.
+        double previousS = -std::numeric_limits<double>::infinity();
+        double previousTheta = -std::numeric_limits<double>::infinity();
+        double deepest = 0.0;
+        for (const CubicBezier* cubic : {&pair.first, &pair.second}) {
+            for (int k = 0; k <= 64; ++k) {
+                const double t = k / 64.0;
+                const Vec2 p = cubic->point(t);
+                const Vec2 d1 = cubic->firstDerivative(t);
+                const Vec2 d2 = cubic->secondDerivative(t);
+                ASSERT_GT(d1.x(), 0.0) << t;
+                ASSERT_GE(p.x(), previousS - 1e-12 * scale) << t;
+                ASSERT_GE(p.y(), previousTheta - 1e-12 * scale) << t;
+                previousS = p.x();
+                previousTheta = p.y();
+                ASSERT_GE((d1.x() * d2.y() - d1.y() * d2.x()) * eps, -1e-12 * scale * scale);
+                const double line =
+                    p2.y() + std::tan(p.x() < p2.x() ? alpha : beta) * (p.x() - p2.x());
+                const double deviation = p.y() - line;
+                ASSERT_GE(deviation * eps, -1e-12 * scale * std::abs(eps)) << t;
+                ASSERT_LE(std::abs(deviation), std::abs(eps) + 1e-12 * scale) << t;
+                deepest = std::max(deepest, std::abs(deviation));
+            }
+        }
+        ASSERT_NEAR(deepest, std::abs(eps), 1e-12 * scale); // reached at B_i3 (t = 1, S = S2)
+    }
 }
 
 } // namespace

@@ -129,8 +129,8 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     cli.add_flag("--demo", raw.demo, "Use the built-in demo blade program");
     auto* cad = cli.add_option_group("Blade CAD", "Clearance check against the real blade");
     cad->add_option("--cad", raw.cad,
-                    "Blade CAD (STEP or IGES) to check the tool against; gouges or collisions "
-                    "the re-scheduling introduces refuse the output program");
+                    "Blade CAD (STEP or IGES) to check the tool against; an output program "
+                    "that gouges or collides anywhere is refused (exit 5)");
     cad->add_option("--cad-translate", raw.cadTranslate,
                     "Move the CAD blade by X Y Z mm into the program's workpiece frame")
         ->expected(3);
@@ -138,7 +138,7 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     cad->add_option("--holder-radius", raw.holderRadius.text, "Holder radius, mm (default 20)");
     cad->add_option("--holder-length", raw.holderLength.text, "Holder length, mm (default 60)");
     cad->add_flag("--force", raw.force,
-                  "Write the program even if the clearance check finds new gouges or collisions");
+                  "Write the program even if the clearance check finds gouges or collisions");
     cli.add_option("--machine", raw.machine,
                    "Machine file (JSON); default: built-in blade machine");
     cli.add_option("--tool-radius", raw.toolRadius.text,

@@ -36,21 +36,48 @@ TEST(CadCheck, NewShankCollisionRefusesTheOutputUnlessForced) {
     auto refused = refuseIfColliding(result, "blade.nc", false);
     ASSERT_FALSE(refused.has_value());
     EXPECT_EQ(refused.error().code, ErrorCode::CheckFailed);
-    EXPECT_NE(refused.error().message.find("blade.nc:57"), std::string::npos)
-        << refused.error().message;
+    const std::string& message = refused.error().message;
+    EXPECT_NE(message.find("blade.nc:57: shank collision 0.300 mm deep"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("the input program does not"), std::string::npos) << message;
     EXPECT_TRUE(refuseIfColliding(result, "blade.nc", true).has_value());
 }
 
-TEST(CadCheck, GougesOfTheInputsOwnCentresAreNotBlamedOnTheSchedule) {
+// The ball centres are kept, so the input's gouge is in the output too: the output still
+// gouges and is refused, but the message says it is the input's (the CAM's) gouge.
+TEST(CadCheck, GougeKeptFromTheInputIsRefusedAndNamedAsTheInputs) {
+    cad::ClearanceReport before = cleanReport(10);
+    before.records[2].ball = -0.2;
+    before.issues.push_back({2, 12, cad::ClearanceKind::Gouge, 0.2});
+    const CadCheckResult result = checkWith(before, before);
+    EXPECT_TRUE(introducedIssues(result).empty());
+    auto refused = refuseIfColliding(result, "blade.nc", false);
+    ASSERT_FALSE(refused.has_value());
+    const std::string& message = refused.error().message;
+    EXPECT_NE(message.find("blade.nc:12: gouge 0.200 mm deep"), std::string::npos) << message;
+    EXPECT_NE(message.find("the input program already gouges there, 0.200 mm deep"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("1 of them as the input program already does"), std::string::npos)
+        << message;
+    EXPECT_TRUE(refuseIfColliding(result, "blade.nc", true).has_value());
+}
+
+// A shank that dips as deep as the input's ball already did is no longer excused.
+TEST(CadCheck, ShankCollisionWhereTheInputGougesIsStillRefused) {
     cad::ClearanceReport before = cleanReport(10);
     before.records[2].ball = -0.2;
     before.issues.push_back({2, 12, cad::ClearanceKind::Gouge, 0.2});
     cad::ClearanceReport after = before;
-    // At the channel limit the shank may go as deep as the ball already is, not deeper.
-    after.records[2].shank = -0.205;
-    after.issues.push_back({2, 12, cad::ClearanceKind::ShankCollision, 0.205});
+    after.records[2].shank = -0.15;
+    after.issues.push_back({2, 12, cad::ClearanceKind::ShankCollision, 0.15});
     const CadCheckResult result = checkWith(before, after);
-    EXPECT_TRUE(introducedIssues(result).empty());
+    EXPECT_EQ(introducedIssues(result).size(), 1u);
+    EXPECT_FALSE(refuseIfColliding(result, "blade.nc", false).has_value());
+}
+
+TEST(CadCheck, CleanOutputIsWritten) {
+    const CadCheckResult result = checkWith(cleanReport(10), cleanReport(10));
     EXPECT_TRUE(refuseIfColliding(result, "blade.nc", false).has_value());
 }
 
@@ -66,7 +93,8 @@ TEST(CadCheck, DemoJobChecksItsOwnBladeAndWritesItAsStep) {
     ASSERT_TRUE(result->cadCheck);
     ASSERT_TRUE(result->cadCheck->rescheduled);
     EXPECT_EQ(result->cadCheck->original.records.size(), result->pass.count);
-    EXPECT_TRUE(introducedIssues(*result->cadCheck).empty());
+    EXPECT_TRUE(result->cadCheck->original.issues.empty());
+    EXPECT_TRUE(result->cadCheck->rescheduled->issues.empty());
     // The CAD sections turn concave where the toolpath said they do (within a degree).
     const auto& sections = result->cadCheck->sections;
     ASSERT_EQ(sections.size(), result->rescheduled->schedule.basePoints.size());

@@ -23,7 +23,9 @@ Exit codes:
   2  bad command line
   3  input program missing, unreadable or malformed (the message names file:line:column)
   4  machine file missing or invalid
-  5  geometry the method cannot handle (NaN, unreachable pose, infeasible channel)
+  5  geometry the method cannot handle (NaN, unreachable pose, infeasible channel,
+     blade CAD that does not fit the program) or a failed output check (re-read
+     verification, gouge or collision without --force)
   6  an output could not be written (inputs are never overwritten)
   7  cancelled)";
 

@@ -3,6 +3,7 @@
 #include "core/base/number_io.h"
 #include "core/cad/surface_samples.h"
 #include "core/cad/tessellation.h"
+#include "core/job/cad_fit.h"
 
 #include <algorithm>
 
@@ -49,6 +50,22 @@ Result<CadCheckResult> runCadCheck(const CadCheckSpec& spec, const cad::CadShape
         return std::unexpected(original.error());
     }
     result.original = std::move(*original);
+    std::vector<Vec3> centres;
+    centres.reserve(pass.original.size());
+    for (const toolpath::ClRecord& record : pass.original) {
+        centres.push_back(record.tip + toolRadius * record.axis.normalized());
+    }
+    const std::string cadName = spec.file.empty() ? result.source : spec.file.string();
+    if (Status fits = checkCadFitsProgram({.blade = &*mesh,
+                                           .clearance = &result.original,
+                                           .centres = centres,
+                                           .toolRadius = toolRadius,
+                                           .searchLimit = cad::ClearanceOptions{}.searchLimit,
+                                           .cadName = cadName,
+                                           .programName = pass.sourceFile});
+        !fits) {
+        return std::unexpected(fits.error());
+    }
     if (!pass.rescheduled.empty()) {
         auto rescheduled = check(*samples, pass.rescheduled, tool, pass);
         if (!rescheduled) {

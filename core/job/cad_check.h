@@ -45,7 +45,8 @@ struct CuttingPassView {
 };
 
 // Tessellates and samples the blade once, then checks both passes. Errors: Geometry for meshing
-// failures, InvalidArgument for a bad tool.
+// failures and for CAD that does not fit the program (cad_fit.h), InvalidArgument for a bad
+// tool.
 Result<CadCheckResult> runCadCheck(const CadCheckSpec& spec, const cad::CadShape& blade,
                                    std::string source, double toolRadius,
                                    const CuttingPassView& pass);

@@ -122,5 +122,49 @@ TEST(CadCheck, UnreadableCadFileIsAnInputError) {
     EXPECT_NE(result.error().toString().find("truncated.step"), std::string::npos);
 }
 
+// A box a metre away from the demo's toolpath is not its blade: every clearance would be capped
+// at the search limit and the check would pass silently.
+TEST(CadCheck, CadFarFromTheToolpathIsAGeometryErrorNamingTheFile) {
+    JobSpec spec;
+    spec.demo = true;
+    spec.cad.file = fs::path(BLADEAXIS_TEST_DATA_DIR) / "cad/box_solid_inch.step";
+    spec.cad.placement.translation = Vec3(1000.0, 0.0, 0.0);
+    NullProgressSink progress;
+    CancelToken cancel;
+    auto result = runJob(spec, progress, cancel);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::Geometry);
+    const std::string text = result.error().toString();
+    EXPECT_NE(text.find("box_solid_inch.step"), std::string::npos) << text;
+    EXPECT_NE(text.find("does not fit the program"), std::string::npos) << text;
+    EXPECT_NE(text.find("CL points are farther than the 5 mm search limit"), std::string::npos)
+        << text;
+}
+
+// The demo blade shifted along the rotary axis leaves part of the program without blade.
+TEST(CadCheck, CadNotSpanningTheProgramIsAGeometryError) {
+    JobSpec demo;
+    demo.demo = true;
+    demo.outputDir = fs::temp_directory_path() / "bladeaxis_cad_check_span";
+    fs::remove_all(demo.outputDir);
+    NullProgressSink progress;
+    CancelToken cancel;
+    auto written = runJob(demo, progress, cancel);
+    ASSERT_TRUE(written.has_value()) << written.error().toString();
+    ASSERT_TRUE(writeJobOutputs(demo, *written));
+    JobSpec spec;
+    spec.demo = true;
+    spec.cad.file = demo.outputDir / "demo_blade.step";
+    spec.cad.placement.translation = Vec3(12.0, 0.0, 0.0);
+    auto result = runJob(spec, progress, cancel);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::Geometry);
+    EXPECT_NE(result.error().toString().find("found the CAD at x 12.0 .. 32.0,"), std::string::npos)
+        << result.error().toString();
+    spec.cad.placement.translation = Vec3::Zero(); // in place it fits
+    EXPECT_TRUE(runJob(spec, progress, cancel).has_value());
+    fs::remove_all(demo.outputDir);
+}
+
 } // namespace
 } // namespace bladeaxis::job

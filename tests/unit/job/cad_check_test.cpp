@@ -1,12 +1,15 @@
 // The job's clearance check against the blade CAD (issue 6): what it refuses and what it reports.
 
 #include "core/base/file_io.h"
+#include "core/base/number_io.h"
 #include "core/cad/cad_files.h"
 #include "core/job/cad_check.h"
 #include "core/job/job.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace bladeaxis::job {
@@ -164,6 +167,43 @@ TEST(CadCheck, CadNotSpanningTheProgramIsAGeometryError) {
     spec.cad.placement.translation = Vec3::Zero(); // in place it fits
     EXPECT_TRUE(runJob(spec, progress, cancel).has_value());
     fs::remove_all(demo.outputDir);
+}
+
+// The clearance per layer reaches report.json (each layer's minima over its CL points), each
+// CL point's clearance layers.csv, and a one-line summary the batch output.
+TEST(CadCheck, DemoOutputsCarryTheClearancePerLayerAndPerPoint) {
+    JobSpec spec;
+    spec.demo = true;
+    spec.outputDir = fs::temp_directory_path() / "bladeaxis_cad_check_layers";
+    fs::remove_all(spec.outputDir);
+    NullProgressSink progress;
+    CancelToken cancel;
+    auto result = runJob(spec, progress, cancel);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    ASSERT_TRUE(writeJobOutputs(spec, *result));
+    const cad::ClearanceReport& after = *result->cadCheck->rescheduled;
+    const auto report = nlohmann::json::parse(*readTextFile(spec.outputDir / "report.json"));
+    const auto& layers = report.at("clearance").at("rescheduled").at("layers");
+    ASSERT_EQ(layers.size(), result->rescheduled->schedule.layers.size());
+    for (const auto& layer : layers) {
+        const std::size_t first = layer.at("first_record");
+        const std::size_t last = layer.at("last_record");
+        double shank = 1e300;
+        for (std::size_t i = first; i <= last; ++i) {
+            shank = std::min(shank, after.records[i].shank);
+        }
+        EXPECT_EQ(layer.at("min_shank_mm").get<double>(), shank);
+        EXPECT_EQ(layer.at("first_line").get<int>(),
+                  result->program.path().records[result->pass.first + first].line);
+    }
+    const std::string csv = *readTextFile(spec.outputDir / "layers.csv");
+    EXPECT_NE(csv.find("ddtheta_deg_mm2,ball_clearance_mm,shank_clearance_mm\n"),
+              std::string::npos);
+    const std::string secondRow =
+        csv.substr(csv.find('\n') + 1, csv.find('\n', csv.find('\n') + 1) - csv.find('\n') - 1);
+    EXPECT_EQ(secondRow.substr(secondRow.rfind(',') + 1), formatShortest(after.records[0].shank));
+    EXPECT_NE(formatSummary(*result).find("clearance    ball >= "), std::string::npos);
+    fs::remove_all(spec.outputDir);
 }
 
 } // namespace

@@ -70,10 +70,15 @@ class MainWindow final : public QMainWindow {
     void selectLayer(int layer);
     // Write the re-scheduled program / CL data / report folder of the last result exactly as
     // `--batch` would (through core's writeJobOutputs, which refuses when a check failed or the
-    // tool collides); refused while edits are still being applied.
-    Status exportProgram(const QString& path);
-    Status exportClData(const QString& path);
+    // tool gouges or collides; `force` is the batch's --force and overrides only the latter);
+    // refused while edits are still being applied.
+    Status exportProgram(const QString& path, bool force = false);
+    Status exportClData(const QString& path, bool force = false);
     Status exportReport(const QString& folder);
+    // File > Export program / CL data after the file dialog: when the clearance check refuses
+    // the output, shows where and offers "Export anyway" (the batch's --force).
+    void exportProgramTo(const QString& path);
+    void exportClDataTo(const QString& path);
     // Sets (or with nullopt removes) the override of a layer, shows `preview` key points in the
     // editor at once when the layer is shown, and re-runs the job. Used by the undo commands.
     void setLayerOverride(std::size_t layer, const std::optional<scheduling::LayerOverride>& change,
@@ -126,6 +131,8 @@ class MainWindow final : public QMainWindow {
     void exportClDialog();
     void exportReportDialog();
     void reportOutcome(const Status& status, const QString& done, const QString& refusedTitle);
+    // Whether to write although the tool gouges or collides: nullopt = cancelled.
+    std::optional<bool> confirmClearance();
 
     job::JobSpec m_spec;
     std::optional<job::JobResult> m_result;

@@ -23,6 +23,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPalette>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyleFactory>
@@ -274,22 +275,24 @@ Status MainWindow::saveJob(const QString& jobPath) {
     return writeFileAtomically(path, job::jobJsonText(m_spec, folder));
 }
 
-Status MainWindow::exportProgram(const QString& path) {
+Status MainWindow::exportProgram(const QString& path, bool force) {
     if (Status pending = refuseWhilePending(); !pending) {
         return pending;
     }
     job::JobSpec spec = m_spec;
+    spec.cad.force = force;
     spec.outputProgram = path.toStdString();
     spec.outputCl.clear();
     spec.outputDir.clear();
     return job::writeJobOutputs(spec, *m_result);
 }
 
-Status MainWindow::exportClData(const QString& path) {
+Status MainWindow::exportClData(const QString& path, bool force) {
     if (Status pending = refuseWhilePending(); !pending) {
         return pending;
     }
     job::JobSpec spec = m_spec;
+    spec.cad.force = force;
     spec.outputProgram.clear();
     spec.outputCl = path.toStdString();
     spec.outputDir.clear();
@@ -317,10 +320,46 @@ void MainWindow::reportOutcome(const Status& status, const QString& done,
     statusBar()->showMessage(done, 8000);
 }
 
+std::optional<bool> MainWindow::confirmClearance() {
+    if (!m_result || !m_result->cadCheck || !refuseWhilePending()) {
+        return false; // nothing to confirm: the export itself says why it is refused
+    }
+    const Status refused =
+        job::refuseIfColliding(*m_result->cadCheck, m_result->program.path().sourceFile, false);
+    if (refused) {
+        return false;
+    }
+    QMessageBox box(QMessageBox::Warning, tr("The tool gouges or collides"),
+                    QString::fromStdString(refused.error().toString()), QMessageBox::NoButton,
+                    this);
+    QPushButton* anyway = box.addButton(tr("Export anyway"), QMessageBox::DestructiveRole);
+    box.setDefaultButton(box.addButton(QMessageBox::Cancel));
+    box.exec();
+    if (box.clickedButton() != anyway) {
+        statusBar()->showMessage(tr("Export cancelled"), 5000);
+        return std::nullopt;
+    }
+    return true;
+}
+
+void MainWindow::exportProgramTo(const QString& path) {
+    if (const std::optional<bool> force = confirmClearance()) {
+        reportOutcome(exportProgram(path, *force), tr("Exported %1").arg(path),
+                      tr("Export refused"));
+    }
+}
+
+void MainWindow::exportClDataTo(const QString& path) {
+    if (const std::optional<bool> force = confirmClearance()) {
+        reportOutcome(exportClData(path, *force), tr("Exported %1").arg(path),
+                      tr("Export refused"));
+    }
+}
+
 void MainWindow::exportProgramDialog() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export program"));
     if (!path.isEmpty()) {
-        reportOutcome(exportProgram(path), tr("Exported %1").arg(path), tr("Export refused"));
+        exportProgramTo(path);
     }
 }
 
@@ -328,7 +367,7 @@ void MainWindow::exportClDialog() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export CL data"), QString(),
                                                       tr("CL data (*.cl *.apt)"));
     if (!path.isEmpty()) {
-        reportOutcome(exportClData(path), tr("Exported %1").arg(path), tr("Export refused"));
+        exportClDataTo(path);
     }
 }
 

@@ -23,7 +23,9 @@ Exit codes:
   2  bad command line
   3  input program missing, unreadable or malformed (the message names file:line:column)
   4  machine file missing or invalid
-  5  geometry the method cannot handle (NaN, unreachable pose, infeasible channel)
+  5  geometry the method cannot handle (NaN, unreachable pose, infeasible channel,
+     blade CAD that does not fit the program) or a failed output check (re-read
+     verification, gouge or collision without --force)
   6  an output could not be written (inputs are never overwritten)
   7  cancelled)";
 
@@ -129,8 +131,8 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     cli.add_flag("--demo", raw.demo, "Use the built-in demo blade program");
     auto* cad = cli.add_option_group("Blade CAD", "Clearance check against the real blade");
     cad->add_option("--cad", raw.cad,
-                    "Blade CAD (STEP or IGES) to check the tool against; gouges or collisions "
-                    "the re-scheduling introduces refuse the output program");
+                    "Blade CAD (STEP or IGES) to check the tool against; an output program "
+                    "that gouges or collides anywhere is refused (exit 5)");
     cad->add_option("--cad-translate", raw.cadTranslate,
                     "Move the CAD blade by X Y Z mm into the program's workpiece frame")
         ->expected(3);
@@ -138,7 +140,7 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     cad->add_option("--holder-radius", raw.holderRadius.text, "Holder radius, mm (default 20)");
     cad->add_option("--holder-length", raw.holderLength.text, "Holder length, mm (default 60)");
     cad->add_flag("--force", raw.force,
-                  "Write the program even if the clearance check finds new gouges or collisions");
+                  "Write the program even if the clearance check finds gouges or collisions");
     cli.add_option("--machine", raw.machine,
                    "Machine file (JSON); default: built-in blade machine");
     cli.add_option("--tool-radius", raw.toolRadius.text,

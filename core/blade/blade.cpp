@@ -123,17 +123,54 @@ Curve2 Blade::analyticSectionAt(double x) const {
     return section;
 }
 
-Curve2 Blade::tableSectionAt(double x) const {
+std::size_t Blade::stationBelow(double x) const {
     const auto upper = std::upper_bound(m_stationX.begin(), m_stationX.end(), x);
     const std::size_t hi = std::min<std::size_t>(
         static_cast<std::size_t>(upper - m_stationX.begin()), m_stationX.size() - 1);
-    const std::size_t lo = hi - 1;
+    return hi - 1;
+}
+
+Curve2 Blade::tableSectionAt(double x) const {
+    const std::size_t lo = stationBelow(x);
+    const std::size_t hi = lo + 1;
     const double t = std::clamp((x - m_stationX[lo]) / (m_stationX[hi] - m_stationX[lo]), 0.0, 1.0);
     Curve2 section(m_stations[lo].size());
     for (std::size_t i = 0; i < section.size(); ++i) {
         section[i] = (1.0 - t) * m_stations[lo][i] + t * m_stations[hi][i];
     }
     return section;
+}
+
+Vec2 Blade::sectionVelocity(double x, std::size_t vertex) const {
+    const double clamped = std::clamp(x, m_spanStart, m_spanEnd);
+    return isTable() ? tableVelocity(clamped, vertex) : analyticVelocity(clamped, vertex);
+}
+
+// The x-derivative of analyticSectionAt's point offset(x) + chord(x) rot(stagger(x)) p.
+Vec2 Blade::analyticVelocity(double x, std::size_t vertex) const {
+    const double span = m_spanEnd - m_spanStart;
+    const double xi = (x - m_spanStart) / span;
+    const double bump = 4.0 * xi * (1.0 - xi);
+    const double bumpRate = 4.0 * (1.0 - 2.0 * xi) / span;
+    const double chord = m_spec.chordStart + (m_spec.chordEnd - m_spec.chordStart) * xi;
+    const double chordRate = (m_spec.chordEnd - m_spec.chordStart) / span;
+    const double stagger = m_spec.staggerStart + (m_spec.staggerEnd - m_spec.staggerStart) * xi +
+                           m_spec.staggerBow * bump;
+    const double staggerRate =
+        (m_spec.staggerEnd - m_spec.staggerStart) / span + m_spec.staggerBow * bumpRate;
+    const Vec2 offsetRate(m_spec.leanMm / span, m_spec.bowMm * bumpRate);
+    const double c = std::cos(stagger);
+    const double s = std::sin(stagger);
+    const Vec2& p = m_unitSection[vertex % m_unitSection.size()];
+    const Vec2 turned(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+    const Vec2 quarter(-turned.y(), turned.x()); // d(rot(stagger) p) / d stagger
+    return offsetRate + chordRate * turned + chord * staggerRate * quarter;
+}
+
+Vec2 Blade::tableVelocity(double x, std::size_t vertex) const {
+    const std::size_t lo = stationBelow(x);
+    const std::size_t i = vertex % m_stations[lo].size();
+    return (m_stations[lo + 1][i] - m_stations[lo][i]) / (m_stationX[lo + 1] - m_stationX[lo]);
 }
 
 double Blade::minConcaveRadius(double xFrom, double xTo, int samples) const {

@@ -17,6 +17,7 @@
 #include "core/blade/profiles.h"
 #include "core/blade/section_table.h"
 
+#include <cstddef>
 #include <variant>
 
 namespace bladeaxis::blade {
@@ -48,6 +49,14 @@ class Blade {
     // vertex where a helical revolution starts (on the suction side, see phaseIndex).
     Curve2 sectionAt(double x) const;
 
+    // d/dx of vertex `vertex` of sectionAt(x) (mm per mm of span): how that point of the
+    // section moves along the span. With (1, v) it spans the surface's span-wise tangent, which
+    // the true 3-D surface normal needs besides the section tangent. Outside the span (where
+    // sectionAt clamps) it is the velocity at the nearer end. Tables are interpolated linearly
+    // between stations: the velocity is that of the station interval holding x, exact for the
+    // interpolated surface, and it jumps at the stations, where that surface has a kink.
+    Vec2 sectionVelocity(double x, std::size_t vertex) const;
+
     // Smallest concave radius of curvature of the sections at `samples` evenly spaced x in
     // [xFrom, xTo] and of every table station inside it; +infinity when all are convex.
     double minConcaveRadius(double xFrom, double xTo, int samples = 21) const;
@@ -56,6 +65,9 @@ class Blade {
     Blade() = default;
     Curve2 analyticSectionAt(double x) const;
     Curve2 tableSectionAt(double x) const;
+    Vec2 analyticVelocity(double x, std::size_t vertex) const;
+    Vec2 tableVelocity(double x, std::size_t vertex) const;
+    std::size_t stationBelow(double x) const; // lower station of the interval holding x
 
     BladeSpec m_spec;
     double m_spanStart = 0.0;

@@ -20,10 +20,23 @@ Status outOfRange(const std::string& name, double value, const std::string& limi
 
 struct Sample {
     double u = 0.0;
-    double x = 0.0;
-    OffsetSample point;
+    double x = 0.0; // of the section holding the contact point
+    Vec3 contact = Vec3::Zero();
+    Vec3 normal = Vec3::Zero(); // N, the unit surface normal at the contact
     Vec3 centre = Vec3::Zero();
 };
+
+// The blade surface is swept by its sections: at a contact point with in-plane outward normal n
+// that moves with velocity v along the span, the surface tangents are (0, t) along the section
+// and (1, v) along the span. N = (-b, n) / sqrt(1 + b^2) with b = n . v is orthogonal to both
+// and points outwards. On a twisted or leaning blade b is not 0, and a ball centre offset along
+// n alone would dip into the surface. b is taken with the offset curve's blended normal: the
+// polygon's n jumps at concave vertices, and Q_x = P_x - R b / sqrt(1 + b^2) would jump with it
+// (by ~10 um per vertex on the demo); the blend differs from n by at most half a vertex turn.
+Vec3 surfaceNormal(const OffsetSample& point, const Vec2& v) {
+    const double b = point.blendedNormal.dot(v);
+    return Vec3(-b, point.normal.x(), point.normal.y()) / std::sqrt(1.0 + b * b);
+}
 
 class Sampler {
   public:
@@ -41,8 +54,14 @@ class Sampler {
             error.message += " (section x = " + formatTrimmed(sample.x, 6) + " mm)";
             return std::unexpected(std::move(error));
         }
-        sample.point = curve->at(u - std::floor(u));
-        sample.centre = Vec3(sample.x, sample.point.centre.x(), sample.point.centre.y());
+        const OffsetSample point = curve->at(u - std::floor(u));
+        const double lambda = point.edgeFraction;
+        const std::size_t next = (point.edge + 1) % curve->vertexCount();
+        const Vec2 velocity = (1.0 - lambda) * m_blade.sectionVelocity(sample.x, point.edge) +
+                              lambda * m_blade.sectionVelocity(sample.x, next);
+        sample.contact = Vec3(sample.x, point.contact.x(), point.contact.y());
+        sample.normal = surfaceNormal(point, velocity);
+        sample.centre = sample.contact + m_spec.toolRadius * sample.normal;
         return sample;
     }
 
@@ -95,6 +114,9 @@ Status sampleRevolution(const Sampler& sampler, const HelicalPathSpec& spec, int
                 return std::unexpected(mid.error());
             }
             if (depth < kMaxBisectionDepth && sampler.needsSplit(out.back(), *mid, target)) {
+                // Both halves are one level deeper: the right one must not restart at `depth`,
+                // or a jump in the curve would be bisected until u stops changing.
+                pending.back().second = depth + 1;
                 pending.emplace_back(*mid, depth + 1);
                 continue;
             }
@@ -122,8 +144,10 @@ Vec3 roundTo(const Vec3& v, double grid) {
 
 void appendRecord(const Sample& s, int revolution, const HelicalPathSpec& spec, Random& random,
                   GeneratedPath& out) {
-    const Vec2& n = s.point.normal;
-    double phi = std::atan2(n.y(), n.x()) + spec.leadAngle;
+    // The B head keeps its tilt (four axes), so only the azimuth about the rotary axis is free:
+    // the lead is taken from the azimuth of the true normal N (its (y, z) part is along n).
+    const Vec3& n = s.normal;
+    double phi = std::atan2(n.z(), n.y()) + spec.leadAngle;
     if (spec.leadNoise > 0.0) {
         phi += spec.leadNoise * random.normal();
     }
@@ -135,8 +159,8 @@ void appendRecord(const Sample& s, int revolution, const HelicalPathSpec& spec, 
     record.feed = spec.feed;
     record.motion = toolpath::MotionKind::Feed;
     out.path.records.push_back(record);
-    out.contact.emplace_back(s.x, s.point.contact.x(), s.point.contact.y());
-    out.normal.emplace_back(0.0, n.x(), n.y());
+    out.contact.push_back(s.contact);
+    out.normal.push_back(s.normal);
     out.centre.push_back(s.centre);
     out.sectionX.push_back(s.x);
     out.parameter.push_back(s.u);

@@ -2,17 +2,22 @@
 // The helical reciprocal four-axis toolpath around a synthetic blade with the "original CAM"
 // tool orientation (spec §10.4), used as the demo input and as the test-family generator.
 //
-// Path: u in [0, N] (N = revolutions), x(u) = xStart + pitch u, and the ball centre Q at
-// normalised arc length frac(u) of the offset curve (offset_curve.h) of the section at x(u).
-// Each revolution starts at the section's phase vertex, which lies on the suction (convex) side
-// (closed_curve.h: phaseIndex), and runs counter-clockwise in (y, z): the cutter goes round the
-// blade right-handed about +x while advancing along +x. The last revolution is closed by a
-// record at u = N. Samples are placed by adaptive bisection so that the middle of every chord
-// of Q lies within `chordalTolerance` of the centre curve and no chord exceeds `maxStep`: the
-// points are dense at the edges, where the centre curve turns fast.
+// Path: u in [0, N] (N = revolutions), x(u) = xStart + pitch u, and the contact point P at
+// normalised arc length frac(u) of the offset curve (offset_curve.h) of the section at x(u): the
+// contact runs along a helix on the blade surface, as a CAM's drive curve does. The ball centre
+// is Q = P + R N with N the true 3-D unit surface normal at P (from the section tangent and the
+// span-wise derivative of the surface, Blade::sectionVelocity), so the ball touches the blade at
+// P and does not dip into it; on a twisted blade N has an x component, and Q leaves the plane
+// x(u) by up to R |N_x|. Each revolution starts at the section's phase vertex, which lies on the
+// suction (convex) side (closed_curve.h: phaseIndex), and runs counter-clockwise in (y, z): the
+// cutter goes round the blade right-handed about +x while advancing along +x. The last
+// revolution is closed by a record at u = N. Samples are placed by adaptive bisection so that the
+// middle of every chord of Q lies within `chordalTolerance` of the centre curve and no chord
+// exceeds `maxStep`: the points are dense at the edges, where the centre curve turns fast.
 //
-// Orientation: phi = angle of the section normal n in the (y, z) plane + lead (towards the feed
-// direction, i.e. counter-clockwise) + optional seeded Gaussian noise;
+// Orientation (four axes: the B head keeps its tilt B0, only the azimuth about x is free):
+// phi = azimuth of N in the (y, z) plane (the direction of the section normal n) + lead
+// (towards the feed direction, i.e. counter-clockwise) + optional seeded Gaussian noise;
 //     V = (sin B0, cos B0 cos phi, cos B0 sin phi),   O = Q - R V  (optionally rounded).
 // This fixed-lead orientation turns backwards wherever n does, i.e. in concave runs.
 
@@ -45,10 +50,10 @@ struct HelicalPathSpec {
 // Everything a test needs to check the path, one entry per record of `path`.
 struct GeneratedPath {
     toolpath::Toolpath path;
-    std::vector<Vec3> contact; // P on the section, in W
-    std::vector<Vec3> normal;  // n, unit, in the section plane (x = 0)
-    std::vector<Vec3> centre;  // Q = P + R n (exact; O + R V equals it before rounding)
-    std::vector<double> sectionX;
+    std::vector<Vec3> contact;     // P on the blade surface (on the section at sectionX), in W
+    std::vector<Vec3> normal;      // N, the unit outward surface normal at P
+    std::vector<Vec3> centre;      // Q = P + R N (exact; O + R V equals it before rounding)
+    std::vector<double> sectionX;  // x of P
     std::vector<double> parameter; // u
     std::vector<int> revolution;   // floor(u); the closing record belongs to the last one
     double minConcaveRadius = 0.0; // of the swept sections, mm (+inf when convex)

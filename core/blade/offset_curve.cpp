@@ -91,13 +91,15 @@ Result<OffsetCurve> OffsetCurve::create(std::span<const Vec2> section, double ra
     const std::size_t n = section.size();
     OffsetCurve curve;
     curve.m_radius = radius;
+    curve.m_vertexCount = n;
     curve.m_pieces.reserve(2 * n);
     double s = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
         const double turn = frame.turn[k];
         if (turn > 0.0) { // convex vertex: arc about the vertex
             const double start = frame.normalAngle[(k + n - 1) % n];
-            curve.m_pieces.push_back(Piece{section[k], section[k], start, turn, s, radius * turn});
+            curve.m_pieces.push_back(Piece{section[k], section[k], start, turn, s, radius * turn, k,
+                                           0.0, 0.0, 0.0, 0.0});
             s += radius * turn;
         }
         const double trimStart = radius * trimFactor(turn);
@@ -105,7 +107,13 @@ Result<OffsetCurve> OffsetCurve::create(std::span<const Vec2> section, double ra
         const double length = std::max(frame.edgeLength[k] - trimStart - trimEnd, 0.0);
         const Vec2 from = section[k] + trimStart * frame.direction[k];
         const Vec2 to = from + length * frame.direction[k];
-        curve.m_pieces.push_back(Piece{from, to, frame.normalAngle[k], 0.0, s, length});
+        const double edge = frame.edgeLength[k];
+        // At a concave end the normal turns by `turn` (< 0); the blend meets the bisector there.
+        const double blendStart = frame.normalAngle[k] - 0.5 * std::min(turn, 0.0);
+        const double blendEnd = frame.normalAngle[k] + 0.5 * std::min(frame.turn[(k + 1) % n], 0.0);
+        curve.m_pieces.push_back(Piece{from, to, frame.normalAngle[k], 0.0, s, length, k,
+                                       trimStart / edge, (trimStart + length) / edge, blendStart,
+                                       blendEnd});
         s += length;
     }
     curve.m_length = s;
@@ -126,6 +134,12 @@ OffsetSample OffsetCurve::at(double fraction) const {
     sample.normal = Vec2(std::cos(angle), std::sin(angle));
     sample.contact = piece.contactStart + t * (piece.contactEnd - piece.contactStart);
     sample.centre = sample.contact + m_radius * sample.normal;
+    const double blend = piece.angleSweep != 0.0
+                             ? angle
+                             : piece.blendStart + t * (piece.blendEnd - piece.blendStart);
+    sample.blendedNormal = Vec2(std::cos(blend), std::sin(blend));
+    sample.edge = piece.edge;
+    sample.edgeFraction = piece.fractionStart + t * (piece.fractionEnd - piece.fractionStart);
     return sample;
 }
 

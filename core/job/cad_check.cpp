@@ -3,6 +3,7 @@
 #include "core/base/number_io.h"
 #include "core/cad/surface_samples.h"
 #include "core/cad/tessellation.h"
+#include "core/job/cad_fit.h"
 
 #include <algorithm>
 
@@ -49,6 +50,22 @@ Result<CadCheckResult> runCadCheck(const CadCheckSpec& spec, const cad::CadShape
         return std::unexpected(original.error());
     }
     result.original = std::move(*original);
+    std::vector<Vec3> centres;
+    centres.reserve(pass.original.size());
+    for (const toolpath::ClRecord& record : pass.original) {
+        centres.push_back(record.tip + toolRadius * record.axis.normalized());
+    }
+    const std::string cadName = spec.file.empty() ? result.source : spec.file.string();
+    if (Status fits = checkCadFitsProgram({.blade = &*mesh,
+                                           .clearance = &result.original,
+                                           .centres = centres,
+                                           .toolRadius = toolRadius,
+                                           .searchLimit = cad::ClearanceOptions{}.searchLimit,
+                                           .cadName = cadName,
+                                           .programName = pass.sourceFile});
+        !fits) {
+        return std::unexpected(fits.error());
+    }
     if (!pass.rescheduled.empty()) {
         auto rescheduled = check(*samples, pass.rescheduled, tool, pass);
         if (!rescheduled) {
@@ -59,25 +76,45 @@ Result<CadCheckResult> runCadCheck(const CadCheckSpec& spec, const cad::CadShape
     return result;
 }
 
+namespace {
+
+constexpr double kResolution = 0.01; // mm, the tessellation's linear deflection
+
+std::string inputVerdict(const CadCheckResult& result, const cad::ClearanceIssue& first) {
+    const cad::ClearanceIssue* before = inputIssueLike(result, first);
+    if (before == nullptr) {
+        return "the input program does not: the new orientation causes it";
+    }
+    const std::string verb = first.kind == cad::ClearanceKind::Gouge ? "gouges" : "collides";
+    return "the input program already " + verb + " there, " + formatFixed(before->depth, 3) +
+           " mm deep" +
+           (first.kind == cad::ClearanceKind::Gouge
+                ? " (the ball centres are the input's and are kept: the CAM's gouge)"
+                : "");
+}
+
+} // namespace
+
+const cad::ClearanceIssue* inputIssueLike(const CadCheckResult& result,
+                                          const cad::ClearanceIssue& issue) {
+    const auto& issues = result.original.issues; // in record order
+    auto it = std::ranges::lower_bound(issues, issue.record, {}, &cad::ClearanceIssue::record);
+    for (; it != issues.end() && it->record == issue.record; ++it) {
+        if (it->kind == issue.kind) {
+            return &*it;
+        }
+    }
+    return nullptr;
+}
+
 std::vector<cad::ClearanceIssue> introducedIssues(const CadCheckResult& result) {
     std::vector<cad::ClearanceIssue> introduced;
     if (!result.rescheduled) {
         return introduced;
     }
-    // Where the input's tool is already in the surface (the ball, when the CAM's centres dip
-    // into a twisted blade), a new orientation at the channel limit may take the shank as deep
-    // as the ball, not deeper: only what goes beyond the input's own depth at that CL point, by
-    // more than the mesh deflection, is ours.
-    constexpr double kResolution = 0.01; // mm, the tessellation's linear deflection
-    const auto& before = result.original.records;
     for (const cad::ClearanceIssue& issue : result.rescheduled->issues) {
-        const cad::RecordClearance& was = before[issue.record];
-        const cad::RecordClearance& now = result.rescheduled->records[issue.record];
-        const double allowed = std::min({0.0, was.ball, was.shank, was.holder}) - kResolution;
-        const double clearance = issue.kind == cad::ClearanceKind::Gouge            ? now.ball
-                                 : issue.kind == cad::ClearanceKind::ShankCollision ? now.shank
-                                                                                    : now.holder;
-        if (clearance < allowed) {
+        const cad::ClearanceIssue* before = inputIssueLike(result, issue);
+        if (before == nullptr || issue.depth > before->depth + kResolution) {
             introduced.push_back(issue);
         }
     }
@@ -85,16 +122,18 @@ std::vector<cad::ClearanceIssue> introducedIssues(const CadCheckResult& result) 
 }
 
 Status refuseIfColliding(const CadCheckResult& result, const std::string& sourceFile, bool force) {
-    const std::vector<cad::ClearanceIssue> issues = introducedIssues(result);
-    if (force || issues.empty()) {
+    if (force || !result.rescheduled || result.rescheduled->issues.empty()) {
         return {};
     }
+    const auto& issues = result.rescheduled->issues;
+    const std::size_t inherited = issues.size() - introducedIssues(result).size();
     return makeError(ErrorCode::CheckFailed,
-                     "the re-scheduled tool gouges or collides with the blade where the original "
-                     "does not (" +
-                         std::to_string(issues.size()) +
-                         " CL points; first: " + cad::describe(issues.front(), sourceFile) +
-                         "); nothing was written (use --force to write it anyway)",
+                     "the re-scheduled program gouges or collides with " + result.source + " at " +
+                         std::to_string(issues.size()) + " CL points (" +
+                         std::to_string(inherited) + " of them as the input program already " +
+                         "does); first: " + cad::describe(issues.front(), sourceFile) + "; " +
+                         inputVerdict(result, issues.front()) +
+                         "; nothing was written (use --force to write it anyway)",
                      {sourceFile});
 }
 

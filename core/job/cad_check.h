@@ -2,7 +2,8 @@
 // The job's check of the tool against the real blade (issue 6): the blade CAD (STEP/IGES, or the
 // demo blade's own B-spline surface), tessellated and sampled once, then the original and the
 // re-scheduled cutting pass checked for gouges and shank/holder collisions. An output program
-// that gouges or collides is refused unless forced, with the first offending source line.
+// that gouges or collides anywhere is refused unless forced, with the first offending source
+// line and whether the input program already did the same there.
 
 #include "core/base/error.h"
 #include "core/cad/cad_files.h"
@@ -44,18 +45,25 @@ struct CuttingPassView {
 };
 
 // Tessellates and samples the blade once, then checks both passes. Errors: Geometry for meshing
-// failures, InvalidArgument for a bad tool.
+// failures and for CAD that does not fit the program (cad_fit.h), InvalidArgument for a bad
+// tool.
 Result<CadCheckResult> runCadCheck(const CadCheckSpec& spec, const cad::CadShape& blade,
                                    std::string source, double toolRadius,
                                    const CuttingPassView& pass);
 
-// Issues of the re-scheduled pass deeper than the original tool already is at the same CL point
-// (by more than the mesh deflection). The ball centres are kept, so a gouge of the input's
-// centres is the CAM's, not ours: it is reported as a warning, not counted here.
+// Issues of the re-scheduled pass that the input program does not have: no issue of the same
+// kind at the same CL point, or one shallower by more than the mesh deflection. For the report;
+// the refusal below counts every issue of the output.
 std::vector<cad::ClearanceIssue> introducedIssues(const CadCheckResult& result);
 
-// The refusal of an output whose tool gouges or collides where the original did not:
-// CheckFailed naming the first such CL point and its source line.
+// The input's issue of the same kind at the same CL point, if any. The ball centres are kept, so
+// an input ball gouge is in the output too: the CAM's, not the schedule's.
+const cad::ClearanceIssue* inputIssueLike(const CadCheckResult& result,
+                                          const cad::ClearanceIssue& issue);
+
+// The refusal of an output program that gouges or collides anywhere (ball gouge, shank or holder
+// collision beyond the check's tolerance), unless forced: CheckFailed naming the first such CL
+// point's source line, its kind and depth, and whether the input program already had it there.
 Status refuseIfColliding(const CadCheckResult& result, const std::string& sourceFile, bool force);
 
 } // namespace bladeaxis::job

@@ -157,7 +157,7 @@ Result<cad::CadShape> bladeShape(const JobSpec& spec) {
     return cad::makeBladeSurface(*blade);
 }
 
-Status cadCheckInto(JobResult& result, const JobSpec& spec) {
+Status cadCheckInto(JobResult& result, const JobSpec& spec, ProgressSink& progress) {
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
                          "the clearance check needs the ball radius: give --tool-radius");
@@ -206,6 +206,8 @@ Status cadCheckInto(JobResult& result, const JobSpec& spec) {
             std::to_string(inputIssues.size()) +
             " CL points (first: " + cad::describe(inputIssues.front(), view.sourceFile) +
             "); re-scheduling keeps the ball centres, so their gouges stay");
+        // Now, not only in the summary: a refused export prints no summary.
+        progress.warning(result.warnings.back());
     }
     return {};
 }
@@ -333,7 +335,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     }
     if (!spec.cad.file.empty() || spec.demo) {
         progress.progress(0.65, "checking the tool against the blade CAD");
-        if (auto status = cadCheckInto(result, spec); !status) {
+        if (auto status = cadCheckInto(result, spec, progress); !status) {
             return std::unexpected(status.error());
         }
     }

@@ -10,7 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <limits>
+#include <string_view>
 
 namespace bladeaxis::job {
 
@@ -115,7 +117,27 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
     return json;
 }
 
-nlohmann::json clearanceSideJson(const cad::ClearanceReport& report, const std::string& file) {
+// Per layer (the schedule's layers, or revolutions without a schedule): the smallest clearance
+// of each tool part and the number of issues, with the layer's source lines.
+nlohmann::json clearanceLayersJson(const cad::ClearanceReport& report, std::span<const int> lines) {
+    nlohmann::json layers = nlohmann::json::array();
+    for (std::size_t k = 0; k < report.layers.size(); ++k) {
+        const cad::LayerClearance& layer = report.layers[k];
+        layers.push_back({{"layer", k},
+                          {"first_record", layer.first},
+                          {"last_record", layer.last},
+                          {"first_line", layer.first < lines.size() ? lines[layer.first] : 0},
+                          {"last_line", layer.last < lines.size() ? lines[layer.last] : 0},
+                          {"min_ball_mm", layer.minimum.ball},
+                          {"min_shank_mm", layer.minimum.shank},
+                          {"min_holder_mm", layer.minimum.holder},
+                          {"issues", layer.issues}});
+    }
+    return layers;
+}
+
+nlohmann::json clearanceSideJson(const cad::ClearanceReport& report, const std::string& file,
+                                 std::span<const int> lines) {
     cad::RecordClearance minimum{std::numeric_limits<double>::infinity(),
                                  std::numeric_limits<double>::infinity(),
                                  std::numeric_limits<double>::infinity()};
@@ -133,16 +155,18 @@ nlohmann::json clearanceSideJson(const cad::ClearanceReport& report, const std::
         first.push_back(cad::describe(report.issues[i], file));
     }
     json["first_issues"] = first;
+    json["layers"] = clearanceLayersJson(report, lines);
     return json;
 }
 
-nlohmann::json clearanceJson(const CadCheckResult& check, const std::string& file) {
+nlohmann::json clearanceJson(const CadCheckResult& check, const std::string& file,
+                             std::span<const int> lines) {
     nlohmann::json json{{"cad", check.source},
                         {"faces", check.faces},
                         {"triangles", check.triangles},
-                        {"original", clearanceSideJson(check.original, file)}};
+                        {"original", clearanceSideJson(check.original, file, lines)}};
     if (check.rescheduled) {
-        json["rescheduled"] = clearanceSideJson(*check.rescheduled, file);
+        json["rescheduled"] = clearanceSideJson(*check.rescheduled, file, lines);
         json["introduced_issues"] = introducedIssues(check).size();
     }
     json["sampling_error_mm"] = check.original.samplingError;
@@ -180,7 +204,8 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
         json["rescheduled"] = rescheduledJson(result, spec);
     }
     if (result.cadCheck) {
-        json["clearance"] = clearanceJson(*result.cadCheck, result.program.path().sourceFile);
+        json["clearance"] =
+            clearanceJson(*result.cadCheck, result.program.path().sourceFile, passLines(result));
     }
     json["warnings"] = result.warnings;
     json["timing"] = {{"job_s", result.seconds}};
@@ -278,6 +303,33 @@ Status writeComparison(const JobSpec& spec, const JobResult& result,
     return {};
 }
 
+// layers.csv with the written program's ball and shank clearance of each row's CL point (the
+// first column is the record of the cutting pass).
+std::string withClearanceColumns(const std::string& csv, const cad::ClearanceReport& clearance) {
+    std::string out;
+    out.reserve(csv.size() + csv.size() / 4);
+    std::size_t begin = 0;
+    for (std::size_t end = csv.find('\n'); end != std::string::npos;
+         begin = end + 1, end = csv.find('\n', begin)) {
+        const std::string_view row(csv.data() + begin, end - begin);
+        out.append(row);
+        if (begin == 0) {
+            out += ",ball_clearance_mm,shank_clearance_mm\n";
+            continue;
+        }
+        const auto record = parseNumber(row.substr(0, row.find(',')));
+        const auto index = static_cast<std::size_t>(record.value_or(-1.0));
+        if (record && index < clearance.records.size()) {
+            out += ',' + formatShortest(clearance.records[index].ball) + ',' +
+                   formatShortest(clearance.records[index].shank);
+        } else {
+            out += ",,";
+        }
+        out += '\n';
+    }
+    return out;
+}
+
 Status writeReportFolder(const JobSpec& spec, const JobResult& result,
                          const std::vector<fs::path>& inputs) {
     if (spec.demo) {
@@ -298,9 +350,11 @@ Status writeReportFolder(const JobSpec& spec, const JobResult& result,
         return status;
     }
     if (result.rescheduled) {
-        if (auto status = writeFileAtomically(
-                spec.outputDir / "layers.csv",
-                report::layersCsv(result.rescheduled->schedule, passLines(result)), inputs);
+        std::string csv = report::layersCsv(result.rescheduled->schedule, passLines(result));
+        if (result.cadCheck && result.cadCheck->rescheduled) {
+            csv = withClearanceColumns(csv, *result.cadCheck->rescheduled);
+        }
+        if (auto status = writeFileAtomically(spec.outputDir / "layers.csv", csv, inputs);
             !status) {
             return status;
         }
@@ -381,6 +435,28 @@ std::string rescheduledSummary(const JobResult& result) {
     return text;
 }
 
+// "clearance    ball >= -0.007, shank >= 0.006, holder >= 5.000 mm against demo_blade.step
+// (input 0 issues, output 0)": the written program's minima, or the input's without one.
+std::string clearanceSummary(const CadCheckResult& check) {
+    const cad::ClearanceReport& shown = check.rescheduled ? *check.rescheduled : check.original;
+    double ball = std::numeric_limits<double>::infinity();
+    double shank = ball;
+    double holder = ball;
+    for (const cad::RecordClearance& record : shown.records) {
+        ball = std::min(ball, record.ball);
+        shank = std::min(shank, record.shank);
+        holder = std::min(holder, record.holder);
+    }
+    std::string text = "clearance    ball >= " + formatFixed(ball, 3) +
+                       ", shank >= " + formatFixed(shank, 3) +
+                       ", holder >= " + formatFixed(holder, 3) + " mm against " + check.source +
+                       " (input " + std::to_string(check.original.issues.size()) + " issues";
+    if (check.rescheduled) {
+        text += ", output " + std::to_string(check.rescheduled->issues.size());
+    }
+    return text + ")\n";
+}
+
 std::string comparisonSummary(const compare::Comparison& comparison) {
     using kinematics::AxisId;
     std::string text = "comparison   method            A rev.  A peak acc. (deg/s^2)  T1 (s)\n";
@@ -435,6 +511,9 @@ std::string formatSummary(const JobResult& result) {
     }
     if (result.comparison) {
         text += comparisonSummary(*result.comparison);
+    }
+    if (result.cadCheck) {
+        text += clearanceSummary(*result.cadCheck);
     }
     for (const std::string& warning : result.warnings) {
         text += "warning      " + warning + "\n";

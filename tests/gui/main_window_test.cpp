@@ -14,16 +14,21 @@
 #include "ui/section_view.h"
 #include "ui/toolpath_view.h"
 
+#include <QAbstractButton>
+#include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QFileInfo>
 #include <QImage>
+#include <QMessageBox>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
+#include <QTimer>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -290,6 +295,52 @@ class MainWindowTest final : public QObject {
         const QImage withTool = view->renderFrame();
         QVERIFY(withTool.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/view3d_tool.png")));
         QVERIFY(withTool != rotated);
+    }
+
+    // The demo blade moved 0.3 mm into the tool: the export is refused naming where, and the
+    // confirmation dialog's "Export anyway" writes it, as --force does in batch. Last: it
+    // leaves another job in the window.
+    void gougingExportIsRefusedWithWhereAndCanBeForced() {
+        const QString folder = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/gui_report");
+        QVERIFY(QFileInfo::exists(folder + "/demo_blade.step")); // from clDataAndReportExport
+        const QString jobFile = folder + "/gouging_job.json";
+        std::ofstream(jobFile.toStdString())
+            << R"({"schema": "bladeaxis-job/1", "program": "demo_blade.nc", "tool_radius_mm": 8,)"
+            << R"( "cad": "demo_blade.step", "cad_translate_mm": [0, 0, 0.3]})";
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        const bladeaxis::Status opened = m_window->openJob(jobFile);
+        QVERIFY2(opened.has_value(), opened ? "" : opened.error().toString().c_str());
+        QVERIFY(finished.wait(kJobTimeoutMs));
+        QCOMPARE(finished.front().front().toBool(), true);
+        const QString output = folder + "/gouging.nc";
+        QFile::remove(output);
+        const bladeaxis::Status refused = m_window->exportProgram(output);
+        QVERIFY(!refused.has_value());
+        const std::string message = refused.error().toString();
+        QVERIFY2(message.find("demo_blade.nc:") != std::string::npos, message.c_str());
+        QVERIFY2(message.find("the input program already gouges there") != std::string::npos,
+                 message.c_str());
+        QVERIFY(!QFileInfo::exists(output));
+
+        QString shown;
+        QTimer clicker;
+        connect(&clicker, &QTimer::timeout, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (box == nullptr) {
+                return;
+            }
+            shown = box->text();
+            for (QAbstractButton* button : box->buttons()) {
+                if (button->text() == QStringLiteral("Export anyway")) {
+                    button->click();
+                }
+            }
+        });
+        clicker.start(50);
+        m_window->exportProgramTo(output);
+        clicker.stop();
+        QVERIFY2(shown.contains(QStringLiteral(": gouge ")), qPrintable(shown));
+        QVERIFY(QFileInfo::exists(output));
     }
 
   private:

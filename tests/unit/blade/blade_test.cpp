@@ -112,5 +112,45 @@ TEST(Blade, TableSectionsInterpolateBetweenStations) {
     EXPECT_NEAR(signedArea(blade->sectionAt(5.0)), 225.0, 1e-9);
 }
 
+// Central differences of the sections themselves are the independent reference: every vertex
+// of sectionAt(x) is the same material point of the blade at every x.
+TEST(Blade, SectionVelocityIsTheSpanWiseDerivativeOfTheSections) {
+    BladeSpec spec = symmetricSpec();
+    spec.profile = NacaProfile{0.08, 0.4, 0.12};
+    spec.staggerBow = degToRad(3.0);
+    spec.leanMm = 1.5;
+    spec.bowMm = -1.0;
+    const Result<Blade> blade = Blade::create(spec);
+    ASSERT_TRUE(blade.has_value());
+    const double h = 1e-4;
+    for (double x : {1.0, 17.0, 30.0, 59.0}) {
+        const Curve2 before = blade->sectionAt(x - h);
+        const Curve2 after = blade->sectionAt(x + h);
+        for (std::size_t i = 0; i < before.size(); i += 37) {
+            const Vec2 expected = (after[i] - before[i]) / (2.0 * h);
+            EXPECT_NEAR((blade->sectionVelocity(x, i) - expected).norm(), 0.0, 1e-6)
+                << "x = " << x << ", vertex " << i;
+        }
+    }
+}
+
+TEST(Blade, TableSectionVelocityIsConstantBetweenStations) {
+    SectionTable table;
+    table.stations.push_back({0.0, {Vec2(0, 0), Vec2(10, 0), Vec2(10, 10), Vec2(0, 10)}, 0});
+    table.stations.push_back({10.0, {Vec2(0, 0), Vec2(20, 0), Vec2(20, 20), Vec2(0, 20)}, 0});
+    BladeSpec spec;
+    spec.profile = table;
+    spec.pointsPerSide = 50;
+    const Result<Blade> blade = Blade::create(spec);
+    ASSERT_TRUE(blade.has_value());
+    const Curve2 first = blade->sectionAt(0.0);
+    const Curve2 last = blade->sectionAt(10.0);
+    for (std::size_t i = 0; i < first.size(); i += 7) {
+        const Vec2 expected = (last[i] - first[i]) / 10.0;
+        EXPECT_NEAR((blade->sectionVelocity(3.0, i) - expected).norm(), 0.0, 1e-12) << i;
+        EXPECT_NEAR((blade->sectionVelocity(12.0, i) - expected).norm(), 0.0, 1e-12) << i;
+    }
+}
+
 } // namespace
 } // namespace bladeaxis::blade

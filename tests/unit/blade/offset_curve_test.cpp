@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bladeaxis::blade {
@@ -77,6 +78,46 @@ TEST(OffsetCurve, RadiusAboveTheConcaveRadiusIsRejectedNamingBoth) {
     ASSERT_FALSE(offset.has_value());
     EXPECT_NE(offset.error().message.find("R = 25"), std::string::npos);
     EXPECT_NE(offset.error().message.find("concave radius of curvature 19.99"), std::string::npos);
+}
+
+TEST(OffsetCurve, SamplesNameTheEdgeAndFractionHoldingTheContact) {
+    const Curve2 poly = crescent();
+    const Result<OffsetCurve> offset = OffsetCurve::create(poly, 8.0);
+    ASSERT_TRUE(offset.has_value());
+    EXPECT_EQ(offset->vertexCount(), poly.size());
+    for (int k = 0; k < 997; ++k) {
+        const OffsetSample s = offset->at(k / 997.0);
+        ASSERT_LT(s.edge, poly.size());
+        ASSERT_GE(s.edgeFraction, 0.0);
+        ASSERT_LE(s.edgeFraction, 1.0);
+        const Vec2 onEdge = (1.0 - s.edgeFraction) * poly[s.edge] +
+                            s.edgeFraction * poly[(s.edge + 1) % poly.size()];
+        EXPECT_NEAR((onEdge - s.contact).norm(), 0.0, 1e-9) << k;
+    }
+}
+
+// On a polygon with concave vertices the sample normal jumps where the centre curve has a
+// corner; the blended normal does not, and stays within half a vertex turn of the normal.
+TEST(OffsetCurve, BlendedNormalIsContinuousAndNearTheNormal) {
+    const Curve2 poly = crescent(); // 0.3 deg per vertex on both arcs
+    const Result<OffsetCurve> offset = OffsetCurve::create(poly, 8.0);
+    ASSERT_TRUE(offset.has_value());
+    const int samples = 200000;
+    double largestNormalStep = 0.0;
+    Vec2 previous = offset->at(0.0).blendedNormal;
+    for (int k = 1; k <= samples; ++k) {
+        const OffsetSample s = offset->at(static_cast<double>(k) / samples);
+        EXPECT_NEAR(s.blendedNormal.norm(), 1.0, 1e-12);
+        const double halfTurn = units::degToRad(0.15) + 1e-9;
+        EXPECT_LE(std::acos(std::clamp(s.blendedNormal.dot(s.normal), -1.0, 1.0)), halfTurn) << k;
+        // Along the curve (~190 mm) consecutive samples are ~1 um apart.
+        ASSERT_LT((s.blendedNormal - previous).norm(), 1e-3) << k;
+        largestNormalStep =
+            std::max(largestNormalStep,
+                     (s.normal - offset->at(static_cast<double>(k - 1) / samples).normal).norm());
+        previous = s.blendedNormal;
+    }
+    EXPECT_GT(largestNormalStep, 4e-3) << "the polygon normal itself jumps";
 }
 
 } // namespace

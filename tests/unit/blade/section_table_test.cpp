@@ -1,6 +1,7 @@
 #include "core/blade/blade.h"
 #include "core/blade/helical_path.h"
 #include "core/blade/section_table.h"
+#include "tests/unit/blade/blade_distance.h"
 
 #include <gtest/gtest.h>
 
@@ -94,8 +95,14 @@ TEST(SectionTable, TableBladeGivesAHelicalPathOnItsOffsetSurface) {
     ASSERT_TRUE(generated.has_value()) << generated.error().toString();
     ASSERT_GT(generated->centre.size(), 100u);
     for (std::size_t i = 0; i < generated->centre.size(); i += 5) {
-        const Vec3& q = generated->centre[i];
-        EXPECT_NEAR(distanceToCurve(q.tail<2>(), blade->sectionAt(q.x())), 4.0, 1e-6);
+        const Vec3& p = generated->contact[i];
+        EXPECT_NEAR(distanceToCurve(p.tail<2>(), blade->sectionAt(p.x())), 0.0, 1e-9);
+        EXPECT_NEAR((generated->centre[i] - p).norm(), 4.0, 1e-9);
+    }
+    // The surface is linear between stations; the ball, offset along its exact normal, touches
+    // it (the kink at the station x = 10 mm is convex enough not to reach into the ball).
+    for (std::size_t i = 0; i < generated->centre.size(); i += 23) {
+        EXPECT_NEAR(testing::distanceToBlade(*blade, generated->centre[i], 5.0), 4.0, 2e-3) << i;
     }
     EXPECT_EQ(generated->revolution.back(), 3);
 }

@@ -156,9 +156,9 @@ TEST(SurfaceSamples, CoverEveryPointOfTheMeshWithinTheCoverageRadius) {
 
 // The ball clearance is an independent measurement: the distance from Q to the analytic blade
 // (a fine scan over x of the generator's sections) agrees with the sampled CAD surface. The
-// demo generator places Q along the 2-D section normal, which on this twisted blade is not the
-// 3-D surface normal: the ball dips up to about half a millimetre into the surface.
-TEST(Clearance, BallClearanceAgreesWithTheAnalyticBlade) {
+// generator offsets Q along the true 3-D surface normal, so on this twisted blade the ball
+// touches the surface without dipping into it: no gouge anywhere.
+TEST(Clearance, BallClearanceAgreesWithTheAnalyticBladeAndNeverGouges) {
     const ClearanceReport& report = demoReport();
     ASSERT_EQ(report.records.size(), demoPath().path.records.size());
     for (std::size_t k = 50; k < report.records.size(); k += 211) {
@@ -168,9 +168,15 @@ TEST(Clearance, BallClearanceAgreesWithTheAnalyticBlade) {
             const double inPlane = blade::distanceToCurve({q.y(), q.z()}, demoBlade().sectionAt(x));
             nearest = std::min(nearest, std::hypot(x - q.x(), inPlane));
         }
-        // Sampling overestimates a penetrating distance by about e^2 / (2 (R - depth)) for the
-        // sample offset e <= coverage radius (0.5 mm here), plus the 0.01 mm mesh deflection.
+        EXPECT_NEAR(nearest, demoTool().ballRadius, 2e-3) << k;
+        // Sampling overestimates a distance by up to about e^2 / (2 R) for the sample offset e
+        // <= coverage radius (0.5 mm here), plus the 0.01 mm mesh deflection.
         EXPECT_NEAR(report.records[k].ball, nearest - demoTool().ballRadius, 0.03) << k;
+    }
+    const double tolerance = ClearanceOptions{}.gougeTolerance;
+    EXPECT_EQ(countIssues(report, ClearanceKind::Gouge), 0u);
+    for (std::size_t k = 0; k < report.records.size(); ++k) {
+        ASSERT_GE(report.records[k].ball, -tolerance) << k;
     }
 }
 
@@ -284,23 +290,24 @@ TEST(Clearance, RescheduledPrismaticBladeIsFreeOfGougesAndCollisions) {
     }
 }
 
-// On the twisted demo blade the generator's ball centres already dip into the 3-D surface (see
-// BallClearanceAgreesWithTheAnalyticBlade). The re-scheduled axis reaches the channel limit,
-// where the shank grazes the blade in the 2-D model; in 3-D it may then dip as deep as the ball
-// at that point, but never deeper, and the holder stays clear.
-TEST(Clearance, RescheduledDemoShankGoesNoDeeperThanTheBall) {
+// The generator's ball centres touch the twisted demo blade without gouging it (see
+// BallClearanceAgreesWithTheAnalyticBladeAndNeverGouges), and the re-scheduled axis turns inside
+// the engine's channel: in 3-D the output then neither gouges nor collides, so the demo's own
+// export is not refused.
+TEST(Clearance, RescheduledDemoIsFreeOfGougesAndCollisions) {
     const toolpath::Toolpath rescheduled = rescheduledPath(demoPath().path, demoTool().ballRadius);
+    EXPECT_GT(largestTurn(demoPath().path, rescheduled), 0.2) << "the schedule turned the axis";
     const Result<ClearanceReport> report = checkClearance(demoSamples(), rescheduled, demoTool());
     ASSERT_TRUE(report.has_value()) << report.error().toString();
-    EXPECT_EQ(countIssues(*report, ClearanceKind::HolderCollision), 0u);
-    std::size_t grazing = 0;
+    double minShank = 1e300;
     for (std::size_t i = 0; i < report->records.size(); ++i) {
-        const RecordClearance& c = report->records[i];
-        ASSERT_NEAR(c.ball, demoReport().records[i].ball, 1e-6) << i; // centres kept
-        ASSERT_GE(c.shank, std::min(c.ball, 0.0) - 0.02) << i;
-        grazing += c.shank < 0.0;
+        ASSERT_NEAR(report->records[i].ball, demoReport().records[i].ball, 1e-6) << i; // kept
+        minShank = std::min(minShank, report->records[i].shank);
     }
-    RecordProperty("shank_below_zero_records", static_cast<int>(grazing));
+    EXPECT_TRUE(report->issues.empty())
+        << report->issues.size()
+        << " issues, first: " << describe(report->issues.front(), rescheduled.sourceFile);
+    RecordProperty("min_shank_clearance_um", static_cast<int>(std::lround(minShank * 1000.0)));
 }
 
 TEST(Clearance, SearchLimitOnlyCapsDistancesBeyondIt) {

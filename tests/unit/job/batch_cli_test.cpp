@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <sstream>
 
 namespace bladeaxis::app {
@@ -71,6 +72,45 @@ TEST(ExitCodes, EveryErrorCodeMapsToADocumentedExitCode) {
     EXPECT_EQ(exitCodeFor({ErrorCode::WriteFailed, "", {}, {}}), kExitWrite);
     EXPECT_EQ(exitCodeFor({ErrorCode::Cancelled, "", {}, {}}), kExitCancelled);
     EXPECT_EQ(exitCodeFor({ErrorCode::Internal, "", {}, {}}), kExitInternal);
+}
+
+// The demo blade as CAD, moved 0.3 mm along +z into the tool: the input program gouges it, and
+// so does the output, which keeps the ball centres. The output is refused (exit 5, nothing
+// written) naming the CL point and saying the input already gouges there; --force writes it.
+TEST(BatchCli, GougingOutputIsRefusedNamingTheLineUnlessForced) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "bladeaxis_batch_gouge";
+    fs::remove_all(dir);
+    ASSERT_EQ(run({"--batch", "--demo", "--out", dir.string()}).code, kExitOk);
+    const fs::path output = dir / "out.nc";
+    const std::vector<std::string> arguments{"--batch",
+                                             (dir / "demo_blade.nc").string(),
+                                             "--tool-radius",
+                                             "8",
+                                             "--cad",
+                                             (dir / "demo_blade.step").string(),
+                                             "--cad-translate",
+                                             "0",
+                                             "0",
+                                             "0.3",
+                                             "-o",
+                                             output.string()};
+    const CliRun refused = run(arguments);
+    EXPECT_EQ(refused.code, kExitGeometry) << refused.err;
+    EXPECT_FALSE(fs::exists(output));
+    EXPECT_NE(refused.err.find("demo_blade.nc:"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find(": gouge 0."), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("the input program already gouges there"), std::string::npos)
+        << refused.err;
+    EXPECT_NE(refused.err.find("warning: the input program's tool already gouges"),
+              std::string::npos)
+        << refused.err;
+    std::vector<std::string> forced = arguments;
+    forced.push_back("--force");
+    const CliRun written = run(forced);
+    EXPECT_EQ(written.code, kExitOk) << written.err;
+    EXPECT_TRUE(fs::exists(output));
+    fs::remove_all(dir);
 }
 
 } // namespace

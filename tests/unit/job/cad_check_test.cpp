@@ -1,12 +1,15 @@
 // The job's clearance check against the blade CAD (issue 6): what it refuses and what it reports.
 
 #include "core/base/file_io.h"
+#include "core/base/number_io.h"
 #include "core/cad/cad_files.h"
 #include "core/job/cad_check.h"
 #include "core/job/job.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace bladeaxis::job {
@@ -36,21 +39,48 @@ TEST(CadCheck, NewShankCollisionRefusesTheOutputUnlessForced) {
     auto refused = refuseIfColliding(result, "blade.nc", false);
     ASSERT_FALSE(refused.has_value());
     EXPECT_EQ(refused.error().code, ErrorCode::CheckFailed);
-    EXPECT_NE(refused.error().message.find("blade.nc:57"), std::string::npos)
-        << refused.error().message;
+    const std::string& message = refused.error().message;
+    EXPECT_NE(message.find("blade.nc:57: shank collision 0.300 mm deep"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("the input program does not"), std::string::npos) << message;
     EXPECT_TRUE(refuseIfColliding(result, "blade.nc", true).has_value());
 }
 
-TEST(CadCheck, GougesOfTheInputsOwnCentresAreNotBlamedOnTheSchedule) {
+// The ball centres are kept, so the input's gouge is in the output too: the output still
+// gouges and is refused, but the message says it is the input's (the CAM's) gouge.
+TEST(CadCheck, GougeKeptFromTheInputIsRefusedAndNamedAsTheInputs) {
+    cad::ClearanceReport before = cleanReport(10);
+    before.records[2].ball = -0.2;
+    before.issues.push_back({2, 12, cad::ClearanceKind::Gouge, 0.2});
+    const CadCheckResult result = checkWith(before, before);
+    EXPECT_TRUE(introducedIssues(result).empty());
+    auto refused = refuseIfColliding(result, "blade.nc", false);
+    ASSERT_FALSE(refused.has_value());
+    const std::string& message = refused.error().message;
+    EXPECT_NE(message.find("blade.nc:12: gouge 0.200 mm deep"), std::string::npos) << message;
+    EXPECT_NE(message.find("the input program already gouges there, 0.200 mm deep"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("1 of them as the input program already does"), std::string::npos)
+        << message;
+    EXPECT_TRUE(refuseIfColliding(result, "blade.nc", true).has_value());
+}
+
+// A shank that dips as deep as the input's ball already did is no longer excused.
+TEST(CadCheck, ShankCollisionWhereTheInputGougesIsStillRefused) {
     cad::ClearanceReport before = cleanReport(10);
     before.records[2].ball = -0.2;
     before.issues.push_back({2, 12, cad::ClearanceKind::Gouge, 0.2});
     cad::ClearanceReport after = before;
-    // At the channel limit the shank may go as deep as the ball already is, not deeper.
-    after.records[2].shank = -0.205;
-    after.issues.push_back({2, 12, cad::ClearanceKind::ShankCollision, 0.205});
+    after.records[2].shank = -0.15;
+    after.issues.push_back({2, 12, cad::ClearanceKind::ShankCollision, 0.15});
     const CadCheckResult result = checkWith(before, after);
-    EXPECT_TRUE(introducedIssues(result).empty());
+    EXPECT_EQ(introducedIssues(result).size(), 1u);
+    EXPECT_FALSE(refuseIfColliding(result, "blade.nc", false).has_value());
+}
+
+TEST(CadCheck, CleanOutputIsWritten) {
+    const CadCheckResult result = checkWith(cleanReport(10), cleanReport(10));
     EXPECT_TRUE(refuseIfColliding(result, "blade.nc", false).has_value());
 }
 
@@ -66,7 +96,8 @@ TEST(CadCheck, DemoJobChecksItsOwnBladeAndWritesItAsStep) {
     ASSERT_TRUE(result->cadCheck);
     ASSERT_TRUE(result->cadCheck->rescheduled);
     EXPECT_EQ(result->cadCheck->original.records.size(), result->pass.count);
-    EXPECT_TRUE(introducedIssues(*result->cadCheck).empty());
+    EXPECT_TRUE(result->cadCheck->original.issues.empty());
+    EXPECT_TRUE(result->cadCheck->rescheduled->issues.empty());
     // The CAD sections turn concave where the toolpath said they do (within a degree).
     const auto& sections = result->cadCheck->sections;
     ASSERT_EQ(sections.size(), result->rescheduled->schedule.basePoints.size());
@@ -92,6 +123,87 @@ TEST(CadCheck, UnreadableCadFileIsAnInputError) {
     auto result = runJob(spec, progress, cancel);
     ASSERT_FALSE(result.has_value());
     EXPECT_NE(result.error().toString().find("truncated.step"), std::string::npos);
+}
+
+// A box a metre away from the demo's toolpath is not its blade: every clearance would be capped
+// at the search limit and the check would pass silently.
+TEST(CadCheck, CadFarFromTheToolpathIsAGeometryErrorNamingTheFile) {
+    JobSpec spec;
+    spec.demo = true;
+    spec.cad.file = fs::path(BLADEAXIS_TEST_DATA_DIR) / "cad/box_solid_inch.step";
+    spec.cad.placement.translation = Vec3(1000.0, 0.0, 0.0);
+    NullProgressSink progress;
+    CancelToken cancel;
+    auto result = runJob(spec, progress, cancel);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::Geometry);
+    const std::string text = result.error().toString();
+    EXPECT_NE(text.find("box_solid_inch.step"), std::string::npos) << text;
+    EXPECT_NE(text.find("does not fit the program"), std::string::npos) << text;
+    EXPECT_NE(text.find("CL points are farther than the 5 mm search limit"), std::string::npos)
+        << text;
+}
+
+// The demo blade shifted along the rotary axis leaves part of the program without blade.
+TEST(CadCheck, CadNotSpanningTheProgramIsAGeometryError) {
+    JobSpec demo;
+    demo.demo = true;
+    demo.outputDir = fs::temp_directory_path() / "bladeaxis_cad_check_span";
+    fs::remove_all(demo.outputDir);
+    NullProgressSink progress;
+    CancelToken cancel;
+    auto written = runJob(demo, progress, cancel);
+    ASSERT_TRUE(written.has_value()) << written.error().toString();
+    ASSERT_TRUE(writeJobOutputs(demo, *written));
+    JobSpec spec;
+    spec.demo = true;
+    spec.cad.file = demo.outputDir / "demo_blade.step";
+    spec.cad.placement.translation = Vec3(12.0, 0.0, 0.0);
+    auto result = runJob(spec, progress, cancel);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::Geometry);
+    EXPECT_NE(result.error().toString().find("found the CAD at x 12.0 .. 32.0,"), std::string::npos)
+        << result.error().toString();
+    spec.cad.placement.translation = Vec3::Zero(); // in place it fits
+    EXPECT_TRUE(runJob(spec, progress, cancel).has_value());
+    fs::remove_all(demo.outputDir);
+}
+
+// The clearance per layer reaches report.json (each layer's minima over its CL points), each
+// CL point's clearance layers.csv, and a one-line summary the batch output.
+TEST(CadCheck, DemoOutputsCarryTheClearancePerLayerAndPerPoint) {
+    JobSpec spec;
+    spec.demo = true;
+    spec.outputDir = fs::temp_directory_path() / "bladeaxis_cad_check_layers";
+    fs::remove_all(spec.outputDir);
+    NullProgressSink progress;
+    CancelToken cancel;
+    auto result = runJob(spec, progress, cancel);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    ASSERT_TRUE(writeJobOutputs(spec, *result));
+    const cad::ClearanceReport& after = *result->cadCheck->rescheduled;
+    const auto report = nlohmann::json::parse(*readTextFile(spec.outputDir / "report.json"));
+    const auto& layers = report.at("clearance").at("rescheduled").at("layers");
+    ASSERT_EQ(layers.size(), result->rescheduled->schedule.layers.size());
+    for (const auto& layer : layers) {
+        const std::size_t first = layer.at("first_record");
+        const std::size_t last = layer.at("last_record");
+        double shank = 1e300;
+        for (std::size_t i = first; i <= last; ++i) {
+            shank = std::min(shank, after.records[i].shank);
+        }
+        EXPECT_EQ(layer.at("min_shank_mm").get<double>(), shank);
+        EXPECT_EQ(layer.at("first_line").get<int>(),
+                  result->program.path().records[result->pass.first + first].line);
+    }
+    const std::string csv = *readTextFile(spec.outputDir / "layers.csv");
+    EXPECT_NE(csv.find("ddtheta_deg_mm2,ball_clearance_mm,shank_clearance_mm\n"),
+              std::string::npos);
+    const std::string secondRow =
+        csv.substr(csv.find('\n') + 1, csv.find('\n', csv.find('\n') + 1) - csv.find('\n') - 1);
+    EXPECT_EQ(secondRow.substr(secondRow.rfind(',') + 1), formatShortest(after.records[0].shank));
+    EXPECT_NE(formatSummary(*result).find("clearance    ball >= "), std::string::npos);
+    fs::remove_all(spec.outputDir);
 }
 
 } // namespace

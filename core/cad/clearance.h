@@ -10,8 +10,9 @@
 // extremum search per CL point (milliseconds each; a blade program has 10^5 points), and over
 // exact point-triangle distances, which have no closed form for cones and cylinders. The error
 // is bounded by the mesh deflection plus the sampling coverage and is second order at grazing
-// contacts. The tool is checked at every CL record (rapids included), not swept between them
-// (CL points of finish paths are dense: the chordal tolerance is a few microns).
+// contacts. The tool is checked at every CL record it is given (rapids included), not swept
+// between them (CL points of finish paths are dense: the chordal tolerance is a few microns).
+// The job gives it the cutting pass only (job/cad_check.h says why).
 //
 // Sign conventions: ball = dist(Q, surface) - R (negative = gouge depth); shank and holder =
 // signed distance from the part to the nearest surface sample (negative = penetration). A ball

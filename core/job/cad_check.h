@@ -4,6 +4,12 @@
 // re-scheduled cutting pass checked for gouges and shank/holder collisions. An output program
 // that gouges or collides anywhere is refused unless forced, with the first offending source
 // line and whether the input program already did the same there.
+//
+// Only the cutting pass (the longest run of feed moves, the records the re-scheduling changes)
+// is checked, not the approach, retract and rapid moves around it: those are written
+// byte-identical to the input, so the output cannot change their clearance, and they are long
+// straight moves between few points, which a check at the CL points (not swept) would not prove
+// clear anyway. Checking the input's own links is the CAM's verifier's job.
 
 #include "core/base/error.h"
 #include "core/cad/cad_files.h"

@@ -26,8 +26,11 @@ struct LpSolution {
     double objective = 0.0;
     int iterations = 0;
     bool converged = false;
+    double relativeResidual = 0.0; // max KKT residual / problem scale of the returned point
 };
 
+// Converged means a relative KKT residual below `tolerance`, or, where the iterates stall at
+// round-off near a degenerate optimum, a best iterate below 100 x `tolerance`.
 // Errors: InvalidArgument (sizes), Infeasible (no convergence within the iteration limit, as
 // for an infeasible or unbounded problem).
 Result<LpSolution> solveLp(const SparseLp& lp, double tolerance = 1e-9, int maxIterations = 200);

@@ -209,6 +209,30 @@ TEST(OptimalLayer, TheEngineNeverBeatsTheOptimumOnTheSyntheticFamily) {
     std::printf("[ measure  ] %zu family layer ends needed the mirrored form\n", mirroredEnds);
 }
 
+// The min-peak LP exists on every layer of the reproduction's 36 blades (docs/results.md). On
+// three of them the interior point's iterates used to stall at round-off near a degenerate
+// optimum and the layer had no optimum; the best iterate is now taken when it met 100x the
+// tolerance, and it still never beats the engine's schedule, which is feasible for the LP.
+TEST(OptimalLayer, EveryLayerOfTheReproductionFamilyHasTheMinimumPeakOptimum) {
+    auto family = blade::syntheticFamily(2022, 36);
+    ASSERT_TRUE(family.has_value()) << family.error().toString();
+    std::size_t layersSolved = 0;
+    for (const blade::FamilyMember& member : *family) {
+        const auto layers = scheduledLayers(member.blade, member.path);
+        for (std::size_t k = 0; k < layers.size(); ++k) {
+            const LayerBounds bounds = boundsOf(layers[k], k == 0, k + 1 == layers.size());
+            auto lp = minimumPeakLayer(bounds);
+            ASSERT_TRUE(lp.has_value())
+                << member.name << " layer " << k << ": " << lp.error().toString();
+            EXPECT_GE(peakSecondDifference(bounds, layers[k].theta),
+                      (1.0 - kEndSlack) * lp->peakSecondDifference)
+                << member.name << " layer " << k;
+            ++layersSolved;
+        }
+    }
+    EXPECT_GT(layersSolved, 36u * 3u);
+}
+
 // Convexity: a step from the optimum towards any feasible point (here the engine's schedule)
 // cannot lower the objective. An independent check of optimality, not of the solver's residuals.
 TEST(OptimalLayer, NoFeasibleStepLowersTheOptimum) {

@@ -99,10 +99,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(QStringLiteral("BladeAxis"));
     setAcceptDrops(true);
     m_layers = new QTableWidget(0, kLayerColumns, this);
-    m_layers->setHorizontalHeaderLabels({tr("Layer"), tr("Status"), tr("Edited"), tr("Rev. before"),
-                                         tr("Rev. after"), tr("Peak A acc. before [°/s²]"),
-                                         tr("Peak A acc. after [°/s²]"), tr("Min clearance [mrad]"),
-                                         tr("Peak θ'' [rad/mm²]")});
+    // Two-line headers (name over unit) keep the columns narrow enough for the before/after
+    // figures to fit beside the editor without scrolling.
+    m_layers->setHorizontalHeaderLabels(
+        {tr("Layer"), tr("Status"), tr("Edited"), tr("Rev.\nbefore"), tr("Rev.\nafter"),
+         tr("Peak A acc.\nbefore [°/s²]"), tr("Peak A acc.\nafter [°/s²]"),
+         tr("Min clearance\n[mrad]"), tr("Peak θ''\n[rad/mm²]")});
     m_layers->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_layers->setSelectionMode(QAbstractItemView::SingleSelection);
     m_layers->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -357,8 +359,8 @@ void MainWindow::showLayerRow(int row, const report::LayerMotion& m) {
                       new QTableWidgetItem(editText(overrideOf(static_cast<std::size_t>(row)))));
     m_layers->setItem(row, kReversalsBefore, numberItem(m.reversalsBefore, 0));
     m_layers->setItem(row, kReversalsAfter, numberItem(m.reversalsAfter, 0));
-    m_layers->setItem(row, kPeakABefore, numberItem(units::radToDeg(m.peakAccelerationBefore), 1));
-    m_layers->setItem(row, kPeakAAfter, numberItem(units::radToDeg(m.peakAccelerationAfter), 1));
+    m_layers->setItem(row, kPeakABefore, numberItem(units::radToDeg(m.peakAccelerationBefore), 0));
+    m_layers->setItem(row, kPeakAAfter, numberItem(units::radToDeg(m.peakAccelerationAfter), 0));
     m_layers->setItem(row, kClearanceColumn, numberItem(layer.minClearance * 1000.0, 2));
     m_layers->setItem(row, kPeakThetaColumn, numberItem(layer.peakSecondDerivative, 4));
 }

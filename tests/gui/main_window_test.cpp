@@ -346,7 +346,10 @@ class MainWindowTest final : public QObject {
   private:
     static int headerColumn(const QTableWidget* table, const char* prefix) {
         for (int column = 0; column < table->columnCount(); ++column) {
-            if (table->horizontalHeaderItem(column)->text().startsWith(QLatin1String(prefix))) {
+            // Headers are on two lines (name over unit); the prefix is matched on one.
+            QString header = table->horizontalHeaderItem(column)->text();
+            if (header.replace(QLatin1Char('\n'), QLatin1Char(' '))
+                    .startsWith(QLatin1String(prefix))) {
                 return column;
             }
         }

@@ -235,7 +235,7 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply) {
         }
         if (!m_cadPath.isEmpty() && spec.cad.file.empty() && !spec.demo) {
             spec.cad.file = m_cadPath.toStdString();
-            spec.cad.placement.translation = m_cadTranslation;
+            spec.cad.placement = m_cadPlacement;
         }
         spec.compare = m_compareAction->isChecked();
         spec.compareOptimum = m_optimumAction->isChecked();

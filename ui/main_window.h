@@ -48,8 +48,8 @@ class MainWindow final : public QMainWindow {
     Status saveJob(const QString& jobPath);
     void setMachineFile(const QString& machinePath);
     // Blade CAD (STEP/IGES) for the next job: clearance check, sections and the 3D surface;
-    // empty clears it. The translation places the blade relative to the rotary axis (mm).
-    void setBladeCad(const QString& cadPath, const Vec3& translation = Vec3::Zero());
+    // empty clears it. The placement puts the blade relative to the rotary axis.
+    void setBladeCad(const QString& cadPath, const cad::AxisRotationPlacement& placement = {});
     bool isRunning() const { return m_thread != nullptr; }
     // True while the job re-runs (or will re-run) with edits the last result does not have.
     bool editsPending() const { return m_thread != nullptr || m_reapplyQueued; }
@@ -139,7 +139,7 @@ class MainWindow final : public QMainWindow {
     job::DisplayScene m_scene;
     QString m_machinePath;
     QString m_cadPath;
-    Vec3 m_cadTranslation = Vec3::Zero();
+    cad::AxisRotationPlacement m_cadPlacement;
     QUndoStack m_undo;
     JobThread* m_thread = nullptr;
     bool m_threadIsReapply = false;

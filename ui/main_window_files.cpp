@@ -1,6 +1,7 @@
 // The main window's menus, tool bar, files (open, save, export, recent), settings and palette.
 #include "core/base/file_io.h"
 #include "core/job/job_file.h"
+#include "ui/blade_placement_dialog.h"
 #include "ui/comparison_table.h"
 #include "ui/main_window.h"
 #include "ui/profile_plots.h"
@@ -15,10 +16,8 @@
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
 #include <QKeySequence>
 #include <QLabel>
-#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -219,9 +218,9 @@ void MainWindow::setMachineFile(const QString& machinePath) {
     QSettings().setValue(kMachineKey, machinePath);
 }
 
-void MainWindow::setBladeCad(const QString& cadPath, const Vec3& translation) {
+void MainWindow::setBladeCad(const QString& cadPath, const cad::AxisRotationPlacement& placement) {
     m_cadPath = cadPath;
-    m_cadTranslation = translation;
+    m_cadPlacement = placement;
     m_cadLabel->setText(cadPath.isEmpty()
                             ? tr("  Blade CAD: none")
                             : tr("  Blade CAD: %1").arg(QFileInfo(cadPath).fileName()));
@@ -234,26 +233,11 @@ void MainWindow::openCadDialog() {
     if (path.isEmpty()) {
         return;
     }
-    bool ok = false;
-    const QString text = QInputDialog::getText(
-        this, tr("Blade placement"),
-        tr("Translation of the CAD relative to the rotary axis, x y z in mm:"), QLineEdit::Normal,
-        QStringLiteral("0 0 0"), &ok);
-    if (!ok) {
+    BladePlacementDialog dialog(m_cadPlacement, this);
+    if (dialog.exec() != QDialog::Accepted) {
         return;
     }
-    const QStringList parts = text.simplified().split(QLatin1Char(' '));
-    Vec3 translation = Vec3::Zero();
-    bool valid = parts.size() == 3;
-    for (int k = 0; valid && k < 3; ++k) {
-        translation[k] = parts[k].toDouble(&valid);
-    }
-    if (!valid) {
-        QMessageBox::warning(this, tr("Blade placement"),
-                             tr("Expected three numbers in mm, got '%1'").arg(text));
-        return;
-    }
-    setBladeCad(path, translation);
+    setBladeCad(path, dialog.placement());
     statusBar()->showMessage(tr("Blade CAD %1 is used by the next program you open").arg(path),
                              8000);
 }
@@ -264,7 +248,7 @@ Status MainWindow::openJob(const QString& jobPath) {
         return read;
     }
     m_undo.clear();
-    setBladeCad(QString::fromStdString(spec.cad.file.string()), spec.cad.placement.translation);
+    setBladeCad(QString::fromStdString(spec.cad.file.string()), spec.cad.placement);
     startJob(std::move(spec), false);
     return {};
 }

@@ -65,6 +65,7 @@ struct RawOptions {
     NumberOption holderLength{"", "--holder-length", true};
     std::string cad;
     std::vector<std::string> cadTranslate;
+    std::vector<std::string> cadRotate;
     bool force = false;
     std::string outputProgram, outputCl, preset, jobFile;
     std::map<std::string, std::string> parameters; // schema key -> text, when given
@@ -135,6 +136,10 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
                     "that gouges or collides anywhere is refused (exit 5)");
     cad->add_option("--cad-translate", raw.cadTranslate,
                     "Move the CAD blade by X Y Z mm into the program's workpiece frame")
+        ->expected(3);
+    cad->add_option("--cad-rotate-deg", raw.cadRotate,
+                    "Rotate the CAD blade by RX RY RZ degrees about the X, then Y, then Z axis "
+                    "of the workpiece frame (x = rotary axis), before --cad-translate")
         ->expected(3);
     cad->add_option("--stick-out", raw.stickOut.text, "Tool tip to holder face, mm (default 50)");
     cad->add_option("--holder-radius", raw.holderRadius.text, "Holder radius, mm (default 20)");
@@ -262,22 +267,42 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     return {};
 }
 
+// X Y Z of a three-value option; empty when the option is not given (CLI11 takes three or none).
+Result<std::optional<Vec3>> tripleOption(const std::vector<std::string>& texts,
+                                         const std::string& option, const std::string& unit) {
+    if (texts.empty()) {
+        return std::nullopt;
+    }
+    Vec3 values = Vec3::Zero();
+    for (std::size_t k = 0; k < texts.size() && k < 3; ++k) {
+        auto value = parseNumber(texts[k]);
+        if (!value) {
+            return makeError(ErrorCode::InvalidArgument, option + ": expected three numbers (" +
+                                                             unit + "), got '" + texts[k] + "'");
+        }
+        values[static_cast<Eigen::Index>(k)] = *value;
+    }
+    return values;
+}
+
+// The placement options replace the job file's values, each on its own.
 Status applyCad(const RawOptions& raw, BatchOptions& options) {
     auto& cad = options.job.cad;
     if (!raw.cad.empty()) {
         cad.file = raw.cad;
     }
     cad.force = raw.force;
-    // The tool's taper is the one the channel was built for (spec §2.3).
-    cad.tool.taperHalfAngle = options.job.parameters.taperHalfAngleRad;
-    for (std::size_t k = 0; k < raw.cadTranslate.size(); ++k) {
-        auto value = parseNumber(raw.cadTranslate[k]);
-        if (!value) {
-            return makeError(ErrorCode::InvalidArgument,
-                             "--cad-translate: expected three numbers (mm), got '" +
-                                 raw.cadTranslate[k] + "'");
-        }
-        cad.placement.translation[static_cast<Eigen::Index>(k)] = *value;
+    auto translation = tripleOption(raw.cadTranslate, "--cad-translate", "mm");
+    if (!translation) {
+        return std::unexpected(translation.error());
+    }
+    auto rotation = tripleOption(raw.cadRotate, "--cad-rotate-deg", "degrees");
+    if (!rotation) {
+        return std::unexpected(rotation.error());
+    }
+    cad.placement.translation = translation->value_or(cad.placement.translation);
+    if (*rotation) {
+        cad.placement.rotationXyz = (*rotation)->unaryExpr(&units::degToRad);
     }
     return {};
 }

@@ -293,6 +293,12 @@ Status writeCadFile(const CadShape& shape, const fs::path& path, CadFormat forma
     return makeError(ErrorCode::WriteFailed, "cannot move the written model into place", where);
 }
 
+Placement toPlacement(const AxisRotationPlacement& placement) {
+    const Vec3& angles = placement.rotationXyz;
+    return {rotationZ(angles.z()) * rotationY(angles.y()) * rotationX(angles.x()),
+            placement.translation};
+}
+
 Result<CadFormat> detectCadFormat(const fs::path& path) {
     const std::string head = readHead(path, 4096);
     const std::size_t start = head.find_first_not_of(" \t\r\n");

@@ -31,6 +31,17 @@ struct Placement {
     Vec3 translation = Vec3::Zero();
 };
 
+// A placement as users state it (command line, job file, GUI): rotations about the fixed X, Y and
+// Z axes of W, in that order, then the translation: p_W = Rz(c) Ry(b) Rx(a) p_file + t. Angles in
+// rad, so the edges convert degrees once; kept as angles so a saved job writes back what was
+// given instead of a decomposed matrix.
+struct AxisRotationPlacement {
+    Vec3 rotationXyz = Vec3::Zero(); // rad: (a, b, c) about X, Y, Z
+    Vec3 translation = Vec3::Zero(); // mm
+};
+
+Placement toPlacement(const AxisRotationPlacement& placement);
+
 // Errors: InvalidArgument (null or face-less shape), WriteFailed.
 Status writeCadFile(const CadShape& shape, const std::filesystem::path& path, CadFormat format,
                     LengthUnit unit = LengthUnit::Millimetre);

@@ -32,7 +32,7 @@ Status validate(const ToolGeometry& tool) {
                          "tool: ball radius, stick-out and holder sizes must be positive mm");
     }
     if (!std::isfinite(tool.taperHalfAngle) || tool.taperHalfAngle < 0.0 ||
-        tool.taperHalfAngle >= std::numbers::pi / 3) {
+        tool.taperHalfAngle >= kMaxTaperHalfAngle) {
         return makeError(ErrorCode::InvalidArgument,
                          "tool: taper half-angle must lie in [0, 60) deg, got " +
                              formatTrimmed(tool.taperHalfAngle * 180.0 / std::numbers::pi, 3) +

@@ -9,6 +9,8 @@
 
 #include "core/base/error.h"
 
+#include <numbers>
+
 namespace bladeaxis::cad {
 
 struct ToolGeometry {
@@ -18,6 +20,10 @@ struct ToolGeometry {
     double holderRadius = 20.0;
     double holderLength = 60.0; // along the axis from the holder face
 };
+
+// The largest taper half-angle the shank model takes (exclusive): beyond it the cone is nearly a
+// plane through the ball and the tool no longer describes a shank.
+constexpr double kMaxTaperHalfAngle = std::numbers::pi / 3;
 
 // Errors (InvalidArgument): non-positive or non-finite sizes, taper outside [0, 60 deg), a
 // stick-out that leaves no shank above the ball.

@@ -1,11 +1,14 @@
 #include "core/job/cad_check.h"
 
 #include "core/base/number_io.h"
+#include "core/base/units.h"
 #include "core/cad/surface_samples.h"
 #include "core/cad/tessellation.h"
 #include "core/job/cad_fit.h"
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace bladeaxis::job {
 
@@ -22,16 +25,66 @@ Result<cad::ClearanceReport> check(const cad::SurfaceSamples& samples,
     return cad::checkClearance(samples, path, tool, options);
 }
 
+Status toolError(const std::string& message) {
+    return makeError(ErrorCode::InvalidArgument, "tool for the clearance check: " + message);
+}
+
+bool positive(double value) {
+    return std::isfinite(value) && value > 0.0;
+}
+
 } // namespace
+
+Result<cad::ToolGeometry> jobTool(const cad::ToolGeometry& tool, double ballRadius,
+                                  double taperHalfAngle) {
+    cad::ToolGeometry result = tool;
+    result.ballRadius = ballRadius;
+    result.taperHalfAngle = taperHalfAngle;
+    const std::string maxTaperDeg = formatTrimmed(units::radToDeg(cad::kMaxTaperHalfAngle), 3);
+    if (!std::isfinite(taperHalfAngle) || taperHalfAngle < 0.0 ||
+        taperHalfAngle >= cad::kMaxTaperHalfAngle) {
+        return std::unexpected(
+            toolError("--taper-deg (job file: parameters.taper_deg) must lie in [0, " +
+                      maxTaperDeg + ") deg, got " +
+                      formatTrimmed(units::radToDeg(taperHalfAngle), 3) +
+                      " deg; the shank model of the check takes no wider taper")
+                .error());
+    }
+    const std::pair<const char*, double> sizes[] = {
+        {"--tool-radius (job file: tool_radius_mm)", ballRadius},
+        {"--stick-out", tool.stickOut},
+        {"--holder-radius", tool.holderRadius},
+        {"--holder-length", tool.holderLength}};
+    for (const auto& [name, value] : sizes) {
+        if (!positive(value)) {
+            return std::unexpected(toolError(std::string(name) +
+                                             " must be a positive length in mm, got " +
+                                             formatTrimmed(value, 3))
+                                       .error());
+        }
+    }
+    if (tool.stickOut <= 2.0 * ballRadius) {
+        return std::unexpected(
+            toolError("--stick-out (" + formatTrimmed(tool.stickOut, 3) +
+                      " mm) must exceed the ball diameter, 2 x --tool-radius = " +
+                      formatTrimmed(2.0 * ballRadius, 3) + " mm")
+                .error());
+    }
+    // Whatever cad::validate checks beyond the names above still stops the job here.
+    if (Status valid = cad::validate(result); !valid) {
+        return std::unexpected(valid.error());
+    }
+    return result;
+}
 
 Result<CadCheckResult> runCadCheck(const CadCheckSpec& spec, const cad::CadShape& blade,
                                    std::string source, double toolRadius,
                                    const CuttingPassView& pass) {
-    cad::ToolGeometry tool = spec.tool;
-    tool.ballRadius = toolRadius;
-    if (auto valid = cad::validate(tool); !valid) {
-        return std::unexpected(valid.error());
+    auto checkedTool = jobTool(spec.tool, toolRadius, spec.tool.taperHalfAngle);
+    if (!checkedTool) {
+        return std::unexpected(checkedTool.error());
     }
+    const cad::ToolGeometry& tool = *checkedTool;
     auto mesh = cad::tessellate(blade);
     if (!mesh) {
         return std::unexpected(mesh.error());

@@ -26,9 +26,9 @@
 namespace bladeaxis::job {
 
 struct CadCheckSpec {
-    std::filesystem::path file;  // STEP or IGES; empty: no check (the demo uses its own surface)
-    cad::Placement placement;    // of the blade relative to the rotary axis
-    cad::ToolGeometry tool;      // ballRadius is taken from the job's tool radius
+    std::filesystem::path file; // STEP or IGES; empty: no check (the demo uses its own surface)
+    cad::AxisRotationPlacement placement; // of the blade relative to the rotary axis
+    cad::ToolGeometry tool;      // ballRadius and taperHalfAngle are the job's (jobTool below)
     double sampleSpacing = 0.25; // mm between surface samples of the clearance check
     bool force = false;          // write a program even if it gouges or collides
 };
@@ -49,6 +49,13 @@ struct CuttingPassView {
     std::string sourceFile;
     std::vector<std::pair<std::size_t, std::size_t>> layers; // inclusive record ranges
 };
+
+// The tool the check uses: spec's stick-out and holder with the job's ball radius and the taper
+// the channel was built for (spec §2.3). Checked before any scheduling, so that a tool the check
+// cannot model stops the job at once. Errors: InvalidArgument naming the command-line option
+// and the job-file key of the size out of range, and the range.
+Result<cad::ToolGeometry> jobTool(const cad::ToolGeometry& tool, double ballRadius,
+                                  double taperHalfAngle);
 
 // Tessellates and samples the blade once, then checks both passes. Errors: Geometry for meshing
 // failures and for CAD that does not fit the program (cad_fit.h), InvalidArgument for a bad

@@ -56,7 +56,8 @@ Status checkCadFitsProgram(const CadFitInput& input) {
     return makeError(
         ErrorCode::Geometry,
         "the CAD does not fit the program, is it the blade of " + input.programName +
-            " and is its placement right (--cad-translate)? Expected a blade spanning the ball "
+            " and is its placement right (--cad-rotate-deg, --cad-translate)? Expected a blade "
+            "spanning the ball "
             "centres' x range less R = " +
             formatTrimmed(input.toolRadius, 3) + " mm (centres at " + describe(centres) +
             "), found the CAD at " + describe(cad) + "; " + std::to_string(far) + " of " +

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace bladeaxis::job {
 namespace {
@@ -126,6 +127,81 @@ Vec3 towardsBlade(std::span<const Vec3> centres, std::size_t i, int sense) {
     return length > 0.0 ? Vec3(inward / length) : Vec3::Zero();
 }
 
+// The nearest point to p on segment ab.
+Vec3 nearestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+    const Vec3 ab = b - a;
+    const double length2 = ab.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return a + t * ab;
+}
+
+// The point of the centre path nearest to centre i on the turn `offset` revolutions away;
+// nullopt where the pass has no such turn. The search starts at the same revolution parameter
+// and walks downhill: matching by the parameter alone fails around the blade's edges, where
+// the polar angle about x barely changes while the centre goes round the edge.
+std::optional<Vec3> nearestOnTurn(std::span<const Vec3> centres, std::span<const double> revolution,
+                                  std::size_t i, double offset) {
+    const double u = revolution[i] + offset;
+    if (u < revolution.front() || u > revolution.back()) {
+        return std::nullopt;
+    }
+    const Vec3& p = centres[i];
+    const auto distance = [&](std::size_t k) { return (centres[k] - p).squaredNorm(); };
+    auto k = static_cast<std::size_t>(std::lower_bound(revolution.begin(), revolution.end(), u) -
+                                      revolution.begin());
+    while (k + 1 < centres.size() && distance(k + 1) < distance(k)) {
+        ++k;
+    }
+    while (k > 0 && distance(k - 1) < distance(k)) {
+        --k;
+    }
+    if (std::abs(revolution[k] - revolution[i]) < 0.5) {
+        return std::nullopt; // walked back onto the centre's own turn: no neighbour there
+    }
+    Vec3 best = centres[k];
+    for (const std::size_t other : {k > 0 ? k - 1 : k, k + 1 < centres.size() ? k + 1 : k}) {
+        const Vec3 candidate = nearestOnSegment(p, centres[k], centres[other]);
+        if ((candidate - p).squaredNorm() < (best - p).squaredNorm()) {
+            best = candidate;
+        }
+    }
+    return best;
+}
+
+// Unit 3-D direction from the ball centre towards the blade, along the blade's normal at the
+// contact. The centres lie on the blade offset by R along that normal (the 3-D normal, which
+// the twist tilts out of the section plane), so it is also the normal of the centres' own
+// surface, spanned by the path tangent and the chord between the nearest points one turn
+// earlier and later (central, or one-sided over two turns at the ends of the pass, so that the
+// surface's curvature cancels to first order). The in-plane direction stands in where the pass has
+// fewer than three turns, and orients the normal.
+Vec3 normalTowardsBlade(std::span<const Vec3> centres, std::span<const double> revolution,
+                        std::size_t i, const Vec3& inPlane) {
+    const std::size_t before = i > 0 ? i - 1 : i;
+    const std::size_t after = i + 1 < centres.size() ? i + 1 : i;
+    const Vec3 tangent = centres[after] - centres[before];
+    const auto turn = [&](double offset) { return nearestOnTurn(centres, revolution, i, offset); };
+    const auto next = turn(1.0), previous = turn(-1.0);
+    Vec3 across;
+    if (next && previous) {
+        across = *next - *previous;
+    } else if (const auto nextTwo = next ? turn(2.0) : std::nullopt; nextTwo) {
+        across = 4.0 * *next - *nextTwo - 3.0 * centres[i]; // one-sided, second order
+    } else if (const auto previousTwo = previous ? turn(-2.0) : std::nullopt; previousTwo) {
+        across = 3.0 * centres[i] - 4.0 * *previous + *previousTwo;
+    } else {
+        return inPlane; // fewer than three turns: no second-order estimate
+    }
+    Vec3 normal = tangent.cross(across);
+    const double length = normal.norm();
+    // Degenerate where the path stalls or the turns touch: keep the section-plane estimate.
+    if (!(length > 1e-9 * tangent.norm() * across.norm())) {
+        return inPlane;
+    }
+    normal /= length;
+    return normal.dot(inPlane) < 0.0 ? Vec3(-normal) : normal;
+}
+
 void orientOutwards(cad::TriangleMesh& mesh, std::span<const Vec3> inward) {
     double agreement = 0.0;
     for (const auto& t : mesh.triangles) {
@@ -188,12 +264,13 @@ struct Contacts {
     std::vector<Vec3> inward; // unit, towards the blade
 };
 
-Contacts contactPoints(const DisplayScene& scene, int sense) {
+Contacts contactPoints(const DisplayScene& scene, std::span<const double> revolution, int sense) {
     Contacts contacts;
     contacts.points.reserve(scene.centres.size());
     contacts.inward.reserve(scene.centres.size());
     for (std::size_t i = 0; i < scene.centres.size(); ++i) {
-        const Vec3 inward = towardsBlade(scene.centres, i, sense);
+        const Vec3 inward =
+            normalTowardsBlade(scene.centres, revolution, i, towardsBlade(scene.centres, i, sense));
         contacts.inward.push_back(inward);
         contacts.points.push_back(scene.toolRadius > 0.0
                                       ? Vec3(scene.centres[i] + scene.toolRadius * inward)
@@ -204,7 +281,7 @@ Contacts contactPoints(const DisplayScene& scene, int sense) {
 
 void reconstructSurface(DisplayScene& scene, std::span<const double> drawnRevolution, int sense,
                         std::size_t maxVertices) {
-    const Contacts contacts = contactPoints(scene, sense);
+    const Contacts contacts = contactPoints(scene, drawnRevolution, sense);
     for (DisplayLayer& layer : scene.layers) {
         cad::Polyline3 ring;
         ring.points.assign(contacts.points.begin() + static_cast<std::ptrdiff_t>(layer.firstPoint),

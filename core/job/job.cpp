@@ -148,7 +148,7 @@ Status analyse(JobResult& result, const JobSpec& spec) {
 
 Result<cad::CadShape> bladeShape(const JobSpec& spec) {
     if (!spec.cad.file.empty()) {
-        return cad::readCadFile(spec.cad.file, spec.cad.placement);
+        return cad::readCadFile(spec.cad.file, cad::toPlacement(spec.cad.placement));
     }
     auto blade = blade::demoBlade(); // the demo program was generated on it
     if (!blade) {
@@ -157,11 +157,29 @@ Result<cad::CadShape> bladeShape(const JobSpec& spec) {
     return cad::makeBladeSurface(*blade);
 }
 
-Status cadCheckInto(JobResult& result, const JobSpec& spec, ProgressSink& progress) {
-    if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
+bool checksCad(const JobSpec& spec) {
+    return !spec.cad.file.empty() || spec.demo;
+}
+
+// The check's spec with the tool it will use, validated before any scheduling: a tool the check
+// cannot model would otherwise stop the job only after the whole schedule was computed.
+Result<CadCheckSpec> cadCheckSpec(const JobSpec& spec, std::optional<double> toolRadius) {
+    if (!toolRadius || !(*toolRadius > 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
                          "the clearance check needs the ball radius: give --tool-radius");
     }
+    CadCheckSpec checked = spec.cad;
+    // The tool's taper is the one the channel was built for (spec §2.3).
+    auto tool = jobTool(spec.cad.tool, *toolRadius, spec.parameters.taperHalfAngleRad);
+    if (!tool) {
+        return std::unexpected(tool.error());
+    }
+    checked.tool = *tool;
+    return checked;
+}
+
+Status cadCheckInto(JobResult& result, const JobSpec& spec, const CadCheckSpec& cadSpec,
+                    ProgressSink& progress) {
     auto shape = bladeShape(spec);
     if (!shape) {
         return std::unexpected(shape.error());
@@ -182,7 +200,7 @@ Status cadCheckInto(JobResult& result, const JobSpec& spec, ProgressSink& progre
     }
     const std::string source =
         spec.cad.file.empty() ? "demo blade surface" : spec.cad.file.filename().string();
-    auto checked = runCadCheck(spec.cad, *shape, source, *result.toolRadius, view);
+    auto checked = runCadCheck(cadSpec, *shape, source, *result.toolRadius, view);
     if (!checked) {
         return std::unexpected(checked.error());
     }
@@ -313,6 +331,14 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     for (const std::string& warning : result.warnings) {
         progress.warning(warning);
     }
+    std::optional<CadCheckSpec> cadSpec;
+    if (checksCad(spec)) {
+        auto checked = cadCheckSpec(spec, result.toolRadius);
+        if (!checked) {
+            return std::unexpected(checked.error());
+        }
+        cadSpec = std::move(*checked);
+    }
     progress.progress(0.3, "analysing the original axis motion");
     if (auto status = analyse(result, spec); !status) {
         return std::unexpected(status.error());
@@ -333,9 +359,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
             result.warnings.push_back(warning);
         }
     }
-    if (!spec.cad.file.empty() || spec.demo) {
+    if (cadSpec) {
         progress.progress(0.65, "checking the tool against the blade CAD");
-        if (auto status = cadCheckInto(result, spec, progress); !status) {
+        if (auto status = cadCheckInto(result, spec, *cadSpec, progress); !status) {
             return std::unexpected(status.error());
         }
     }

@@ -67,6 +67,7 @@ class JobReader {
     }
     Result<fs::path> pathValue(const Json& root, const char* key) const;
     Result<double> positiveNumber(const Json& root, const char* key) const;
+    Result<Vec3> triple(const Json& root, const char* key, const std::string& expected) const;
     Status parameters(const Json& object, JobSpec& spec) const;
     Status analysisOptions(const Json& root, JobSpec& spec) const;
     Status layerEdits(const Json& list, JobSpec& spec) const;
@@ -92,6 +93,16 @@ Result<double> JobReader::positiveNumber(const Json& root, const char* key) cons
         return fail(key, "expected a positive number, got " + value.dump());
     }
     return value.get<double>();
+}
+
+Result<Vec3> JobReader::triple(const Json& root, const char* key,
+                               const std::string& expected) const {
+    const Json& value = root.at(key);
+    if (!value.is_array() || value.size() != 3 ||
+        !std::ranges::all_of(value, [](const Json& v) { return v.is_number(); })) {
+        return fail(key, expected);
+    }
+    return Vec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
 }
 
 Status JobReader::parameters(const Json& object, JobSpec& spec) const {
@@ -270,13 +281,19 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
         }
     }
     if (root.contains("cad_translate_mm")) {
-        const Json& value = root.at("cad_translate_mm");
-        if (!value.is_array() || value.size() != 3 ||
-            !std::ranges::all_of(value, [](const Json& v) { return v.is_number(); })) {
-            return fail("cad_translate_mm", "expected [x, y, z] in mm");
+        auto translation = triple(root, "cad_translate_mm", "expected [x, y, z] in mm");
+        if (!translation) {
+            return std::unexpected(translation.error());
         }
-        spec.cad.placement.translation = {value[0].get<double>(), value[1].get<double>(),
-                                          value[2].get<double>()};
+        spec.cad.placement.translation = *translation;
+    }
+    if (root.contains("cad_rotate_deg")) {
+        auto angles =
+            triple(root, "cad_rotate_deg", "expected [rx, ry, rz] in degrees about X, Y and Z");
+        if (!angles) {
+            return std::unexpected(angles.error());
+        }
+        spec.cad.placement.rotationXyz = angles->unaryExpr(&units::degToRad);
     }
     if (root.contains("demo")) {
         if (!root.at("demo").is_boolean()) {
@@ -359,6 +376,8 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
         json["cad"] = relative(spec.cad.file);
         const Vec3& t = spec.cad.placement.translation;
         json["cad_translate_mm"] = {t.x(), t.y(), t.z()};
+        const Vec3 r = spec.cad.placement.rotationXyz.unaryExpr(&units::radToDeg);
+        json["cad_rotate_deg"] = {r.x(), r.y(), r.z()};
     }
     if (!spec.machineFile.empty()) {
         json["machine"] = relative(spec.machineFile);

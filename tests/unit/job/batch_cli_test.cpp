@@ -1,5 +1,7 @@
 #include "app/batch/batch_runner.h"
 #include "app/batch/exit_codes.h"
+#include "core/base/units.h"
+#include "core/cad/cad_files.h"
 
 #include <gtest/gtest.h>
 
@@ -111,6 +113,67 @@ TEST(BatchCli, GougingOutputIsRefusedNamingTheLineUnlessForced) {
     EXPECT_EQ(written.code, kExitOk) << written.err;
     EXPECT_TRUE(fs::exists(output));
     fs::remove_all(dir);
+}
+
+// The demo blade written with a rotation: Rx(-a) Ry(-b) Rz(-c), the inverse of the documented
+// Rz(c) Ry(b) Rx(a) of --cad-rotate-deg a b c. Placed back with those angles it is the program's
+// blade and the clearance check passes; as it lies in the file it does not fit (exit 5). Applied
+// in the reverse order (Rx Ry Rz) the same angles would leave the blade tilted by 35 deg about y.
+TEST(BatchCli, RotatedCadFitsOnlyWhenPlacedBackWithItsRotation) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "bladeaxis_batch_rotated_cad";
+    fs::remove_all(dir);
+    ASSERT_EQ(run({"--batch", "--demo", "--analyse-only", "--out", dir.string()}).code, kExitOk);
+    const double a = units::degToRad(90.0), b = units::degToRad(20.0), c = units::degToRad(15.0);
+    cad::Placement inverse;
+    inverse.rotation = rotationX(-a) * rotationY(-b) * rotationZ(-c);
+    const auto rotated = cad::readCadFile(dir / "demo_blade.step", inverse);
+    ASSERT_TRUE(rotated.has_value()) << rotated.error().toString();
+    const fs::path rotatedFile = dir / "demo_blade_rotated.step";
+    ASSERT_TRUE(cad::writeCadFile(*rotated, rotatedFile, cad::CadFormat::Step));
+    const std::vector<std::string> arguments{"--batch",       (dir / "demo_blade.nc").string(),
+                                             "--tool-radius", "8",
+                                             "--cad",         rotatedFile.string(),
+                                             "--out",         (dir / "report").string()};
+
+    const CliRun asWritten = run(arguments);
+    EXPECT_EQ(asWritten.code, kExitGeometry) << asWritten.err;
+    EXPECT_NE(asWritten.err.find("does not fit the program"), std::string::npos) << asWritten.err;
+    EXPECT_NE(asWritten.err.find("--cad-rotate-deg"), std::string::npos) << asWritten.err;
+
+    std::vector<std::string> placed = arguments;
+    placed.insert(placed.end(), {"--cad-rotate-deg", "90", "20", "15"});
+    const CliRun placedBack = run(placed);
+    EXPECT_EQ(placedBack.code, kExitOk) << placedBack.err;
+    EXPECT_NE(placedBack.out.find("clearance"), std::string::npos) << placedBack.out;
+    fs::remove_all(dir);
+}
+
+TEST(BatchCli, CadRotationThatIsNotANumberIsAUsageError) {
+    const CliRun result = run({"--batch", "--demo", "--cad-rotate-deg", "90", "0", "x"});
+    EXPECT_EQ(result.code, kExitUsage);
+    EXPECT_NE(result.err.find("--cad-rotate-deg: expected three numbers (degrees), got 'x'"),
+              std::string::npos)
+        << result.err;
+}
+
+// The scheduling accepts tapers up to 80 deg, the clearance check's shank model below 60: with
+// the blade checked, the job stops before scheduling and names the option and the range.
+TEST(BatchCli, TaperTheClearanceCheckCannotModelIsAUsageErrorNamingTheOption) {
+    const CliRun result = run({"--batch", "--demo", "--taper-deg", "70"});
+    EXPECT_EQ(result.code, kExitUsage) << result.err;
+    EXPECT_NE(result.err.find("--taper-deg (job file: parameters.taper_deg) must lie in [0, 60) "
+                              "deg, got 70 deg"),
+              std::string::npos)
+        << result.err;
+}
+
+TEST(BatchCli, StickOutShorterThanTheBallIsAUsageErrorNamingTheOption) {
+    const CliRun result = run({"--batch", "--demo", "--stick-out", "10"});
+    EXPECT_EQ(result.code, kExitUsage) << result.err;
+    EXPECT_NE(result.err.find("--stick-out (10 mm) must exceed the ball diameter"),
+              std::string::npos)
+        << result.err;
 }
 
 } // namespace

@@ -2,6 +2,8 @@
 
 #include "core/base/file_io.h"
 #include "core/base/number_io.h"
+#include "core/base/progress.h"
+#include "core/base/units.h"
 #include "core/cad/cad_files.h"
 #include "core/job/cad_check.h"
 #include "core/job/job.h"
@@ -11,6 +13,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace bladeaxis::job {
 namespace {
@@ -123,6 +128,36 @@ TEST(CadCheck, UnreadableCadFileIsAnInputError) {
     auto result = runJob(spec, progress, cancel);
     ASSERT_FALSE(result.has_value());
     EXPECT_NE(result.error().toString().find("truncated.step"), std::string::npos);
+}
+
+// Records the stages the job reports, to see how far it got.
+class StageRecorder final : public ProgressSink {
+  public:
+    void progress(double, std::string_view stage) override { stages.emplace_back(stage); }
+    void warning(std::string_view) override {}
+    std::vector<std::string> stages;
+};
+
+// A taper the scheduling takes (up to 80 deg) but the check's shank model does not (below
+// 60 deg) stops the job before the schedule is computed, not after.
+TEST(CadCheck, TaperTheCheckCannotModelStopsTheJobBeforeScheduling) {
+    JobSpec spec;
+    spec.demo = true;
+    spec.parameters.taperHalfAngleRad = units::degToRad(70.0);
+    StageRecorder progress;
+    CancelToken cancel;
+    auto result = runJob(spec, progress, cancel);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(result.error().message.find("--taper-deg"), std::string::npos)
+        << result.error().message;
+    EXPECT_EQ(std::ranges::count(progress.stages, "re-scheduling the tool orientation"), 0);
+    EXPECT_EQ(std::ranges::count(progress.stages, "analysing the original axis motion"), 0);
+
+    spec.parameters.taperHalfAngleRad = units::degToRad(59.0); // inside the model's range
+    progress.stages.clear();
+    spec.reschedule = false;
+    EXPECT_TRUE(runJob(spec, progress, cancel).has_value());
 }
 
 // A box a metre away from the demo's toolpath is not its blade: every clearance would be capped

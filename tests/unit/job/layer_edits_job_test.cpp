@@ -2,11 +2,13 @@
 // batch front end running the saved job writes the same program as the job API.
 #include "app/batch/batch_runner.h"
 #include "core/base/file_io.h"
+#include "core/base/units.h"
 #include "core/job/job.h"
 #include "core/job/job_file.h"
 #include "core/scheduling/layer_edit.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <sstream>
@@ -83,6 +85,36 @@ TEST(JobFile, BladeCadAndItsPlacementRoundTrip) {
     EXPECT_EQ(read.cad.file, fs::path("/data/cad/blade.step"));
     EXPECT_EQ(read.cad.placement.translation, spec.cad.placement.translation);
     EXPECT_NE(jobJsonText(spec, "/data").find("\"cad\": \"cad/blade.step\""), std::string::npos);
+}
+
+// The rotation is written in degrees as given, so a saved job places the blade the same.
+TEST(JobFile, BladeCadRotationRoundTripsInDegrees) {
+    JobSpec spec;
+    spec.cad.file = "/data/cad/blade.step";
+    spec.cad.placement.rotationXyz = {units::degToRad(90.0), units::degToRad(-12.5), 0.0};
+    const std::string text = jobJsonText(spec, "/data");
+    const nlohmann::json written = nlohmann::json::parse(text)["cad_rotate_deg"];
+    ASSERT_EQ(written.size(), 3u) << text;
+    EXPECT_NEAR(written[0].get<double>(), 90.0, 1e-12);
+    EXPECT_NEAR(written[1].get<double>(), -12.5, 1e-12);
+    EXPECT_EQ(written[2].get<double>(), 0.0);
+    JobSpec read;
+    const Status parsed = parseJobJson(text, "/data/job.json", read);
+    ASSERT_TRUE(parsed.has_value()) << parsed.error().toString();
+    EXPECT_TRUE(read.cad.placement.rotationXyz.isApprox(spec.cad.placement.rotationXyz, 1e-15));
+    EXPECT_EQ(jobJsonText(read, "/data"), text); // a second save writes the same file
+}
+
+TEST(JobFile, MalformedCadRotationNamesTheKeyAndItsLine) {
+    JobSpec spec;
+    const std::string text =
+        "{\n  \"schema\": \"bladeaxis-job/1\",\n  \"cad_rotate_deg\": [90, 0]\n}\n";
+    const Status parsed = parseJobJson(text, "rotated.json", spec);
+    ASSERT_FALSE(parsed.has_value());
+    EXPECT_EQ(parsed.error().where.line, 3);
+    EXPECT_NE(parsed.error().message.find("cad_rotate_deg: expected [rx, ry, rz] in degrees"),
+              std::string::npos)
+        << parsed.error().message;
 }
 
 TEST(LayerEditsJobFile, MalformedKeyPointsNameTheLine) {

@@ -295,6 +295,20 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
         }
         spec.cad.placement.rotationXyz = angles->unaryExpr(&units::degToRad);
     }
+    // The tool beyond the ball, for the clearance check (--stick-out, --holder-radius,
+    // --holder-length), so that a saved job checks the same tool.
+    for (const auto& [key, member] :
+         {std::pair{"stick_out_mm", &cad::ToolGeometry::stickOut},
+          std::pair{"holder_radius_mm", &cad::ToolGeometry::holderRadius},
+          std::pair{"holder_length_mm", &cad::ToolGeometry::holderLength}}) {
+        if (root.contains(key)) {
+            auto value = positiveNumber(root, key);
+            if (!value) {
+                return std::unexpected(value.error());
+            }
+            spec.cad.tool.*member = *value;
+        }
+    }
     if (root.contains("demo")) {
         if (!root.at("demo").is_boolean()) {
             return fail("demo", "expected true or false");
@@ -379,6 +393,9 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
         const Vec3 r = spec.cad.placement.rotationXyz.unaryExpr(&units::radToDeg);
         json["cad_rotate_deg"] = {r.x(), r.y(), r.z()};
     }
+    json["stick_out_mm"] = spec.cad.tool.stickOut;
+    json["holder_radius_mm"] = spec.cad.tool.holderRadius;
+    json["holder_length_mm"] = spec.cad.tool.holderLength;
     if (!spec.machineFile.empty()) {
         json["machine"] = relative(spec.machineFile);
     }

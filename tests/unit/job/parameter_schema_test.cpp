@@ -67,6 +67,9 @@ TEST(JobFile, WrittenJobReadsBackToTheSameSpec) {
     spec.analysis.feedOverride = 40.0;
     spec.analysis.method = analysis::DerivativeMethod::Filtered;
     spec.analysis.filterSeconds = 0.012;
+    spec.cad.tool.stickOut = 42.5;
+    spec.cad.tool.holderRadius = 16.0;
+    spec.cad.tool.holderLength = 75.0;
     spec.outputProgram = dir / "out.nc";
     const std::string text = jobJsonText(spec, dir);
     JobSpec back;
@@ -87,6 +90,9 @@ TEST(JobFile, WrittenJobReadsBackToTheSameSpec) {
     EXPECT_DOUBLE_EQ(back.analysis.feedOverride, 40.0);
     EXPECT_EQ(back.analysis.method, analysis::DerivativeMethod::Filtered);
     EXPECT_DOUBLE_EQ(back.analysis.filterSeconds, 0.012);
+    EXPECT_DOUBLE_EQ(back.cad.tool.stickOut, 42.5);
+    EXPECT_DOUBLE_EQ(back.cad.tool.holderRadius, 16.0);
+    EXPECT_DOUBLE_EQ(back.cad.tool.holderLength, 75.0);
 }
 
 TEST(JobFile, UnknownDerivativeMethodNamesTheKey) {

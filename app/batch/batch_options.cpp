@@ -338,10 +338,9 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
     options.job.analysis.feedReference = raw.feedReference == "centre"
                                              ? analysis::FeedReference::Centre
                                              : analysis::FeedReference::Tip;
-    options.job.analysis.method =
-        raw.derivatives == "fd"       ? analysis::DerivativeMethod::FiniteDifference
-        : raw.derivatives == "filter" ? analysis::DerivativeMethod::Filtered
-                                      : analysis::DerivativeMethod::Spline;
+    // CLI11 has checked the name against the same list.
+    options.job.analysis.method = analysis::derivativeMethodNamed(raw.derivatives)
+                                      .value_or(analysis::DerivativeMethod::Spline);
     options.printJson = raw.json;
     options.quiet = raw.quiet;
     options.generate.profile = raw.profile;

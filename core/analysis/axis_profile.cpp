@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace bladeaxis::analysis {
 
@@ -175,6 +176,32 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         profile.aReversals = auditReversals(a);
     }
     return profile;
+}
+
+namespace {
+constexpr std::pair<const char*, DerivativeMethod> kDerivativeMethodNames[] = {
+    {"spline", DerivativeMethod::Spline},
+    {"fd", DerivativeMethod::FiniteDifference},
+    {"filter", DerivativeMethod::Filtered},
+};
+} // namespace
+
+const char* nameOf(DerivativeMethod method) {
+    for (const auto& [name, value] : kDerivativeMethodNames) {
+        if (value == method) {
+            return name;
+        }
+    }
+    return "spline";
+}
+
+std::optional<DerivativeMethod> derivativeMethodNamed(std::string_view name) {
+    for (const auto& [key, method] : kDerivativeMethodNames) {
+        if (name == key) {
+            return method;
+        }
+    }
+    return std::nullopt;
 }
 
 } // namespace bladeaxis::analysis

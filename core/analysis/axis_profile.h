@@ -10,7 +10,9 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace bladeaxis::analysis {
@@ -23,13 +25,15 @@ constexpr double kMinPathStepMm = 1e-9;
 // or the cutter centre Q = O + R V (then A'' = theta''(S) F^2 exactly for re-scheduled paths).
 enum class FeedReference { Tip, Centre };
 
-// Spline: not-a-knot C2 cubic q(s) per axis, derivatives analytic (the headline method).
-// FiniteDifference: raw 3-point non-uniform differences (exact for quadratics); mostly measures
-// the CL discretisation, reported for comparison.
 // Spline: not-a-knot cubic spline of each axis over s (the headline method). FiniteDifference:
 // raw 3-point differences (they mostly measure the CL discretisation). Filtered: the
 // controller-like filter of spec §8.1 (1 ms resampling, moving average applied twice).
 enum class DerivativeMethod { Spline, FiniteDifference, Filtered };
+
+// The names of the methods on the command line (--derivatives) and in job files: "spline",
+// "fd", "filter".
+const char* nameOf(DerivativeMethod method);
+std::optional<DerivativeMethod> derivativeMethodNamed(std::string_view name);
 
 struct AxisProfileOptions {
     FeedReference feedReference = FeedReference::Tip;

@@ -128,12 +128,8 @@ void summariseLayers(const std::vector<std::pair<std::size_t, std::size_t>>& ran
                      ClearanceReport& report) {
     std::size_t issue = 0;
     for (const auto& [first, last] : ranges) {
-        LayerClearance layer{first, last, report.records[first], 0};
-        for (std::size_t i = first; i <= last; ++i) {
-            layer.minimum.ball = std::min(layer.minimum.ball, report.records[i].ball);
-            layer.minimum.shank = std::min(layer.minimum.shank, report.records[i].shank);
-            layer.minimum.holder = std::min(layer.minimum.holder, report.records[i].holder);
-        }
+        LayerClearance layer{
+            first, last, minimumOf(std::span(report.records).subspan(first, last - first + 1)), 0};
         for (; issue < report.issues.size() && report.issues[issue].record <= last; ++issue) {
             ++layer.issues;
         }
@@ -142,6 +138,17 @@ void summariseLayers(const std::vector<std::pair<std::size_t, std::size_t>>& ran
 }
 
 } // namespace
+
+RecordClearance minimumOf(std::span<const RecordClearance> records) {
+    constexpr double kFar = std::numeric_limits<double>::infinity();
+    RecordClearance minimum{kFar, kFar, kFar};
+    for (const RecordClearance& record : records) {
+        minimum.ball = std::min(minimum.ball, record.ball);
+        minimum.shank = std::min(minimum.shank, record.shank);
+        minimum.holder = std::min(minimum.holder, record.holder);
+    }
+    return minimum;
+}
 
 const char* toString(ClearanceKind kind) {
     switch (kind) {

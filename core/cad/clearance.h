@@ -26,6 +26,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,9 @@ struct RecordClearance {
     double shank = 0.0;
     double holder = 0.0;
 };
+
+// The smallest clearance of each tool part over `records` (+infinity when empty).
+RecordClearance minimumOf(std::span<const RecordClearance> records);
 
 enum class ClearanceKind { Gouge, ShankCollision, HolderCollision };
 

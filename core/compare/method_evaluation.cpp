@@ -10,7 +10,7 @@ std::vector<Vec3> centresOf(const EvaluationContext& context) {
     std::vector<Vec3> centres;
     centres.reserve(context.pass.size());
     for (const toolpath::ClRecord& record : context.pass) {
-        centres.push_back(record.tip + context.toolRadius * record.axis.normalized());
+        centres.push_back(toolpath::ballCentre(record, context.toolRadius));
     }
     return centres;
 }

@@ -106,7 +106,7 @@ Result<CadCheckResult> runCadCheck(const CadCheckSpec& spec, const cad::CadShape
     std::vector<Vec3> centres;
     centres.reserve(pass.original.size());
     for (const toolpath::ClRecord& record : pass.original) {
-        centres.push_back(record.tip + toolRadius * record.axis.normalized());
+        centres.push_back(toolpath::ballCentre(record, toolRadius));
     }
     const std::string cadName = spec.file.empty() ? result.source : spec.file.string();
     if (Status fits = checkCadFitsProgram({.blade = &*mesh,

@@ -396,7 +396,7 @@ DisplayScene buildDisplayScene(const DisplaySceneInput& input) {
     std::vector<Vec3> centres;
     centres.reserve(n);
     for (const toolpath::ClRecord& record : input.pass) {
-        centres.push_back(record.tip + scene.toolRadius * record.axis.normalized());
+        centres.push_back(toolpath::ballCentre(record, scene.toolRadius));
     }
     const Revolutions revolutions = revolutionsAboutX(centres);
     const std::vector<double>& revolution = revolutions.turns;

@@ -208,7 +208,7 @@ Status cadCheckInto(JobResult& result, const JobSpec& spec, const CadCheckSpec& 
     if (result.rescheduled) {
         std::vector<Vec3> centres;
         for (const auto& record : view.original) {
-            centres.push_back(record.tip + *result.toolRadius * record.axis.normalized());
+            centres.push_back(toolpath::ballCentre(record, *result.toolRadius));
         }
         auto sections =
             compareConcaveExits(*shape, result.rescheduled->schedule, centres, *result.toolRadius);

@@ -29,31 +29,6 @@ int lineOfKey(std::string_view text, std::string_view key) {
            static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
 }
 
-// The names of --derivatives, shared by the reader and the writer.
-constexpr std::pair<const char*, analysis::DerivativeMethod> kDerivativeMethods[] = {
-    {"spline", analysis::DerivativeMethod::Spline},
-    {"fd", analysis::DerivativeMethod::FiniteDifference},
-    {"filter", analysis::DerivativeMethod::Filtered},
-};
-
-std::optional<analysis::DerivativeMethod> derivativeMethodOf(std::string_view name) {
-    for (const auto& [key, method] : kDerivativeMethods) {
-        if (name == key) {
-            return method;
-        }
-    }
-    return std::nullopt;
-}
-
-const char* derivativeMethodName(analysis::DerivativeMethod method) {
-    for (const auto& [key, value] : kDerivativeMethods) {
-        if (value == method) {
-            return key;
-        }
-    }
-    return "spline";
-}
-
 class JobReader {
   public:
     JobReader(std::string_view text, const fs::path& path) : m_text(text), m_path(path) {}
@@ -151,8 +126,9 @@ Status JobReader::analysisOptions(const Json& root, JobSpec& spec) const {
     }
     if (root.contains("derivatives")) {
         const Json& value = root.at("derivatives");
-        const auto method = value.is_string() ? derivativeMethodOf(value.get<std::string>())
-                                              : std::optional<analysis::DerivativeMethod>();
+        const auto method = value.is_string()
+                                ? analysis::derivativeMethodNamed(value.get<std::string>())
+                                : std::optional<analysis::DerivativeMethod>();
         if (!method) {
             return fail("derivatives", "expected \"spline\", \"fd\" or \"filter\"");
         }
@@ -424,7 +400,7 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
     if (spec.analysis.feedOverride > 0.0) {
         json["feed_mm_min"] = units::perSecondToPerMinute(spec.analysis.feedOverride);
     }
-    json["derivatives"] = derivativeMethodName(spec.analysis.method);
+    json["derivatives"] = analysis::nameOf(spec.analysis.method);
     json["filter_ms"] = spec.analysis.filterSeconds * 1000.0;
     if (!spec.outputProgram.empty()) {
         json["output_program"] = relative(spec.outputProgram);

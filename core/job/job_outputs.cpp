@@ -138,14 +138,7 @@ nlohmann::json clearanceLayersJson(const cad::ClearanceReport& report, std::span
 
 nlohmann::json clearanceSideJson(const cad::ClearanceReport& report, const std::string& file,
                                  std::span<const int> lines) {
-    cad::RecordClearance minimum{std::numeric_limits<double>::infinity(),
-                                 std::numeric_limits<double>::infinity(),
-                                 std::numeric_limits<double>::infinity()};
-    for (const cad::RecordClearance& record : report.records) {
-        minimum.ball = std::min(minimum.ball, record.ball);
-        minimum.shank = std::min(minimum.shank, record.shank);
-        minimum.holder = std::min(minimum.holder, record.holder);
-    }
+    const cad::RecordClearance minimum = cad::minimumOf(report.records);
     nlohmann::json json{{"min_ball_mm", minimum.ball},
                         {"min_shank_mm", minimum.shank},
                         {"min_holder_mm", minimum.holder},
@@ -439,18 +432,12 @@ std::string rescheduledSummary(const JobResult& result) {
 // (input 0 issues, output 0)": the written program's minima, or the input's without one.
 std::string clearanceSummary(const CadCheckResult& check) {
     const cad::ClearanceReport& shown = check.rescheduled ? *check.rescheduled : check.original;
-    double ball = std::numeric_limits<double>::infinity();
-    double shank = ball;
-    double holder = ball;
-    for (const cad::RecordClearance& record : shown.records) {
-        ball = std::min(ball, record.ball);
-        shank = std::min(shank, record.shank);
-        holder = std::min(holder, record.holder);
-    }
-    std::string text = "clearance    ball >= " + formatFixed(ball, 3) +
-                       ", shank >= " + formatFixed(shank, 3) +
-                       ", holder >= " + formatFixed(holder, 3) + " mm against " + check.source +
-                       " (input " + std::to_string(check.original.issues.size()) + " issues";
+    const cad::RecordClearance minimum = cad::minimumOf(shown.records);
+    std::string text = "clearance    ball >= " + formatFixed(minimum.ball, 3) +
+                       ", shank >= " + formatFixed(minimum.shank, 3) +
+                       ", holder >= " + formatFixed(minimum.holder, 3) + " mm against " +
+                       check.source + " (input " + std::to_string(check.original.issues.size()) +
+                       " issues";
     if (check.rescheduled) {
         text += ", output " + std::to_string(check.rescheduled->issues.size());
     }

@@ -22,15 +22,11 @@ std::span<const ClRecord> passOf(const RescheduleInput& input) {
     return std::span(input.program->path().records).subspan(input.passFirst, input.passCount);
 }
 
-Vec3 centreOf(const ClRecord& record, double radius) {
-    return record.tip + radius * record.axis.normalized();
-}
-
 scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
     scheduling::ScheduleInput schedule;
     schedule.toolRadius = input.toolRadius;
     for (const ClRecord& record : passOf(input)) {
-        schedule.centres.push_back(centreOf(record, input.toolRadius));
+        schedule.centres.push_back(toolpath::ballCentre(record, input.toolRadius));
         schedule.axes.push_back(record.axis);
     }
     return schedule;
@@ -94,9 +90,10 @@ Result<double> verifyCentres(const RescheduleInput& input, const std::string& te
     }
     double deviation = 0.0;
     for (std::size_t i = input.passFirst; i < input.passFirst + input.passCount; ++i) {
-        deviation = std::max(deviation, (centreOf(records[i], input.toolRadius) -
-                                         centreOf(original.records[i], input.toolRadius))
-                                            .norm());
+        deviation =
+            std::max(deviation, (toolpath::ballCentre(records[i], input.toolRadius) -
+                                 toolpath::ballCentre(original.records[i], input.toolRadius))
+                                    .norm());
     }
     return deviation;
 }

@@ -232,36 +232,6 @@ LayerBounds boundsOf(const scheduling::LayerResult& layer, bool firstLayer, bool
     return b;
 }
 
-std::vector<double> secondDifferences(std::span<const double> s, std::span<const double> theta) {
-    const std::size_t n = std::min(s.size(), theta.size());
-    std::vector<double> d2(n, 0.0);
-    for (std::size_t i = 1; i + 1 < n; ++i) {
-        const double before = s[i] - s[i - 1], after = s[i + 1] - s[i];
-        if (before > 0.0 && after > 0.0) {
-            d2[i] = 2.0 * ((theta[i + 1] - theta[i]) / after - (theta[i] - theta[i - 1]) / before) /
-                    (before + after);
-        }
-    }
-    return d2;
-}
-
-double peakSecondDifference(std::span<const double> s, std::span<const double> theta) {
-    double peak = 0.0;
-    for (double value : secondDifferences(s, theta)) {
-        peak = std::max(peak, std::abs(value));
-    }
-    return peak;
-}
-
-double secondDifferenceEnergy(std::span<const double> s, std::span<const double> theta) {
-    const auto d2 = secondDifferences(s, theta);
-    double energy = 0.0;
-    for (std::size_t i = 1; i + 1 < d2.size(); ++i) {
-        energy += 0.5 * (s[i + 1] - s[i - 1]) * d2[i] * d2[i];
-    }
-    return energy;
-}
-
 double peakSecondDifference(const LayerBounds& bounds, std::span<const double> theta) {
     double peak = 0.0;
     if (bounds.s.size() >= 3 && theta.size() == bounds.s.size()) {
@@ -281,6 +251,19 @@ double secondDifferenceEnergy(const LayerBounds& bounds, std::span<const double>
         }
     }
     return energy;
+}
+
+// Without mirrored ends, the rows are the interior D2_i: the same objectives of any schedule.
+double peakSecondDifference(std::span<const double> s, std::span<const double> theta) {
+    LayerBounds samples;
+    samples.s.assign(s.begin(), s.end());
+    return peakSecondDifference(samples, theta);
+}
+
+double secondDifferenceEnergy(std::span<const double> s, std::span<const double> theta) {
+    LayerBounds samples;
+    samples.s.assign(s.begin(), s.end());
+    return secondDifferenceEnergy(samples, theta);
 }
 
 Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds, const AdmmSettings& settings) {

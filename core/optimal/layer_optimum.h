@@ -56,8 +56,8 @@ struct PathOptimum {
 };
 Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Objective objective);
 
-// D2_i of spec §9.1 at the interior samples (ends 0), and the two objectives of any schedule.
-std::vector<double> secondDifferences(std::span<const double> s, std::span<const double> theta);
+// The two objectives of spec §9.1 (peak |D2_i| and sum w_i D2_i^2 over the interior samples)
+// of any schedule.
 double peakSecondDifference(std::span<const double> s, std::span<const double> theta);
 double secondDifferenceEnergy(std::span<const double> s, std::span<const double> theta);
 

@@ -27,6 +27,11 @@ struct ClRecord {
     int line = 0; // 1-based line of the source file that programs this record
 };
 
+// Q = O + R V: the ball centre of a record for ball radius R, the point every method keeps.
+inline Vec3 ballCentre(const ClRecord& record, double radius) {
+    return record.tip + radius * record.axis.normalized();
+}
+
 struct Toolpath {
     std::string sourceFile; // for diagnostics ("blade.nc:120")
     SourceFormat format = SourceFormat::Gcode;

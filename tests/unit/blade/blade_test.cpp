@@ -96,14 +96,19 @@ TEST(Blade, RejectsLeanBeyondTwoMillimetres) {
     EXPECT_NE(blade.error().message.find("lean (mm) = 3"), std::string::npos);
 }
 
-TEST(Blade, TableSectionsInterpolateBetweenStations) {
+// A point table of two square stations, 10 mm at x = 0 growing to 20 mm at x = 10.
+BladeSpec squareTableSpec() {
     SectionTable table;
     table.stations.push_back({0.0, {Vec2(0, 0), Vec2(10, 0), Vec2(10, 10), Vec2(0, 10)}, 0});
     table.stations.push_back({10.0, {Vec2(0, 0), Vec2(20, 0), Vec2(20, 20), Vec2(0, 20)}, 0});
     BladeSpec spec;
     spec.profile = table;
     spec.pointsPerSide = 50;
-    const Result<Blade> blade = Blade::create(spec);
+    return spec;
+}
+
+TEST(Blade, TableSectionsInterpolateBetweenStations) {
+    const Result<Blade> blade = Blade::create(squareTableSpec());
     ASSERT_TRUE(blade.has_value());
     EXPECT_DOUBLE_EQ(blade->spanStart(), 0.0);
     EXPECT_DOUBLE_EQ(blade->spanEnd(), 10.0);
@@ -135,13 +140,7 @@ TEST(Blade, SectionVelocityIsTheSpanWiseDerivativeOfTheSections) {
 }
 
 TEST(Blade, TableSectionVelocityIsConstantBetweenStations) {
-    SectionTable table;
-    table.stations.push_back({0.0, {Vec2(0, 0), Vec2(10, 0), Vec2(10, 10), Vec2(0, 10)}, 0});
-    table.stations.push_back({10.0, {Vec2(0, 0), Vec2(20, 0), Vec2(20, 20), Vec2(0, 20)}, 0});
-    BladeSpec spec;
-    spec.profile = table;
-    spec.pointsPerSide = 50;
-    const Result<Blade> blade = Blade::create(spec);
+    const Result<Blade> blade = Blade::create(squareTableSpec());
     ASSERT_TRUE(blade.has_value());
     const Curve2 first = blade->sectionAt(0.0);
     const Curve2 last = blade->sectionAt(10.0);

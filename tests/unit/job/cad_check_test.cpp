@@ -7,6 +7,7 @@
 #include "core/cad/cad_files.h"
 #include "core/job/cad_check.h"
 #include "core/job/job.h"
+#include "tests/unit/job/demo_job.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -90,13 +91,8 @@ TEST(CadCheck, CleanOutputIsWritten) {
 }
 
 TEST(CadCheck, DemoJobChecksItsOwnBladeAndWritesItAsStep) {
-    JobSpec spec;
-    spec.demo = true;
-    spec.outputDir = fs::temp_directory_path() / "bladeaxis_cad_check_job";
-    fs::remove_all(spec.outputDir);
-    NullProgressSink progress;
-    CancelToken cancel;
-    auto result = runJob(spec, progress, cancel);
+    JobSpec spec = test::demoJob("bladeaxis_cad_check_job");
+    auto result = test::runQuietly(spec);
     ASSERT_TRUE(result.has_value()) << result.error().toString();
     ASSERT_TRUE(result->cadCheck);
     ASSERT_TRUE(result->cadCheck->rescheduled);
@@ -123,9 +119,7 @@ TEST(CadCheck, UnreadableCadFileIsAnInputError) {
     JobSpec spec;
     spec.demo = true;
     spec.cad.file = fs::path(BLADEAXIS_TEST_DATA_DIR) / "cad/bad/truncated.step";
-    NullProgressSink progress;
-    CancelToken cancel;
-    auto result = runJob(spec, progress, cancel);
+    auto result = test::runQuietly(spec);
     ASSERT_FALSE(result.has_value());
     EXPECT_NE(result.error().toString().find("truncated.step"), std::string::npos);
 }
@@ -167,9 +161,7 @@ TEST(CadCheck, CadFarFromTheToolpathIsAGeometryErrorNamingTheFile) {
     spec.demo = true;
     spec.cad.file = fs::path(BLADEAXIS_TEST_DATA_DIR) / "cad/box_solid_inch.step";
     spec.cad.placement.translation = Vec3(1000.0, 0.0, 0.0);
-    NullProgressSink progress;
-    CancelToken cancel;
-    auto result = runJob(spec, progress, cancel);
+    auto result = test::runQuietly(spec);
     ASSERT_FALSE(result.has_value());
     EXPECT_EQ(result.error().code, ErrorCode::Geometry);
     const std::string text = result.error().toString();
@@ -181,39 +173,29 @@ TEST(CadCheck, CadFarFromTheToolpathIsAGeometryErrorNamingTheFile) {
 
 // The demo blade shifted along the rotary axis leaves part of the program without blade.
 TEST(CadCheck, CadNotSpanningTheProgramIsAGeometryError) {
-    JobSpec demo;
-    demo.demo = true;
-    demo.outputDir = fs::temp_directory_path() / "bladeaxis_cad_check_span";
-    fs::remove_all(demo.outputDir);
-    NullProgressSink progress;
-    CancelToken cancel;
-    auto written = runJob(demo, progress, cancel);
+    JobSpec demo = test::demoJob("bladeaxis_cad_check_span");
+    auto written = test::runQuietly(demo);
     ASSERT_TRUE(written.has_value()) << written.error().toString();
     ASSERT_TRUE(writeJobOutputs(demo, *written));
     JobSpec spec;
     spec.demo = true;
     spec.cad.file = demo.outputDir / "demo_blade.step";
     spec.cad.placement.translation = Vec3(12.0, 0.0, 0.0);
-    auto result = runJob(spec, progress, cancel);
+    auto result = test::runQuietly(spec);
     ASSERT_FALSE(result.has_value());
     EXPECT_EQ(result.error().code, ErrorCode::Geometry);
     EXPECT_NE(result.error().toString().find("found the CAD at x 12.0 .. 32.0,"), std::string::npos)
         << result.error().toString();
     spec.cad.placement.translation = Vec3::Zero(); // in place it fits
-    EXPECT_TRUE(runJob(spec, progress, cancel).has_value());
+    EXPECT_TRUE(test::runQuietly(spec).has_value());
     fs::remove_all(demo.outputDir);
 }
 
 // The clearance per layer reaches report.json (each layer's minima over its CL points), each
 // CL point's clearance layers.csv, and a one-line summary the batch output.
 TEST(CadCheck, DemoOutputsCarryTheClearancePerLayerAndPerPoint) {
-    JobSpec spec;
-    spec.demo = true;
-    spec.outputDir = fs::temp_directory_path() / "bladeaxis_cad_check_layers";
-    fs::remove_all(spec.outputDir);
-    NullProgressSink progress;
-    CancelToken cancel;
-    auto result = runJob(spec, progress, cancel);
+    JobSpec spec = test::demoJob("bladeaxis_cad_check_layers");
+    auto result = test::runQuietly(spec);
     ASSERT_TRUE(result.has_value()) << result.error().toString();
     ASSERT_TRUE(writeJobOutputs(spec, *result));
     const cad::ClearanceReport& after = *result->cadCheck->rescheduled;

@@ -5,6 +5,7 @@
 #include "core/job/job.h"
 #include "core/report/compare_report.h"
 #include "core/report/markup.h"
+#include "tests/unit/job/demo_job.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -26,14 +27,8 @@ std::size_t count(const std::string& text, const std::string& what) {
 }
 
 TEST(CompareJob, DemoComparisonWritesJsonCsvAndHtml) {
-    JobSpec spec;
-    spec.demo = true;
-    spec.compare = true;
-    spec.outputDir = fs::temp_directory_path() / "bladeaxis_compare_job";
-    fs::remove_all(spec.outputDir);
-    NullProgressSink progress;
-    CancelToken cancel;
-    auto result = runJob(spec, progress, cancel);
+    JobSpec spec = test::demoJob("bladeaxis_compare_job", true);
+    auto result = test::runQuietly(spec);
     ASSERT_TRUE(result.has_value()) << result.error().toString();
     ASSERT_TRUE(result->comparison);
     ASSERT_TRUE(writeJobOutputs(spec, *result));
@@ -81,14 +76,8 @@ TEST(CompareJob, DemoComparisonWritesJsonCsvAndHtml) {
 // Issue 4: a figure the comparison could not compute is named with its reason in every output,
 // not left out silently.
 TEST(CompareJob, MissingFiguresAreReportedEverywhere) {
-    JobSpec spec;
-    spec.demo = true;
-    spec.compare = true;
-    spec.outputDir = fs::temp_directory_path() / "bladeaxis_compare_job_missing";
-    fs::remove_all(spec.outputDir);
-    NullProgressSink progress;
-    CancelToken cancel;
-    auto result = runJob(spec, progress, cancel);
+    JobSpec spec = test::demoJob("bladeaxis_compare_job_missing", true);
+    auto result = test::runQuietly(spec);
     ASSERT_TRUE(result.has_value()) << result.error().toString();
     auto& comparison = *result->comparison;
     comparison.optimumFailures = {"optimal-lp: layer 2: no convergence"};
@@ -111,9 +100,7 @@ TEST(CompareJob, TheEnginesRowMatchesTheRescheduledProgram) {
     JobSpec spec;
     spec.demo = true;
     spec.compare = true;
-    NullProgressSink progress;
-    CancelToken cancel;
-    auto result = runJob(spec, progress, cancel);
+    auto result = test::runQuietly(spec);
     ASSERT_TRUE(result.has_value()) << result.error().toString();
     const compare::MethodResult* best = result->comparison->find("stheta-best");
     ASSERT_NE(best, nullptr);

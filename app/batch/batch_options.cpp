@@ -23,9 +23,10 @@ Exit codes:
   2  bad command line
   3  input program missing, unreadable or malformed (the message names file:line:column)
   4  machine file missing or invalid
-  5  geometry the method cannot handle (NaN, unreachable pose, infeasible channel,
+  5  geometry the method cannot handle (NaN, unreachable pose, degenerate path,
      blade CAD that does not fit the program) or a failed output check (re-read
-     verification, gouge or collision without --force)
+     verification, channel, modulo A step, gouge or collision without --force); a
+     layer without a monotone path keeps its original orientation with a warning
   6  an output could not be written (inputs are never overwritten)
   7  cancelled)";
 

@@ -53,6 +53,7 @@ Result<std::optional<double>> readNumber(const NumberOption& option) {
 struct RawOptions {
     std::string program, machine, out, generate, feedReference = "tip", derivatives = "spline";
     std::string profile = "naca-high-camber", format = "gcode";
+    std::string angleUnit, columns;
     NumberOption toolRadius{"", "--tool-radius", true};
     NumberOption feed{"", "--feed", true};
     NumberOption revolutions{"", "--revolutions", true};
@@ -151,6 +152,12 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
                    "Machine file (JSON); default: built-in blade machine");
     cli.add_option("--tool-radius", raw.toolRadius.text,
                    "Ball radius R in mm (overrides the file)");
+    cli.add_option("--angle-unit", raw.angleUnit,
+                   "Unit of the A/B words of a G-code program: deg or rad (needed when the file "
+                   "could be either; written programs keep it)")
+        ->check(CLI::IsMember({"deg", "rad"}));
+    cli.add_option("--columns", raw.columns,
+                   "Columns of a point table without a header line, e.g. x,y,z,i,j,k");
     cli.add_option("--out", raw.out, "Output folder for report.json, axes.csv and layers.csv");
     cli.add_option("--feed", raw.feed.text, "Evaluate at this constant feed, mm/min");
     cli.add_option("--feed-reference", raw.feedReference, "Path parameter: tip or centre")
@@ -251,6 +258,8 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     }
     if (*feed) {
         options.job.analysis.feedOverride = units::perMinuteToPerSecond(**feed);
+        // CL data without FEDRAT (bare GOTO lists, point tables) is fed at the same feed.
+        options.job.read.feedMmPerS = units::perMinuteToPerSecond(**feed);
     }
     auto& tool = options.job.cad.tool;
     tool.stickOut = stickOut->value_or(tool.stickOut);
@@ -342,6 +351,13 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
     // CLI11 has checked the name against the same list.
     options.job.analysis.method = analysis::derivativeMethodNamed(raw.derivatives)
                                       .value_or(analysis::DerivativeMethod::Spline);
+    if (!raw.angleUnit.empty()) { // CLI11 has checked it is deg or rad
+        options.job.read.angleUnit =
+            raw.angleUnit == "rad" ? io::AngleUnit::Radians : io::AngleUnit::Degrees;
+    }
+    if (!raw.columns.empty()) {
+        options.job.read.tableColumns = raw.columns;
+    }
     options.printJson = raw.json;
     options.quiet = raw.quiet;
     options.generate.profile = raw.profile;

@@ -8,6 +8,10 @@
 
 namespace bladeaxis::io {
 
+const char* toString(AngleUnit unit) {
+    return unit == AngleUnit::Degrees ? "deg" : "rad";
+}
+
 const char* toString(ProgramFormat format) {
     return format == ProgramFormat::Gcode ? "gcode" : "apt";
 }
@@ -70,28 +74,30 @@ ProgramFormat LoadedProgram::format() const {
 }
 
 Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,
-                                   ProgramFormat format, const kinematics::MachineModel& machine) {
+                                   ProgramFormat format, const kinematics::MachineModel& machine,
+                                   const ReadOptions& options) {
     if (format == ProgramFormat::Gcode) {
         auto program = nc::parseGcode(text, fileName, machine);
         if (!program) {
             return std::unexpected(program.error());
         }
-        return LoadedProgram{std::move(*program)};
+        return LoadedProgram{std::move(*program), options};
     }
     auto program = cl::parseApt(text, fileName);
     if (!program) {
         return std::unexpected(program.error());
     }
-    return LoadedProgram{std::move(*program)};
+    return LoadedProgram{std::move(*program), options};
 }
 
 Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
-                                  const kinematics::MachineModel& machine) {
+                                  const kinematics::MachineModel& machine,
+                                  const ReadOptions& options) {
     auto text = readTextFile(path);
     if (!text) {
         return std::unexpected(text.error());
     }
-    return parseProgram(*text, path.string(), probeFormat(path, *text), machine);
+    return parseProgram(*text, path.string(), probeFormat(path, *text), machine, options);
 }
 
 } // namespace bladeaxis::io

@@ -5,6 +5,7 @@
 #include "core/base/error.h"
 #include "core/io/cl/apt_reader.h"
 #include "core/io/nc/gcode_reader.h"
+#include "core/io/read_options.h"
 
 #include <filesystem>
 #include <variant>
@@ -22,6 +23,9 @@ ProgramFormat probeFormat(const std::filesystem::path& path, std::string_view te
 
 struct LoadedProgram {
     std::variant<nc::GcodeProgram, cl::AptProgram> document;
+    // The options the program was read with, as resolved by the reader (a detected angle unit
+    // is recorded here): the written program is read back with the same ones.
+    ReadOptions options;
 
     const toolpath::Toolpath& path() const;
     const std::string& text() const; // the program as read, byte for byte
@@ -30,10 +34,12 @@ struct LoadedProgram {
 
 // Reads and parses a program. G-code needs the machine (its axes are turned into CL by FK).
 Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
-                                  const kinematics::MachineModel& machine);
+                                  const kinematics::MachineModel& machine,
+                                  const ReadOptions& options = {});
 
 // Parses text already in memory (the demo program is generated, never read from disk).
 Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,
-                                   ProgramFormat format, const kinematics::MachineModel& machine);
+                                   ProgramFormat format, const kinematics::MachineModel& machine,
+                                   const ReadOptions& options = {});
 
 } // namespace bladeaxis::io

@@ -105,7 +105,7 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
         return std::unexpected(content.error());
     }
     return io::parseProgram(*content, spec.program.string(),
-                            io::probeFormat(spec.program, *content), machine);
+                            io::probeFormat(spec.program, *content), machine, spec.read);
 }
 
 Status checkCancelled(const CancelToken& cancel) {

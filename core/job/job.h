@@ -26,6 +26,7 @@ struct JobSpec {
     bool demo = false;                 // run on the built-in demo blade program instead
     std::filesystem::path machineFile; // empty: the built-in default blade machine
     std::optional<double> toolRadius;  // mm; overrides the radius stated in a CL file
+    io::ReadOptions read;              // angle unit, feed and table columns the file may not state
     analysis::AxisProfileOptions analysis;
     bool reschedule = true;     // false: analyse the input only (`--analyse-only`)
     bool compare = false;       // also run and evaluate every comparison method (`--compare`)

@@ -75,7 +75,7 @@ Result<std::string> rewriteProgram(const RescheduleInput& input,
 Result<double> verifyCentres(const RescheduleInput& input, const std::string& text) {
     const toolpath::Toolpath& original = input.program->path();
     auto reread = io::parseProgram(text, original.sourceFile + " (re-scheduled)",
-                                   input.program->format(), *input.machine);
+                                   input.program->format(), *input.machine, input.program->options);
     if (!reread) {
         Error error = reread.error();
         error.code = ErrorCode::Internal;

@@ -56,6 +56,8 @@ struct RawOptions {
     std::string angleUnit, columns;
     NumberOption toolRadius{"", "--tool-radius", true};
     NumberOption feed{"", "--feed", true};
+    NumberOption bTolerance{"", "--b-tolerance-deg", true};
+    NumberOption channelTolerance{"", "--channel-tolerance-deg", true};
     NumberOption revolutions{"", "--revolutions", true};
     NumberOption pitch{"", "--pitch", true};
     NumberOption lead{"", "--lead-deg", false};
@@ -158,6 +160,12 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
         ->check(CLI::IsMember({"deg", "rad"}));
     cli.add_option("--columns", raw.columns,
                    "Columns of a point table without a header line, e.g. x,y,z,i,j,k");
+    cli.add_option("--b-tolerance-deg", raw.bTolerance.text,
+                   "Largest deviation of B from its median that still counts as a four-axis "
+                   "pass; B is then snapped to the median (default 0.01)");
+    cli.add_option("--channel-tolerance-deg", raw.channelTolerance.text,
+                   "Largest distance of the CAM orientation outside the feasible channel "
+                   "(default 30)");
     cli.add_option("--out", raw.out, "Output folder for report.json, axes.csv and layers.csv");
     cli.add_option("--feed", raw.feed.text, "Evaluate at this constant feed, mm/min");
     cli.add_option("--feed-reference", raw.feedReference, "Path parameter: tip or centre")
@@ -247,8 +255,11 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
     auto lead = readNumber(raw.lead);
     auto tilt = readNumber(raw.tilt);
     auto tolerance = readNumber(raw.tolerance);
-    for (const auto* value : {&toolRadius, &feed, &revolutions, &pitch, &lead, &tilt, &tolerance,
-                              &filterMs, &stickOut, &holderRadius, &holderLength}) {
+    auto bTolerance = readNumber(raw.bTolerance);
+    auto channelTolerance = readNumber(raw.channelTolerance);
+    for (const auto* value :
+         {&toolRadius, &feed, &revolutions, &pitch, &lead, &tilt, &tolerance, &filterMs, &stickOut,
+          &holderRadius, &holderLength, &bTolerance, &channelTolerance}) {
         if (!value->has_value()) {
             return std::unexpected(value->error());
         }
@@ -260,6 +271,12 @@ Status applyNumbers(const RawOptions& raw, BatchOptions& options) {
         options.job.analysis.feedOverride = units::perMinuteToPerSecond(**feed);
         // CL data without FEDRAT (bare GOTO lists, point tables) is fed at the same feed.
         options.job.read.feedMmPerS = units::perMinuteToPerSecond(**feed);
+    }
+    if (*bTolerance) {
+        options.job.check.tiltToleranceRad = units::degToRad(**bTolerance);
+    }
+    if (*channelTolerance) {
+        options.job.check.channelToleranceRad = units::degToRad(**channelTolerance);
     }
     auto& tool = options.job.cad.tool;
     tool.stickOut = stickOut->value_or(tool.stickOut);
@@ -317,7 +334,34 @@ Status applyCad(const RawOptions& raw, BatchOptions& options) {
     return {};
 }
 
+// CLI11 takes the word after an option as its value even when that word is another option
+// ("--generate --out DIR" would write a file named "--out"): a file name never starts with '-'
+// here ("-" alone is standard input or output).
+Status checkFileValues(const RawOptions& raw) {
+    const std::pair<const char*, const std::string*> values[] = {
+        {"--generate", &raw.generate},
+        {"--out", &raw.out},
+        {"--machine", &raw.machine},
+        {"--output", &raw.outputProgram},
+        {"--cl-output", &raw.outputCl},
+        {"--job", &raw.jobFile},
+        {"--cad", &raw.cad},
+        {"--columns", &raw.columns},
+    };
+    for (const auto& [name, value] : values) {
+        if (value->size() > 1 && value->front() == '-') {
+            return makeError(ErrorCode::InvalidArgument,
+                             std::string(name) + ": expected a value, got the option '" + *value +
+                                 "' (give the value right after " + name + ")");
+        }
+    }
+    return {};
+}
+
 Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
+    if (auto status = checkFileValues(raw); !status) {
+        return std::unexpected(status.error());
+    }
     BatchOptions options;
     options.helpText = std::move(helpText);
     if (raw.version) {

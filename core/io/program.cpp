@@ -63,6 +63,10 @@ const toolpath::Toolpath& LoadedProgram::path() const {
                       document);
 }
 
+toolpath::Toolpath& LoadedProgram::mutablePath() {
+    return std::visit([](auto& program) -> toolpath::Toolpath& { return program.path; }, document);
+}
+
 const std::string& LoadedProgram::text() const {
     return std::visit([](const auto& program) -> const std::string& { return program.text; },
                       document);

@@ -28,6 +28,8 @@ struct LoadedProgram {
     ReadOptions options;
 
     const toolpath::Toolpath& path() const;
+    // For the checks that normalise the input before scheduling (B noise snapped to its median).
+    toolpath::Toolpath& mutablePath();
     const std::string& text() const; // the program as read, byte for byte
     ProgramFormat format() const;
 };

@@ -4,6 +4,7 @@
 #include "core/analysis/time_optimal.h"
 #include "core/analysis/time_optimal_sweep.h"
 #include "core/base/file_io.h"
+#include "core/base/number_io.h"
 #include "core/blade/presets.h"
 #include "core/cad/blade_surface.h"
 #include "core/geometry/angles.h"
@@ -157,6 +158,29 @@ Result<cad::CadShape> bladeShape(const JobSpec& spec) {
     return cad::makeBladeSurface(*blade);
 }
 
+// Why the file gave no radius, in the words of its format.
+std::string radiusSourceHint(io::ProgramFormat format) {
+    return format == io::ProgramFormat::Gcode
+               ? "G-code does not state it, unless its post writes it in a header comment"
+               : "the CL data has no CUTTER or TLDATA statement";
+}
+
+// The radius the job uses: the command line's (or job file's) over the file's, with a warning
+// when they differ, since the channel and every ball centre depend on it.
+std::optional<double> jobToolRadius(const JobSpec& spec, std::optional<double> generated,
+                                    const toolpath::Toolpath& path,
+                                    std::vector<std::string>& warnings) {
+    if (spec.toolRadius && path.toolRadius &&
+        std::abs(*spec.toolRadius - *path.toolRadius) > 1e-9 * std::max(1.0, *path.toolRadius)) {
+        warnings.push_back(path.sourceFile + ": the ball radius " +
+                           formatShortest(*spec.toolRadius) + " mm given replaces the file's " +
+                           formatShortest(*path.toolRadius) +
+                           " mm (CUTTER/TLDATA): every ball centre is computed with " +
+                           formatShortest(*spec.toolRadius) + " mm");
+    }
+    return spec.toolRadius ? spec.toolRadius : generated ? generated : path.toolRadius;
+}
+
 bool checksCad(const JobSpec& spec) {
     return !spec.cad.file.empty() || spec.demo;
 }
@@ -232,9 +256,9 @@ Status cadCheckInto(JobResult& result, const JobSpec& spec, const CadCheckSpec& 
 
 Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
-        return makeError(
-            ErrorCode::InvalidArgument,
-            "the ball radius is not known: give --tool-radius (G-code does not state it)");
+        return makeError(ErrorCode::InvalidArgument,
+                         "the ball radius is not known: give --tool-radius (" +
+                             radiusSourceHint(result.program.format()) + ")");
     }
     compare::EvaluationContext context;
     context.pass =
@@ -267,7 +291,44 @@ Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& ca
     return {};
 }
 
+std::span<ClRecord> mutablePass(JobResult& result) {
+    return std::span(result.program.mutablePath().records)
+        .subspan(result.pass.first, result.pass.count);
+}
+
+// The four-axis condition on B before scheduling: a re-scheduling job refuses a varying tilt
+// (nothing would be right about the written program), an analysis only reports it. Noise within
+// the tolerance is snapped to the median after the original motion was analysed, so the
+// figures of the original describe the program as written.
+Status checkTilt(JobResult& result, const JobSpec& spec, ProgressSink& progress) {
+    const std::string& file = result.program.path().sourceFile;
+    auto tilt = checkConstantTilt(mutablePass(result), file, spec.check);
+    if (!tilt) {
+        if (spec.reschedule || spec.compare) {
+            return std::unexpected(tilt.error());
+        }
+        result.warnings.push_back(tilt.error().toString());
+        progress.warning(result.warnings.back());
+        return {};
+    }
+    if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
+        return {}; // the re-scheduling refuses an unknown radius with its own message
+    }
+    tilt->snappedRecords = snapTilt(mutablePass(result), tilt->medianRad, *result.toolRadius);
+    if (const std::string note = describeSnap(*tilt, file); !note.empty()) {
+        result.warnings.push_back(note);
+        progress.warning(note);
+    }
+    return {};
+}
+
 Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
+    if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "the ball radius is not known: give --tool-radius (" +
+                             radiusSourceHint(result.program.format()) + ")",
+                         {result.program.path().sourceFile});
+    }
     RescheduleInput input;
     input.program = &result.program;
     input.machine = &result.machine;
@@ -284,7 +345,10 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
         return std::unexpected(outcome.error());
     }
     result.rescheduled = std::move(*outcome);
-    return {};
+    const std::span<const ClRecord> pass =
+        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
+    return checkOrientationInChannel(result.rescheduled->schedule, pass,
+                                     result.program.path().sourceFile, spec.check);
 }
 
 } // namespace
@@ -324,10 +388,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .cadCheck = std::nullopt,
                      .warnings = {},
                      .seconds = 0.0};
-    result.toolRadius = spec.toolRadius   ? spec.toolRadius
-                        : generatedRadius ? generatedRadius
-                                          : result.program.path().toolRadius;
     result.warnings = result.program.path().warnings;
+    result.toolRadius =
+        jobToolRadius(spec, generatedRadius, result.program.path(), result.warnings);
     for (const std::string& warning : result.warnings) {
         progress.warning(warning);
     }
@@ -347,6 +410,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
         originalReady(result);
     }
     if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
+    if (auto status = checkTilt(result, spec, progress); !status) {
         return std::unexpected(status.error());
     }
     if (spec.reschedule) {

@@ -8,6 +8,7 @@
 #include "core/compare/compare.h"
 #include "core/io/program.h"
 #include "core/job/cad_check.h"
+#include "core/job/program_check.h"
 #include "core/job/reschedule.h"
 #include "core/kinematics/machine_model.h"
 #include "core/report/schedule_report.h"
@@ -27,6 +28,8 @@ struct JobSpec {
     std::filesystem::path machineFile; // empty: the built-in default blade machine
     std::optional<double> toolRadius;  // mm; overrides the radius stated in a CL file
     io::ReadOptions read;              // angle unit, feed and table columns the file may not state
+    // When a program counts as a four-axis blade pass (B tolerance, distance to the channel).
+    ProgramCheckOptions check;
     analysis::AxisProfileOptions analysis;
     bool reschedule = true;     // false: analyse the input only (`--analyse-only`)
     bool compare = false;       // also run and evaluate every comparison method (`--compare`)

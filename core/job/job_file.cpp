@@ -45,6 +45,7 @@ class JobReader {
     Result<Vec3> triple(const Json& root, const char* key, const std::string& expected) const;
     Status parameters(const Json& object, JobSpec& spec) const;
     Status analysisOptions(const Json& root, JobSpec& spec) const;
+    Status programReading(const Json& root, JobSpec& spec) const;
     Status layerEdits(const Json& list, JobSpec& spec) const;
     Result<scheduling::LayerOverride> layerEdit(const Json& object) const;
     Result<std::vector<Vec2>> keyPoints(const Json& list) const;
@@ -106,6 +107,36 @@ Status JobReader::parameters(const Json& object, JobSpec& spec) const {
     return {};
 }
 
+// How the program is read and when it counts as a four-axis blade pass.
+Status JobReader::programReading(const Json& root, JobSpec& spec) const {
+    if (root.contains("angle_unit")) {
+        const Json& value = root.at("angle_unit");
+        const std::string unit = value.is_string() ? value.get<std::string>() : "";
+        if (unit != "deg" && unit != "rad") {
+            return fail("angle_unit", "expected \"deg\" or \"rad\"");
+        }
+        spec.read.angleUnit = unit == "deg" ? io::AngleUnit::Degrees : io::AngleUnit::Radians;
+    }
+    if (root.contains("columns")) {
+        if (!root.at("columns").is_string()) {
+            return fail("columns", "expected the column names, e.g. \"x,y,z,i,j,k\"");
+        }
+        spec.read.tableColumns = root.at("columns").get<std::string>();
+    }
+    for (const auto& [key, target] :
+         {std::pair{"b_tolerance_deg", &spec.check.tiltToleranceRad},
+          std::pair{"channel_tolerance_deg", &spec.check.channelToleranceRad}}) {
+        if (root.contains(key)) {
+            auto value = positiveNumber(root, key);
+            if (!value) {
+                return std::unexpected(value.error());
+            }
+            *target = units::degToRad(*value);
+        }
+    }
+    return {};
+}
+
 Status JobReader::analysisOptions(const Json& root, JobSpec& spec) const {
     if (root.contains("feed_reference")) {
         const std::string value = root.at("feed_reference").is_string()
@@ -123,6 +154,10 @@ Status JobReader::analysisOptions(const Json& root, JobSpec& spec) const {
             return std::unexpected(feed.error());
         }
         spec.analysis.feedOverride = units::perMinuteToPerSecond(*feed);
+        spec.read.feedMmPerS = spec.analysis.feedOverride; // for CL data that programs none
+    }
+    if (auto status = programReading(root, spec); !status) {
+        return status;
     }
     if (root.contains("derivatives")) {
         const Json& value = root.at("derivatives");
@@ -400,6 +435,14 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
     if (spec.analysis.feedOverride > 0.0) {
         json["feed_mm_min"] = units::perSecondToPerMinute(spec.analysis.feedOverride);
     }
+    if (spec.read.angleUnit) {
+        json["angle_unit"] = io::toString(*spec.read.angleUnit);
+    }
+    if (spec.read.tableColumns) {
+        json["columns"] = *spec.read.tableColumns;
+    }
+    json["b_tolerance_deg"] = units::radToDeg(spec.check.tiltToleranceRad);
+    json["channel_tolerance_deg"] = units::radToDeg(spec.check.channelToleranceRad);
     json["derivatives"] = analysis::nameOf(spec.analysis.method);
     json["filter_ms"] = spec.analysis.filterSeconds * 1000.0;
     if (!spec.outputProgram.empty()) {

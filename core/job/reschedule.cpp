@@ -142,15 +142,17 @@ class StageClock {
 
 Status checkOutcome(const RescheduleOutcome& outcome, const std::string& file) {
     if (!outcome.schedule.check.passes()) {
-        return makeError(ErrorCode::CheckFailed,
-                         "reconstruction check failed (ball centre error " +
-                             formatShortest(outcome.schedule.check.maxCentreErrorMm) + " mm)",
-                         {file});
+        return makeError(
+            ErrorCode::CheckFailed,
+            "reconstruction check failed: " + scheduling::describeFailures(outcome.schedule.check) +
+                "; nothing was written (please report this program)",
+            {file});
     }
     if (outcome.minChannelClearanceRad < -1e-9) {
         return makeError(ErrorCode::CheckFailed,
                          "the new tool orientation leaves the feasible channel by " +
-                             formatShortest(-outcome.minChannelClearanceRad) + " rad",
+                             formatFixed(units::radToDeg(-outcome.minChannelClearanceRad), 4) +
+                             " deg",
                          {file});
     }
     if (outcome.maxCentreDeviationMm > kCentreDeviationLimitMm) {
@@ -189,9 +191,8 @@ Status checkModuloSteps(const RescheduleInput& input, const RescheduleOutcome& o
 
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel) {
     if (!(input.toolRadius > 0.0)) {
-        return makeError(
-            ErrorCode::InvalidArgument,
-            "the ball radius is not known: give --tool-radius (G-code does not state it)");
+        return makeError(ErrorCode::InvalidArgument,
+                         "the ball radius is not known: give --tool-radius");
     }
     StageClock clock;
     auto schedule =

@@ -1,6 +1,8 @@
 #include "core/scheduling/plane_path.h"
 
+#include "core/base/number_io.h"
 #include "core/base/tolerances.h"
+#include "core/base/units.h"
 #include "core/scheduling/detail/fast_angles.h"
 
 #include <algorithm>
@@ -76,8 +78,9 @@ double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std
                      axial.end());
     const double median = std::asin(axial[axial.size() / 2]);
     if (spread > tol::kConstantTiltRad) {
-        warn.push_back("input tilt B is not constant (spread " + std::to_string(spread) +
-                       " rad); the median " + std::to_string(median) + " rad is used");
+        warn.push_back("input tilt B is not constant (spread " +
+                       formatFixed(units::radToDeg(spread), 4) + " deg); the median " +
+                       formatFixed(units::radToDeg(median), 4) + " deg is used");
     }
     return median;
 }

@@ -1,5 +1,6 @@
 #include "core/scheduling/reconstruction.h"
 
+#include "core/base/number_io.h"
 #include "core/base/tolerances.h"
 
 #include <algorithm>
@@ -56,6 +57,24 @@ ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
     }
     check.reversals = countReversals(thetaAbs, tol::kReversalStepRad);
     return check;
+}
+
+std::string describeFailures(const ReconstructionCheck& check) {
+    std::string text;
+    const auto add = [&text](bool failed, const char* what, double value, double limit,
+                             const char* unit) {
+        if (failed) {
+            text += (text.empty() ? "" : ", ") + std::string(what) + " " + formatShortest(value) +
+                    " " + unit + " (limit " + formatShortest(limit) + " " + unit + ")";
+        }
+    };
+    add(!(check.maxCentreErrorMm < ReconstructionCheck::kCentreLimitMm), "ball centre error",
+        check.maxCentreErrorMm, ReconstructionCheck::kCentreLimitMm, "mm");
+    add(!(check.maxUnitError < ReconstructionCheck::kUnitLimit), "tool axis length error",
+        check.maxUnitError, ReconstructionCheck::kUnitLimit, "");
+    add(!(check.maxTiltError < ReconstructionCheck::kTiltLimit), "tilt B error", check.maxTiltError,
+        ReconstructionCheck::kTiltLimit, "rad");
+    return text;
 }
 
 } // namespace bladeaxis::scheduling

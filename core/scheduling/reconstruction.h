@@ -5,6 +5,7 @@
 #include "core/geometry/vec.h"
 
 #include <span>
+#include <string>
 #include <vector>
 
 namespace bladeaxis::scheduling {
@@ -27,10 +28,17 @@ struct ReconstructionCheck {
     // leaves a step there.
     double maxJunctionGapRad = 0.0;
 
+    static constexpr double kCentreLimitMm = 1e-9, kUnitLimit = 1e-12, kTiltLimit = 1e-12;
+
     bool passes() const {
-        return maxCentreErrorMm < 1e-9 && maxUnitError < 1e-12 && maxTiltError < 1e-12;
+        return maxCentreErrorMm < kCentreLimitMm && maxUnitError < kUnitLimit &&
+               maxTiltError < kTiltLimit;
     }
 };
+
+// Each criterion of the check that failed, with its value and limit ("tilt error 3.2e-08 rad
+// (limit 1e-12)"); empty when it passes.
+std::string describeFailures(const ReconstructionCheck& check);
 
 ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                                         const ReconstructedPath& path,

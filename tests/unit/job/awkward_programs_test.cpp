@@ -1,0 +1,179 @@
+// Awkward programs as real CAM systems and posts write them, each with its expected outcome: a
+// refusal that names its condition and line and writes nothing, or the clean program's result.
+
+#include "core/base/file_io.h"
+#include "core/base/units.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "awkward_programs.h"
+#include "demo_job.h"
+
+namespace bladeaxis::job::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+    const fs::path folder = fs::temp_directory_path() / "bladeaxis_awkward";
+    fs::create_directories(folder);
+    return folder / name;
+}
+
+fs::path writeProgram(const std::string& name, const std::string& text) {
+    const fs::path path = scratch(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+// A re-scheduling job of `program` writing `<name>.out` (removed first).
+JobSpec rescheduleJob(const fs::path& program) {
+    JobSpec spec;
+    spec.program = program;
+    spec.toolRadius = cleanPass().toolRadius;
+    spec.outputProgram = program.string() + ".out";
+    fs::remove(spec.outputProgram);
+    return spec;
+}
+
+// Runs the job and writes its outputs, as the batch front end does.
+Result<JobResult> runAndWrite(const JobSpec& spec) {
+    auto result = runQuietly(spec);
+    if (!result) {
+        return result;
+    }
+    if (auto written = writeJobOutputs(spec, *result); !written) {
+        return std::unexpected(written.error());
+    }
+    return result;
+}
+
+void expectRefused(const JobSpec& spec, ErrorCode code, const std::string& condition) {
+    const auto result = runAndWrite(spec);
+    ASSERT_FALSE(result.has_value()) << "expected a refusal: " << condition;
+    EXPECT_EQ(result.error().code, code) << result.error().toString();
+    EXPECT_NE(result.error().message.find(condition), std::string::npos)
+        << result.error().toString();
+    EXPECT_GT(result.error().where.line, 0) << "no line: " << result.error().toString();
+    EXPECT_FALSE(fs::exists(spec.outputProgram)) << "a refused program was written";
+}
+
+// The re-scheduled A of every cutting record, rad.
+std::vector<double> rescheduledA(const JobResult& result) {
+    std::vector<double> a;
+    for (const auto& axes : result.rescheduled->axes) {
+        a.push_back(axes.a);
+    }
+    return a;
+}
+
+void expectSameSchedule(const JobResult& actual, const JobResult& clean, double toleranceRad) {
+    const auto a = rescheduledA(actual);
+    const auto reference = rescheduledA(clean);
+    ASSERT_EQ(a.size(), reference.size());
+    double largest = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        largest = std::max(largest, std::abs(a[i] - reference[i]));
+    }
+    EXPECT_LE(largest, toleranceRad)
+        << "largest A difference " << units::radToDeg(largest) << " deg";
+}
+
+const JobResult& cleanAptResult() {
+    static const JobResult result = [] {
+        const CleanPass& clean = cleanPass();
+        const auto spec = rescheduleJob(
+            writeProgram("clean.cl", aptText(clean.path, clean.toolRadius, clean.feedMmPerMin)));
+        auto run = runAndWrite(spec);
+        if (!run) {
+            throw std::runtime_error(run.error().toString());
+        }
+        return std::move(*run);
+    }();
+    return result;
+}
+
+TEST(AwkwardPrograms, FiveAxisClWithVaryingTiltIsRefusedBeforeAnythingIsWritten) {
+    const CleanPass& clean = cleanPass();
+    const auto varied = withVaryingTilt(clean.path, clean.toolRadius, 20.0);
+    const auto spec = rescheduleJob(
+        writeProgram("five_axis.cl", aptText(varied, clean.toolRadius, clean.feedMmPerMin)));
+    expectRefused(spec, ErrorCode::Geometry, "not a four-axis blade pass");
+}
+
+TEST(AwkwardPrograms, ToolAxisFromBelowTheSurfaceIsRefusedAsOutsideTheChannel) {
+    const CleanPass& clean = cleanPass();
+    const auto flipped = withAxisFromBelow(clean.path, clean.toolRadius);
+    const auto spec = rescheduleJob(
+        writeProgram("from_below.cl", aptText(flipped, clean.toolRadius, clean.feedMmPerMin)));
+    expectRefused(spec, ErrorCode::Geometry, "outside the feasible S-theta channel");
+}
+
+TEST(AwkwardPrograms, AnalysisOnlyReportsAFiveAxisProgramInsteadOfRefusingIt) {
+    const CleanPass& clean = cleanPass();
+    const auto varied = withVaryingTilt(clean.path, clean.toolRadius, 20.0);
+    JobSpec spec = rescheduleJob(writeProgram(
+        "five_axis_analysis.cl", aptText(varied, clean.toolRadius, clean.feedMmPerMin)));
+    spec.outputProgram.clear();
+    spec.reschedule = false;
+    const auto result = runQuietly(spec);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    const bool reported = std::any_of(
+        result->warnings.begin(), result->warnings.end(), [](const std::string& warning) {
+            return warning.find("not a four-axis") != std::string::npos;
+        });
+    EXPECT_TRUE(reported);
+}
+
+TEST(AwkwardPrograms, BNoiseWithinTheToleranceIsSnappedAndReschedulesLikeTheCleanProgram) {
+    const CleanPass& clean = cleanPass();
+    const auto machine = kinematics::defaultBladeMachine();
+    const auto cleanSpec = rescheduleJob(writeProgram(
+        "clean.nc", gcodeText(clean.path, machine, clean.feedMmPerMin, RotaryUnit::Degrees)));
+    const auto noisySpec =
+        rescheduleJob(writeProgram("b_noise.nc", gcodeText(clean.path, machine, clean.feedMmPerMin,
+                                                           RotaryUnit::Degrees, 0.001)));
+    const auto reference = runAndWrite(cleanSpec);
+    ASSERT_TRUE(reference.has_value()) << reference.error().toString();
+    const auto noisy = runAndWrite(noisySpec);
+    ASSERT_TRUE(noisy.has_value()) << noisy.error().toString();
+    EXPECT_TRUE(fs::exists(noisySpec.outputProgram));
+    const bool reported =
+        std::any_of(noisy->warnings.begin(), noisy->warnings.end(), [](const std::string& warning) {
+            return warning.find("snapped to the median") != std::string::npos;
+        });
+    EXPECT_TRUE(reported);
+    // 0.001 deg of B moves the programmed tip by microns; the schedule follows within 0.01 deg.
+    expectSameSchedule(*noisy, *reference, units::degToRad(0.01));
+}
+
+TEST(AwkwardPrograms, BNoiseAboveTheToleranceIsRefusedUnlessTheUserAllowsIt) {
+    const CleanPass& clean = cleanPass();
+    const auto machine = kinematics::defaultBladeMachine();
+    JobSpec spec = rescheduleJob(
+        writeProgram("b_noise_large.nc", gcodeText(clean.path, machine, clean.feedMmPerMin,
+                                                   RotaryUnit::Degrees, 0.05)));
+    expectRefused(spec, ErrorCode::Geometry, "--b-tolerance-deg");
+    spec.check.tiltToleranceRad = units::degToRad(0.1);
+    const auto allowed = runAndWrite(spec);
+    ASSERT_TRUE(allowed.has_value()) << allowed.error().toString();
+    EXPECT_TRUE(fs::exists(spec.outputProgram));
+}
+
+TEST(AwkwardPrograms, CrlfAndContinuationLinesRescheduleLikeTheCleanProgram) {
+    const CleanPass& clean = cleanPass();
+    AptStyle style;
+    style.lineEnd = LineEnd::Crlf;
+    style.continuations = true;
+    const auto spec = rescheduleJob(writeProgram(
+        "crlf_continued.cl", aptText(clean.path, clean.toolRadius, clean.feedMmPerMin, style)));
+    const auto result = runAndWrite(spec);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    expectSameSchedule(*result, cleanAptResult(), 1e-12);
+}
+
+} // namespace
+} // namespace bladeaxis::job::test

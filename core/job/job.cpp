@@ -314,6 +314,11 @@ Status checkTilt(JobResult& result, const JobSpec& spec, ProgressSink& progress)
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
         return {}; // the re-scheduling refuses an unknown radius with its own message
     }
+    if (spec.reschedule || spec.compare) {
+        if (auto helical = checkHelical(mutablePass(result), *result.toolRadius, file); !helical) {
+            return helical;
+        }
+    }
     tilt->snappedRecords = snapTilt(mutablePass(result), tilt->medianRad, *result.toolRadius);
     if (const std::string note = describeSnap(*tilt, file); !note.empty()) {
         result.warnings.push_back(note);

@@ -110,6 +110,37 @@ std::string describeSnap(const TiltCheck& tilt, const std::string& file) {
            " cutting record(s) was snapped to the median, every ball centre kept";
 }
 
+Status checkHelical(std::span<const toolpath::ClRecord> pass, double toolRadius,
+                    const std::string& file) {
+    if (pass.size() < 2) {
+        return {};
+    }
+    double turned = 0.0;
+    double previous = 0.0;
+    for (std::size_t i = 0; i < pass.size(); ++i) {
+        const Vec3 centre = toolpath::ballCentre(pass[i], toolRadius);
+        const double angle = std::atan2(centre.z(), centre.y());
+        if (i > 0) {
+            turned += std::remainder(angle - previous, units::kTwoPi);
+        }
+        previous = angle;
+    }
+    if (std::abs(turned) >= kMinimumHelicalTurnRad) {
+        return {};
+    }
+    return makeError(ErrorCode::Geometry,
+                     "not a helical blade pass: the ball centres turn only " +
+                         degrees(std::abs(turned), 1) + " about the rotary axis from here to " +
+                         at(file, pass.back().line) +
+                         " (a helical pass turns 360 deg per layer, "
+                         "at least " +
+                         degrees(kMinimumHelicalTurnRad, 0) +
+                         "). If the A and B words are in radians, give --angle-unit rad; check "
+                         "that the machine file's rotary axis is the program's. Nothing was "
+                         "written",
+                     {file, pass.front().line, 0});
+}
+
 Status checkOrientationInChannel(const scheduling::ScheduleResult& schedule,
                                  std::span<const toolpath::ClRecord> pass, const std::string& file,
                                  const ProgramCheckOptions& options) {

@@ -61,6 +61,17 @@ std::size_t snapTilt(std::span<toolpath::ClRecord> pass, double tiltRad, double 
 // The warning that reports a snap, in degrees; empty when nothing was snapped.
 std::string describeSnap(const TiltCheck& tilt, const std::string& file);
 
+// The smallest turn of the ball centres about the rotary axis over the cutting pass that makes
+// it a helical pass, rad. A helical blade pass turns a whole revolution per layer; rotary words
+// in radians read as degrees (or a program for a machine without the rotary axis) turn the
+// centres by a few degrees at most.
+inline constexpr double kMinimumHelicalTurnRad = units::kPi;
+
+// Refuses (ErrorCode::Geometry) a pass whose ball centres turn less than kMinimumHelicalTurnRad
+// about the rotary axis (x), naming its first and last record.
+Status checkHelical(std::span<const toolpath::ClRecord> pass, double toolRadius,
+                    const std::string& file);
+
 // Refuses (ErrorCode::Geometry) a schedule whose CAM orientation (the input's theta) lies more
 // than the tolerance outside the raw channel of its layer, naming the first such record.
 Status checkOrientationInChannel(const scheduling::ScheduleResult& schedule,

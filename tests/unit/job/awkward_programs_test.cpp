@@ -163,6 +163,28 @@ TEST(AwkwardPrograms, BNoiseAboveTheToleranceIsRefusedUnlessTheUserAllowsIt) {
     EXPECT_TRUE(fs::exists(spec.outputProgram));
 }
 
+// Two revolutions in radians reach |A| = 12.6 > 2 pi, so the values alone look like degrees: read
+// so, the ball centres turn by 12.6 deg about the rotary axis, not two turns.
+TEST(AwkwardPrograms, RadiansReadAsDegreesAreRefusedAsNotHelicalAndReadWithTheAngleUnit) {
+    const CleanPass& clean = cleanPass();
+    const auto machine = kinematics::defaultBladeMachine();
+    const auto cleanSpec = rescheduleJob(
+        writeProgram("clean_for_radians.nc",
+                     gcodeText(clean.path, machine, clean.feedMmPerMin, RotaryUnit::Degrees)));
+    JobSpec spec = rescheduleJob(writeProgram(
+        "radians.nc", gcodeText(clean.path, machine, clean.feedMmPerMin, RotaryUnit::Radians)));
+    expectRefused(spec, ErrorCode::Geometry, "--angle-unit rad");
+    spec.read.angleUnit = io::AngleUnit::Radians;
+    const auto result = runAndWrite(spec);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    const auto reference = runAndWrite(cleanSpec);
+    ASSERT_TRUE(reference.has_value()) << reference.error().toString();
+    // Degrees at 4 decimals against radians at 7: the programs agree to 1e-4 deg.
+    expectSameSchedule(*result, *reference, units::degToRad(0.01));
+    const std::string written = readTextFile(spec.outputProgram).value_or("");
+    EXPECT_NE(written.find(" B0.0872665"), std::string::npos) << "B not written in radians";
+}
+
 TEST(AwkwardPrograms, CrlfAndContinuationLinesRescheduleLikeTheCleanProgram) {
     const CleanPass& clean = cleanPass();
     AptStyle style;

@@ -51,6 +51,23 @@ TEST(BatchCli, NonNumericToolRadiusIsAUsageError) {
               std::string::npos);
 }
 
+TEST(BatchCli, AnOptionGivenAsAnotherOptionsValueIsAUsageError) {
+    const CliRun result = run({"--batch", "--generate", "--out", "somewhere"});
+    EXPECT_EQ(result.code, kExitUsage);
+    EXPECT_NE(result.err.find("--generate: expected a value, got the option '--out'"),
+              std::string::npos)
+        << result.err;
+    EXPECT_FALSE(std::filesystem::exists("--out"));
+}
+
+TEST(BatchCli, AToolRadiusThatReplacesTheFilesCutterIsReported) {
+    const std::string program = std::string(BLADEAXIS_TEST_DATA_DIR) + "/programs/turbine_2rev.cls";
+    const CliRun result = run({"--batch", program, "--analyse-only", "--tool-radius", "5"});
+    EXPECT_EQ(result.code, kExitOk) << result.err;
+    EXPECT_NE(result.err.find("the ball radius 5 mm given replaces the file's"), std::string::npos)
+        << result.err;
+}
+
 TEST(BatchCli, UnknownOptionIsAUsageError) {
     EXPECT_EQ(run({"--batch", "--demo", "--frobnicate"}).code, kExitUsage);
 }

@@ -44,6 +44,7 @@ struct JobSpec {
     std::filesystem::path outputCl;      // the re-scheduled toolpath as CL data (APT); empty: none
     CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)
     std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none
+    std::filesystem::path jobFile;   // the job file this spec was read from, if any
 };
 
 // The part of the program that is analysed: the longest run of consecutive feed records (the

@@ -382,6 +382,7 @@ Status readJobFile(const fs::path& path, JobSpec& spec) {
     if (!text) {
         return std::unexpected(text.error());
     }
+    spec.jobFile = path; // an input too: no output may replace it
     return parseJobJson(*text, path, spec);
 }
 

@@ -364,8 +364,14 @@ Status writeReportFolder(const JobSpec& spec, const JobResult& result,
 } // namespace
 
 Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
-    const std::vector<fs::path> inputs =
-        spec.demo ? std::vector<fs::path>{} : std::vector<fs::path>{spec.program};
+    // Every file the job read is an input no output may replace, through links too.
+    std::vector<fs::path> inputs;
+    for (const fs::path& input :
+         {spec.demo ? fs::path() : spec.program, spec.machineFile, spec.cad.file, spec.jobFile}) {
+        if (!input.empty()) {
+            inputs.push_back(input);
+        }
+    }
     if (auto status = createOutputFolder(spec); !status) {
         return status;
     }

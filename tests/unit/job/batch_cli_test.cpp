@@ -68,6 +68,22 @@ TEST(BatchCli, AToolRadiusThatReplacesTheFilesCutterIsReported) {
         << result.err;
 }
 
+TEST(BatchCli, AnOutputNamingTheMachineFileIsRefusedAndTheFileKept) {
+    const auto folder = std::filesystem::temp_directory_path() / "bladeaxis_cli_machine_output";
+    std::filesystem::create_directories(folder);
+    const auto machine = folder / "machine.json";
+    std::filesystem::copy_file(std::string(BLADEAXIS_SOURCE_DIR) +
+                                   "/resources/machines/blade_ab.json",
+                               machine, std::filesystem::copy_options::overwrite_existing);
+    const auto before = std::filesystem::file_size(machine);
+    const CliRun result =
+        run({"--batch", "--demo", "--machine", machine.string(), "-o", machine.string()});
+    EXPECT_EQ(result.code, kExitWrite) << result.err;
+    EXPECT_NE(result.err.find("refusing to overwrite the input file"), std::string::npos)
+        << result.err;
+    EXPECT_EQ(std::filesystem::file_size(machine), before);
+}
+
 TEST(BatchCli, UnknownOptionIsAUsageError) {
     EXPECT_EQ(run({"--batch", "--demo", "--frobnicate"}).code, kExitUsage);
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <optional>
 #include <utility>
 
@@ -46,6 +47,7 @@ class JobReader {
     Status parameters(const Json& object, JobSpec& spec) const;
     Status analysisOptions(const Json& root, JobSpec& spec) const;
     Status programReading(const Json& root, JobSpec& spec) const;
+    Status confineOutputs(const Json& root, const JobSpec& spec) const;
     Status layerEdits(const Json& list, JobSpec& spec) const;
     Result<scheduling::LayerOverride> layerEdit(const Json& object) const;
     Result<std::vector<Vec2>> keyPoints(const Json& list) const;
@@ -61,6 +63,51 @@ Result<fs::path> JobReader::pathValue(const Json& root, const char* key) const {
     }
     const fs::path path = value.get<std::string>();
     return path.is_absolute() ? path : m_path.parent_path() / path;
+}
+
+namespace {
+
+bool isInside(const fs::path& path, const fs::path& folder) {
+    std::error_code ec;
+    const fs::path resolved = fs::weakly_canonical(path, ec);
+    const fs::path base = fs::weakly_canonical(folder, ec);
+    const auto [end, unused] =
+        std::mismatch(base.begin(), base.end(), resolved.begin(), resolved.end());
+    return end == base.end();
+}
+
+std::string lowerExtension(const fs::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
+} // namespace
+
+// A job file may come from someone else: it writes only inside its own folder (links
+// resolved), and its program output may replace only a program like the input (same
+// extension). Outputs given on the command line are the user's own choice and replace these.
+Status JobReader::confineOutputs(const Json& root, const JobSpec& spec) const {
+    const fs::path folder = m_path.has_parent_path() ? m_path.parent_path() : fs::path(".");
+    for (const auto& [key, path] : {std::pair{"output_program", &spec.outputProgram},
+                                    std::pair{"output_dir", &spec.outputDir}}) {
+        if (root.contains(key) && !isInside(*path, folder)) {
+            return fail(key, "a job file writes only inside its own folder (" + folder.string() +
+                                 "), not to " + path->string() +
+                                 "; give the output on the command line (-o, --out) to write "
+                                 "elsewhere");
+        }
+    }
+    std::error_code ec;
+    if (root.contains("output_program") && fs::exists(spec.outputProgram, ec) &&
+        lowerExtension(spec.outputProgram) != lowerExtension(spec.program)) {
+        return fail("output_program", "would replace " + spec.outputProgram.string() +
+                                          ", which is not a program like the input (" +
+                                          spec.program.filename().string() +
+                                          "); give -o on the command line to replace it");
+    }
+    return {};
 }
 
 Result<double> JobReader::positiveNumber(const Json& root, const char* key) const {
@@ -269,6 +316,9 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
             }
             *target = *path;
         }
+    }
+    if (auto status = confineOutputs(root, spec); !status) {
+        return status;
     }
     if (root.contains("tool_radius_mm")) {
         auto radius = positiveNumber(root, "tool_radius_mm");

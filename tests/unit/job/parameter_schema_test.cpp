@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 namespace bladeaxis::job {
@@ -93,6 +94,39 @@ TEST(JobFile, WrittenJobReadsBackToTheSameSpec) {
     EXPECT_DOUBLE_EQ(back.cad.tool.stickOut, 42.5);
     EXPECT_DOUBLE_EQ(back.cad.tool.holderRadius, 16.0);
     EXPECT_DOUBLE_EQ(back.cad.tool.holderLength, 75.0);
+}
+
+TEST(JobFile, AnOutputOutsideTheJobsFolderIsRefusedNamingTheKey) {
+    const auto dir = std::filesystem::temp_directory_path() / "bladeaxis_job_confined";
+    std::filesystem::create_directories(dir);
+    for (const char* output : {"\"../../../.bashrc\"", "\"/tmp/elsewhere.nc\""}) {
+        const std::string text = "{\n \"schema\": \"bladeaxis-job/1\",\n \"program\": \"in.nc\",\n "
+                                 "\"output_program\": " +
+                                 std::string(output) + "\n}";
+        JobSpec spec;
+        const auto status = parseJobJson(text, dir / "job.json", spec);
+        ASSERT_FALSE(status.has_value()) << output;
+        EXPECT_NE(status.error().message.find("output_program: a job file writes only inside"),
+                  std::string::npos)
+            << status.error().toString();
+        EXPECT_EQ(status.error().where.line, 4);
+    }
+}
+
+TEST(JobFile, AnOutputProgramOverAFileThatIsNoProgramIsRefused) {
+    const auto dir = std::filesystem::temp_directory_path() / "bladeaxis_job_unrelated";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "notes.txt") << "keep me\n";
+    const std::string text = "{\n \"schema\": \"bladeaxis-job/1\",\n \"program\": \"in.nc\",\n "
+                             "\"output_program\": \"notes.txt\"\n}";
+    JobSpec spec;
+    const auto refused = parseJobJson(text, dir / "job.json", spec);
+    ASSERT_FALSE(refused.has_value());
+    EXPECT_NE(refused.error().message.find("not a program like the input"), std::string::npos);
+    std::ofstream(dir / "previous.nc") << "G1 X0\n";
+    const std::string previous = "{\n \"schema\": \"bladeaxis-job/1\",\n \"program\": "
+                                 "\"in.nc\",\n \"output_program\": \"previous.nc\"\n}";
+    EXPECT_TRUE(parseJobJson(previous, dir / "job.json", spec).has_value());
 }
 
 TEST(JobFile, UnknownDerivativeMethodNamesTheKey) {

@@ -28,7 +28,7 @@ Exit codes:
      verification, channel, modulo A step, gouge or collision without --force); a
      layer without a monotone path keeps its original orientation with a warning
   6  an output could not be written (inputs are never overwritten)
-  7  cancelled)";
+  7  cancelled (Ctrl+C or SIGTERM in batch: nothing is written))";
 
 // Numbers are parsed with the project's locale-independent parser, not CLI11's.
 struct NumberOption {

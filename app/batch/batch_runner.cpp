@@ -3,8 +3,11 @@
 #include "app/batch/exit_codes.h"
 #include "core/base/file_io.h"
 
+#include <atomic>
+#include <csignal>
 #include <filesystem>
 #include <ostream>
+#include <signal.h>
 
 namespace bladeaxis::app {
 
@@ -25,6 +28,44 @@ class BatchProgress final : public ProgressSink {
     std::ostream& m_err;
     bool m_quiet;
 };
+
+// Ctrl+C (SIGINT) or a polite kill (SIGTERM) during a batch run cancels the job like the GUI's
+// Cancel: the job stops at its next check, nothing is written, the exit code is 7. The handler
+// only stores to a lock-free atomic, which is async-signal-safe.
+std::atomic<CancelToken*> g_interruptTarget{nullptr};
+
+extern "C" void cancelOnSignal(int) {
+    if (CancelToken* token = g_interruptTarget.load()) {
+        token->requestCancel();
+    }
+}
+
+class InterruptCancels {
+  public:
+    explicit InterruptCancels(CancelToken& token) {
+        g_interruptTarget.store(&token);
+        struct sigaction action {};
+        action.sa_handler = cancelOnSignal;
+        sigemptyset(&action.sa_mask);
+        ::sigaction(SIGINT, &action, &m_previousInt);
+        ::sigaction(SIGTERM, &action, &m_previousTerm);
+    }
+    InterruptCancels(const InterruptCancels&) = delete;
+    InterruptCancels& operator=(const InterruptCancels&) = delete;
+    ~InterruptCancels() {
+        ::sigaction(SIGINT, &m_previousInt, nullptr);
+        ::sigaction(SIGTERM, &m_previousTerm, nullptr);
+        g_interruptTarget.store(nullptr);
+    }
+
+  private:
+    struct sigaction m_previousInt {};
+    struct sigaction m_previousTerm {};
+};
+
+Error cancelledError() {
+    return Error{ErrorCode::Cancelled, "interrupted: nothing was written", {}, {}};
+}
 
 int fail(const Error& error, std::ostream& err) {
     err << "bladeaxis: " << error.toString() << '\n';
@@ -52,7 +93,11 @@ int runGenerate(const BatchOptions& options, std::ostream& out, std::ostream& er
 int runAnalyse(const BatchOptions& options, std::ostream& out, std::ostream& err) {
     BatchProgress progress(err, options.quiet);
     CancelToken cancel;
+    InterruptCancels interrupts(cancel);
     auto result = job::runJob(options.job, progress, cancel);
+    if (cancel.isCancelled()) {
+        return fail(cancelledError(), err);
+    }
     if (!result) {
         return fail(result.error(), err);
     }
@@ -73,7 +118,11 @@ int runAnalyse(const BatchOptions& options, std::ostream& out, std::ostream& err
 int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& err) {
     BatchProgress progress(err, options.quiet);
     CancelToken cancel;
+    InterruptCancels interrupts(cancel);
     auto result = job::runReproduction(options.reproduction, progress, cancel);
+    if (cancel.isCancelled()) {
+        return fail(cancelledError(), err);
+    }
     if (!result) {
         return fail(result.error(), err);
     }

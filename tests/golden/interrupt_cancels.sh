@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Ctrl+C during a batch job: exit code 7, and neither the program nor the report folder written.
+# Usage: interrupt_cancels.sh BLADEAXIS WORKDIR
+set -uo pipefail
+bladeaxis="$1"
+work="$2"
+rm -rf "$work" && mkdir -p "$work"
+"$bladeaxis" --batch --generate "$work/long.nc" --revolutions 90 --pitch 0.2 >/dev/null || exit 1
+"$bladeaxis" --batch "$work/long.nc" --tool-radius 8 --compare -q \
+    -o "$work/out.nc" --out "$work/report" 2>"$work/stderr.txt" &
+job=$!
+sleep 0.3
+kill -INT "$job"
+wait "$job"
+code=$?
+if [[ $code -ne 7 ]]; then
+    echo "expected exit code 7 after SIGINT, got $code: $(cat "$work/stderr.txt")"
+    exit 1
+fi
+if [[ -e "$work/out.nc" || -e "$work/report" ]]; then
+    echo "an interrupted job wrote outputs: $(ls "$work")"
+    exit 1
+fi
+grep -q "interrupted: nothing was written" "$work/stderr.txt" || { cat "$work/stderr.txt"; exit 1; }
+echo "interrupted job exited 7 and wrote nothing"

@@ -5,6 +5,7 @@
 
 #include "app/batch/batch_runner.h"
 #include "app/batch/exit_codes.h"
+#include "app/gui_arguments.h"
 #include "ui/run_gui.h"
 
 #include <cstdlib>
@@ -31,6 +32,10 @@ bool wantsBatch(const std::vector<std::string>& arguments) {
 int main(int argc, char** argv) {
     const std::vector<std::string> arguments(argv, argv + argc);
     if (!wantsBatch(arguments)) {
+        if (auto problem = bladeaxis::app::checkGuiArguments(arguments, &std::getenv)) {
+            std::cerr << "bladeaxis: " << *problem << '\n';
+            return bladeaxis::app::kExitUsage;
+        }
         return bladeaxis::ui::runGui(argc, argv);
     }
     if (std::getenv("BLADEAXIS_TESTING_DISABLE_CATCH_ALL") != nullptr) {

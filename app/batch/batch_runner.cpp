@@ -153,7 +153,8 @@ int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err) 
         out << options.helpText;
         return kExitOk;
     case BatchOptions::Mode::Version:
-        out << "bladeaxis " << BLADEAXIS_VERSION << '\n';
+        out << "bladeaxis " << BLADEAXIS_VERSION << " (revision " << BLADEAXIS_REVISION
+            << ")\nbuilt with " << BLADEAXIS_LIBRARIES << '\n';
         return kExitOk;
     case BatchOptions::Mode::Generate:
         return runGenerate(options, out, err);

@@ -81,11 +81,13 @@ Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileN
                                    ProgramFormat format, const kinematics::MachineModel& machine,
                                    const ReadOptions& options) {
     if (format == ProgramFormat::Gcode) {
-        auto program = nc::parseGcode(text, fileName, machine);
+        auto program = nc::parseGcode(text, fileName, machine, options);
         if (!program) {
             return std::unexpected(program.error());
         }
-        return LoadedProgram{std::move(*program), options};
+        ReadOptions resolved = options;
+        resolved.angleUnit = program->angleUnit; // the written program is read back in it
+        return LoadedProgram{std::move(*program), resolved};
     }
     auto program = cl::parseApt(text, fileName);
     if (!program) {

@@ -47,6 +47,7 @@ class MachineReader {
                           std::optional<double> fallback, bool positive) const;
     Result<AxisLimits> axis(const Json& axes, AxisId id, bool rotary) const;
     Status chain(const Json& root, TableAHeadB& chain) const;
+    Status numberRules(const Json& root, NumberRules& rules) const;
 
     std::string_view m_text;
     std::string m_file;
@@ -164,6 +165,42 @@ Status MachineReader::chain(const Json& root, TableAHeadB& chain) const {
     return {};
 }
 
+Status MachineReader::numberRules(const Json& root, NumberRules& rules) const {
+    if (root.contains("integer_words")) {
+        const Json& value = root.at("integer_words");
+        const std::string rule = value.is_string() ? value.get<std::string>() : "";
+        if (rule == "refuse_mixed") {
+            rules.integerWords = IntegerWords::RefuseMixed;
+        } else if (rule == "units") {
+            rules.integerWords = IntegerWords::Units;
+        } else if (rule == "increments") {
+            rules.integerWords = IntegerWords::Increments;
+        } else {
+            return fail("integer_words", "integer_words",
+                        "expected \"refuse_mixed\", \"units\" or \"increments\", got " +
+                            value.dump());
+        }
+    }
+    if (!root.contains("least_input_increment")) {
+        return {};
+    }
+    const Json& increments = root.at("least_input_increment");
+    if (!increments.is_object()) {
+        return fail("least_input_increment", "least_input_increment",
+                    "expected an object {\"mm\": 0.001, \"inch\": 0.0001, \"deg\": 0.001}");
+    }
+    for (const auto& [key, target] :
+         {std::pair{"mm", &rules.incrementMm}, std::pair{"inch", &rules.incrementInch},
+          std::pair{"deg", &rules.incrementDeg}}) {
+        auto value = number(increments, "least_input_increment", key, *target, true);
+        if (!value) {
+            return std::unexpected(value.error());
+        }
+        *target = *value;
+    }
+    return {};
+}
+
 Result<MachineModel> MachineReader::read(const Json& root) {
     if (!root.is_object()) {
         return makeError(ErrorCode::MachineFile, "expected a JSON object at the top level",
@@ -187,6 +224,9 @@ Result<MachineModel> MachineReader::read(const Json& root) {
             return std::unexpected(limits.error());
         }
         machine.limit(id) = *limits;
+    }
+    if (auto status = numberRules(root, machine.numbers); !status) {
+        return std::unexpected(status.error());
     }
     const std::string mode = root.at("axes").at("A").value("mode", "continuous");
     if (mode == "continuous") {
@@ -222,6 +262,12 @@ Result<MachineModel> parseMachineJson(std::string_view text, std::string_view fi
     Json root;
     try {
         root = Json::parse(text);
+    } catch (const Json::out_of_range& error) {
+        // A number beyond double ("1e400"): nlohmann reports it as out of range, not as syntax.
+        return makeError(ErrorCode::MachineFile,
+                         std::string("invalid JSON: a number is out of range (") + error.what() +
+                             ")",
+                         {file, 0, 0});
     } catch (const Json::parse_error& error) {
         std::string what = error.what();
         // nlohmann's message starts with "[json.exception.parse_error.101] parse error at line..."
@@ -230,7 +276,18 @@ Result<MachineModel> parseMachineJson(std::string_view text, std::string_view fi
         return makeError(ErrorCode::MachineFile, "invalid JSON: " + detail,
                          locateByte(text, error.byte, file));
     }
-    return MachineReader(text, file).read(root);
+    // A value of the wrong type where the reader asks nlohmann for one ("name": 5, a sign of
+    // "1") throws; it is the file's error, not a bug, and gets the machine-file exit code.
+    try {
+        return MachineReader(text, file).read(root);
+    } catch (const Json::exception& error) {
+        std::string what = error.what();
+        const std::size_t bracket = what.find("] ");
+        return makeError(ErrorCode::MachineFile,
+                         "unexpected value: " +
+                             (bracket == std::string::npos ? what : what.substr(bracket + 2)),
+                         {file, 0, 0});
+    }
 }
 
 Result<MachineModel> loadMachineFile(const std::filesystem::path& path) {

@@ -57,12 +57,30 @@ struct TableAHeadB {
     int bSign = 1; // +1 when +B tilts the tool right-handed about +Y
 };
 
+// How the control reads an axis word without a decimal point ("X1000"). Fanuc-style controls
+// take it as a count of least input increments (1.000 mm at 0.001 mm); others, and Fanuc in
+// pocket-calculator mode, as whole millimetres or degrees.
+enum class IntegerWords {
+    RefuseMixed, // whole units, but a program that mixes both styles is refused (the default:
+                 // mixing is the sign of a post written for the other rule)
+    Units,       // whole mm / inch / deg
+    Increments,  // least input increments
+};
+
+struct NumberRules {
+    IntegerWords integerWords = IntegerWords::RefuseMixed;
+    double incrementMm = 0.001;    // least input increment of linear words in G21
+    double incrementInch = 0.0001; // in G20
+    double incrementDeg = 0.001;   // of rotary words
+};
+
 struct MachineModel {
     std::string name;
     std::string sourceFile; // where it was loaded from; empty for built-in models
     TableAHeadB chain;
     std::array<AxisLimits, 5> limits{};
     RotaryMode aMode = RotaryMode::Continuous;
+    NumberRules numbers; // how its control reads numbers without a decimal point
 
     const AxisLimits& limit(AxisId axis) const { return limits[static_cast<int>(axis)]; }
     AxisLimits& limit(AxisId axis) { return limits[static_cast<int>(axis)]; }

@@ -3,6 +3,7 @@
 // compact description of where each CL record came from in the original text, so that a writer
 // can change exactly the X Y Z A B words of a block and copy every other byte.
 
+#include "core/io/read_options.h"
 #include "core/toolpath/toolpath.h"
 
 #include <array>
@@ -56,6 +57,7 @@ struct GcodeProgram {
     std::string text;                  // the original program, byte for byte
     std::vector<RecordSource> sources; // one per path.records entry, same order
     std::array<AxisNumberStyle, 5> axisStyles{};
+    AngleUnit angleUnit = AngleUnit::Degrees; // of the rotary words, as read (and written back)
 };
 
 } // namespace bladeaxis::io::nc

@@ -6,8 +6,10 @@
 #include "core/io/nc/detail/modal_interpreter.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <limits>
+#include <optional>
 
 namespace bladeaxis::io::nc {
 
@@ -29,14 +31,49 @@ void reserveForLines(GcodeProgram& program) {
     program.sources.reserve(lines);
 }
 
+// A header comment that states the unit of the rotary words: "(ANGLES IN RADIANS)",
+// "(ROTARY UNIT: DEG)", "; angular unit = degrees". It must name angles and a unit, so that
+// "(B=5 deg, lead 15 deg)" or "(RADIUS 4)" declare nothing.
+std::optional<AngleUnit> declaredAngleUnit(std::string_view line) {
+    const std::size_t comment = line.find_first_of("(;");
+    if (comment == std::string_view::npos) {
+        return std::nullopt;
+    }
+    std::string lower(line.substr(comment));
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (char& c : lower) {
+        c = std::isalpha(static_cast<unsigned char>(c)) ? c : ' ';
+    }
+    lower = " " + lower + " ";
+    const auto has = [&lower](const char* word) {
+        return lower.find(std::string(" ") + word + " ") != std::string::npos;
+    };
+    if (!(has("angle") || has("angles") || has("angular") || has("rotary"))) {
+        return std::nullopt;
+    }
+    if (has("radians") || has("radian") || has("rad")) {
+        return AngleUnit::Radians;
+    }
+    if (has("degrees") || has("degree") || has("deg")) {
+        return AngleUnit::Degrees;
+    }
+    return std::nullopt;
+}
+
+std::size_t byteOrderMarkLength(std::string_view text) {
+    return text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+}
+
 void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machine,
-                    detail::ErrorList& errors) {
-    detail::ModalInterpreter interpreter(program, machine, errors);
+                    const ReadOptions& options, detail::ErrorList& errors) {
+    detail::ModalInterpreter interpreter(program, machine, errors, options.angleUnit);
     detail::ScannedBlock block;
     const std::string_view text = program.text;
-    std::size_t begin = 0;
+    std::size_t begin = byteOrderMarkLength(text); // an editor's UTF-8 mark is not a word
     int lineNumber = 0;
     bool ended = false;
+    int endLine = 0;
     while (begin < text.size() && !errors.full()) {
         ++lineNumber;
         const void* newline = std::memchr(text.data() + begin, '\n', text.size() - begin);
@@ -48,14 +85,32 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
             --contentEnd;
         }
         const std::string_view line = text.substr(begin, contentEnd - begin);
+        if (!interpreter.rotaryWordSeen()) {
+            if (const auto unit = declaredAngleUnit(line)) {
+                interpreter.noteDeclaredUnit(*unit, lineNumber);
+            }
+        }
         if (auto issue = detail::scanBlock(line, block)) {
             errors.add(lineNumber, static_cast<int>(issue->offset) + 1, std::move(issue->message));
+        } else if (ended && block.hasWords) {
+            // A subprogram body or a second program after M30: its moves are not this
+            // program's, and reading them as motion would re-schedule them too.
+            errors.add(lineNumber, 1,
+                       "blocks after the program end (M2/M30 at line " + std::to_string(endLine) +
+                           "): a subprogram or a second program; BladeAxis reads one flat "
+                           "program, so have the post-processor expand subprograms and write "
+                           "one program per file");
+            break;
         } else {
             interpreter.apply(block, line, static_cast<std::uint32_t>(begin), lineNumber);
-            ended = ended || block.programEnd;
+            if (block.programEnd && !ended) {
+                ended = true;
+                endLine = lineNumber;
+            }
         }
         begin = end + 1;
     }
+    interpreter.finish();
     // [A] A program cut short (a failed transfer, a full disk) still parses block by block;
     // without its M2/M30 the engineer must be told, since the re-scheduled copy would be as
     // short.
@@ -67,7 +122,8 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
 }
 
 Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
-                                    const kinematics::MachineModel& machine) {
+                                    const kinematics::MachineModel& machine,
+                                    const ReadOptions& options) {
     if (text.size() > kMaxTextBytes) {
         return std::unexpected(
             parseErrorAt(fileName, 1, "file too large: expected at most 4 GiB of G-code"));
@@ -83,7 +139,7 @@ Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
     reserveForLines(program);
 
     detail::ErrorList errors(fileName, kMaxParseErrors);
-    interpretLines(program, machine, errors);
+    interpretLines(program, machine, options, errors);
     if (!errors.empty()) {
         return std::unexpected(errors.take());
     }
@@ -103,17 +159,19 @@ Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
 } // namespace
 
 Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName,
-                                const kinematics::MachineModel& machine) {
-    return parseOwnedText(std::string(text), fileName, machine);
+                                const kinematics::MachineModel& machine,
+                                const ReadOptions& options) {
+    return parseOwnedText(std::string(text), fileName, machine, options);
 }
 
 Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,
-                                   const kinematics::MachineModel& machine) {
+                                   const kinematics::MachineModel& machine,
+                                   const ReadOptions& options) {
     Result<std::string> text = readTextFile(path);
     if (!text) {
         return std::unexpected(std::move(text.error()));
     }
-    return parseOwnedText(std::move(*text), path.string(), machine);
+    return parseOwnedText(std::move(*text), path.string(), machine, options);
 }
 
 } // namespace bladeaxis::io::nc

@@ -8,14 +8,23 @@
 //   are known. B that is never programmed is taken as 0, with a warning in Toolpath::warnings.
 //   Leading rapids with partial axes produce no record; a feed move before X, Y, Z and A are
 //   known is an error.
-// - Rotary words are degrees in the file, radians in ClRecord::axes (A as written).
+// - Rotary words are degrees in the file unless ReadOptions::angleUnit or a header comment
+//   before the first rotary word ("(ANGLES IN RADIANS)") says radians; radians in
+//   ClRecord::axes (A as written). A program whose |A| and |B| all stay within 2 pi could be
+//   either and is refused unless the unit is stated. The writer keeps the unit.
+// - Subprogram calls and returns (M98, M99), macro calls (G65, G66), macro variables (#) and
+//   expressions ([...]) are refused, and so is any block after the program end (M2/M30): the
+//   reader would miss or misplace their moves.
 // - G28/G30/G53 blocks are kept but produce no record: the axes they name become unknown until
 //   programmed again. G4 is a dwell (its X is a time).
-// - Numbers without a decimal point are taken as mm/deg, not as least input increments.
+// - Axis words without a decimal point follow the machine file's `integer_words` rule: least
+//   input increments, whole units, or (the default) whole units with a program that mixes both
+//   styles refused. A UTF-8 byte order mark and CRLF line ends read like plain text.
 // - Errors are ErrorCode::Parse with file:line:column; up to 20 are collected (Error::more).
 
 #include "core/base/error.h"
 #include "core/io/nc/gcode_program.h"
+#include "core/io/read_options.h"
 #include "core/kinematics/machine_model.h"
 
 #include <filesystem>
@@ -27,10 +36,12 @@ namespace bladeaxis::io::nc {
 inline constexpr int kMaxParseErrors = 20;
 
 Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName,
-                                const kinematics::MachineModel& machine);
+                                const kinematics::MachineModel& machine,
+                                const ReadOptions& options = {});
 
 // Reads the whole file (FileNotFound / FileUnreadable) and parses it.
 Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,
-                                   const kinematics::MachineModel& machine);
+                                   const kinematics::MachineModel& machine,
+                                   const ReadOptions& options = {});
 
 } // namespace bladeaxis::io::nc

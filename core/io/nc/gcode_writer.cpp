@@ -58,7 +58,8 @@ Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> ne
 class Rewriter {
   public:
     Rewriter(const GcodeProgram& program, const MachineModel& machine)
-        : m_program(program), m_modulo(machine.aMode == kinematics::RotaryMode::Modulo) {}
+        : m_program(program), m_modulo(machine.aMode == kinematics::RotaryMode::Modulo),
+          m_numbers(machine.numbers) {}
 
     std::string run(std::span<const MachineAxes> newAxes) {
         const std::string& text = m_program.text;
@@ -99,33 +100,59 @@ class Rewriter {
         return text.substr(begin, end - begin);
     }
 
-    // Internal value (mm / rad) to the number written in the file (mm, inch or deg).
+    bool radians() const { return m_program.angleUnit == AngleUnit::Radians; }
+    double fullTurn() const { return radians() ? units::kTwoPi : 360.0; }
+
+    // Internal value (mm / rad) to the number written in the file (mm, inch, deg or rad).
     double toFile(const AxisContext& c, double value, bool absolute) const {
         if (c.axis < kAxisA) {
             return c.inch ? units::mmToInch(value) : value;
         }
-        double degrees = units::radToDeg(value);
+        double angle = radians() ? value : units::radToDeg(value);
         if (absolute && c.axis == kAxisA && m_modulo) {
-            degrees = std::fmod(degrees, 360.0);
-            degrees += degrees < 0.0 ? 360.0 : 0.0;
+            angle = std::fmod(angle, fullTurn());
+            angle += angle < 0.0 ? fullTurn() : 0.0;
         }
-        return degrees;
+        return angle;
     }
     double fromFile(const AxisContext& c, double value) const {
         if (c.axis < kAxisA) {
             return c.inch ? units::inchToMm(value) : value;
         }
-        return units::degToRad(value);
+        return radians() ? value : units::degToRad(value);
+    }
+    // A new word. A program written in increments has axis words without decimals; a new
+    // word there gets a decimal point (read as units by such a control) and enough decimals.
+    std::string insertionText(double fileValue, const AxisNumberStyle& style) const {
+        if (m_numbers.integerWords == kinematics::IntegerWords::Increments &&
+            style.maxDecimals == 0) {
+            return formatFixed(fileValue, 4);
+        }
+        return detail::formatForInsertion(fileValue, style);
+    }
+
+    // File units per written unit of a word: a least input increment for a word without a
+    // decimal point on a control that counts increments, else 1. The word keeps its style.
+    double wordScale(const AxisContext& c, std::string_view old) const {
+        if (m_numbers.integerWords != kinematics::IntegerWords::Increments || old.empty() ||
+            old.find_first_of(".eE") != std::string_view::npos) {
+            return 1.0;
+        }
+        if (c.axis >= kAxisA) {
+            return m_numbers.incrementDeg;
+        }
+        return c.inch ? m_numbers.incrementInch : m_numbers.incrementMm;
     }
 
     // A modulo A written as "360.000" after rounding is written as 0 instead.
     std::string wrapFormatted(const AxisContext& c, std::string text, double fileValue,
                               std::string_view old) const {
         if (c.axis == kAxisA && m_modulo && !c.incremental &&
-            parseNumber(text).value_or(0.0) >= 360.0) {
+            parseNumber(text).value_or(0.0) * wordScale(c, old) >= fullTurn()) {
             const AxisNumberStyle& style = m_program.axisStyles[c.axis];
-            return old.empty() ? detail::formatForInsertion(fileValue - 360.0, style)
-                               : detail::formatLikeWord(fileValue - 360.0, old, style);
+            const double wrapped = (fileValue - fullTurn()) / wordScale(c, old);
+            return old.empty() ? detail::formatForInsertion(wrapped, style)
+                               : detail::formatLikeWord(wrapped, old, style);
         }
         return text;
     }
@@ -148,6 +175,7 @@ class Rewriter {
 
     const GcodeProgram& m_program;
     bool m_modulo = false;
+    kinematics::NumberRules m_numbers;
     std::array<double, 5> m_written{}; // what the controller holds after the previous record
 };
 
@@ -162,7 +190,8 @@ std::vector<Edit> Rewriter::editsFor(std::size_t k, std::string_view line,
         const bool hasWord = source.hasWord(static_cast<int>(axis));
         const std::string_view old =
             hasWord ? line.substr(source.wordBegin[axis], source.wordLength[axis]) : "";
-        const double oldFile = hasWord ? parseNumber(old).value_or(0.0) : 0.0;
+        const double scale = wordScale(c, old);
+        const double oldFile = hasWord ? parseNumber(old).value_or(0.0) * scale : 0.0;
         double before = m_written[axis];
         if (source.setOutside & (1u << axis)) {
             before =
@@ -175,21 +204,19 @@ std::vector<Edit> Rewriter::editsFor(std::size_t k, std::string_view line,
         if (hasWord) {
             writtenFile = oldFile;
             if (std::abs(fileValue - oldFile) > 1e-12 * std::max(1.0, std::abs(oldFile))) {
-                std::string text =
-                    wrapFormatted(c, detail::formatLikeWord(fileValue, old, style), fileValue, old);
+                std::string text = wrapFormatted(
+                    c, detail::formatLikeWord(fileValue / scale, old, style), fileValue, old);
                 if (text != old) {
-                    writtenFile = parseNumber(text).value_or(fileValue);
+                    writtenFile = parseNumber(text).value_or(fileValue / scale) * scale;
                     edits.push_back({source.wordBegin[axis], source.wordLength[axis], text});
                 }
             }
         } else {
-            std::string text =
-                wrapFormatted(c, detail::formatForInsertion(fileValue, style), fileValue, "");
+            std::string text = wrapFormatted(c, insertionText(fileValue, style), fileValue, "");
             const std::string modal =
-                c.incremental
-                    ? detail::formatForInsertion(0.0, style)
-                    : wrapFormatted(c, detail::formatForInsertion(toFile(c, before, true), style),
-                                    toFile(c, before, true), "");
+                c.incremental ? insertionText(0.0, style)
+                              : wrapFormatted(c, insertionText(toFile(c, before, true), style),
+                                              toFile(c, before, true), "");
             if (text == modal) {
                 m_written[axis] = before;
                 continue;

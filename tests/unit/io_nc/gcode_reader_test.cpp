@@ -24,7 +24,7 @@ void expectAxes(const toolpath::ClRecord& record, double x, double y, double z, 
 }
 
 Result<GcodeProgram> parse(std::string_view text) {
-    return parseGcode(text, "t.nc", defaultBladeMachine());
+    return parseGcode(text, "t.nc", test::wholeUnitsMachine(), test::inDegrees());
 }
 
 TEST(GcodeReader, FanucProgramGivesOneRecordPerMoveOnceAllAxesAreKnown) {
@@ -175,15 +175,15 @@ namespace {
 // A program cut short still parses block by block; the missing M2/M30 is what tells.
 TEST(GcodeReader, ProgramWithoutM30IsReadWithATruncationWarningOnItsLastLine) {
     const auto complete = parseGcode("G21 G90 G94\nG1 X0 Y0 Z10 A0 B5 F1000\nX1\nM30\n", "t.nc",
-                                     kinematics::defaultBladeMachine());
+                                     kinematics::defaultBladeMachine(), test::inDegrees());
     ASSERT_TRUE(complete.has_value());
     EXPECT_TRUE(complete->path.warnings.empty());
     const auto lowercaseM2 = parseGcode("g21 g90 g94\ng1 x0 y0 z10 a0 b5 f1000\nm2\n", "t.nc",
-                                        kinematics::defaultBladeMachine());
+                                        kinematics::defaultBladeMachine(), test::inDegrees());
     ASSERT_TRUE(lowercaseM2.has_value());
     EXPECT_TRUE(lowercaseM2->path.warnings.empty());
     const auto truncated = parseGcode("G21 G90 G94\nG1 X0 Y0 Z10 A0 B5 F1000\nX1\n", "t.nc",
-                                      kinematics::defaultBladeMachine());
+                                      kinematics::defaultBladeMachine(), test::inDegrees());
     ASSERT_TRUE(truncated.has_value());
     ASSERT_EQ(truncated->path.warnings.size(), 1u);
     EXPECT_NE(truncated->path.warnings[0].find("t.nc:3"), std::string::npos);

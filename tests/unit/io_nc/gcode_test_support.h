@@ -25,10 +25,26 @@ inline std::string readSample(const std::string& name) {
     return text ? *text : std::string();
 }
 
+// The samples are small programs whose rotary words stay within 2 pi: their unit is stated, as
+// the angle-unit tests show the reader refuses to guess it.
+inline ReadOptions inDegrees() {
+    ReadOptions options;
+    options.angleUnit = AngleUnit::Degrees;
+    return options;
+}
+
+// A machine whose control reads "X1" as 1 mm: the hand-written test programs mix "X1" and
+// "X1.5", which the default rule refuses (its own tests show that).
+inline kinematics::MachineModel wholeUnitsMachine() {
+    kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    machine.numbers.integerWords = kinematics::IntegerWords::Units;
+    return machine;
+}
+
 inline GcodeProgram
 parseSample(const std::string& name,
             const kinematics::MachineModel& machine = kinematics::defaultBladeMachine()) {
-    Result<GcodeProgram> program = readGcodeFile(sampleDir() / name, machine);
+    Result<GcodeProgram> program = readGcodeFile(sampleDir() / name, machine, inDegrees());
     EXPECT_TRUE(program.has_value()) << (program ? "" : program.error().toString());
     return program ? std::move(*program) : GcodeProgram{};
 }

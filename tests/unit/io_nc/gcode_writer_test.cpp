@@ -114,7 +114,7 @@ TEST(GcodeWriter, InchBlocksAreWrittenInInches) {
 }
 
 TEST(GcodeWriter, ModuloAIsWrittenInZeroTo360) {
-    kinematics::MachineModel machine = defaultBladeMachine();
+    kinematics::MachineModel machine = test::wholeUnitsMachine();
     machine.aMode = kinematics::RotaryMode::Modulo;
     const auto program =
         parseGcode("G0 X0 Y0 Z9 A350.000 B0\nG1 X1 A355.000 F100\n", "m.nc", machine);
@@ -134,7 +134,8 @@ TEST(GcodeWriter, RewrittenProgramReadsBackWithTheNewAxes) {
             axes[i].z -= 0.5;
             axes[i].a += degToRad(1.25 * static_cast<double>(i));
         }
-        const auto back = parseGcode(rewrite(program, axes), name, defaultBladeMachine());
+        const auto back =
+            parseGcode(rewrite(program, axes), name, defaultBladeMachine(), test::inDegrees());
         ASSERT_TRUE(back.has_value()) << name << ": " << back.error().toString();
         ASSERT_EQ(back->path.records.size(), axes.size()) << name;
         for (std::size_t i = 0; i < axes.size(); ++i) {

@@ -37,6 +37,14 @@ ScanIssue issueAt(std::size_t offset, std::string message) {
     return {static_cast<std::uint32_t>(offset), std::move(message)};
 }
 
+// A macro variable (#101) or an expression ([#1+2]) where a number belongs.
+ScanIssue macroIssue(std::size_t offset, char c) {
+    return issueAt(offset, std::string(c == '#' ? "macro variable" : "expression") +
+                               " in a word: BladeAxis reads flat programs with a number in every "
+                               "word; have the post-processor write the values (no macro "
+                               "variables, expressions or custom macros)");
+}
+
 // End of a number token: sign, digits and points, and an exponent when one follows. The token
 // is taken greedily so that "1.2.3" is reported whole rather than as "1.2" and a stray ".3".
 std::size_t numberEnd(std::string_view line, std::size_t begin) {
@@ -83,6 +91,9 @@ std::optional<ScanIssue> readNumber(std::string_view line, std::size_t begin, ch
     const std::string_view token = line.substr(begin, end - begin);
     // Built on the error paths only: this function runs for every word of the program.
     const auto quoted = [letter] { return std::string("'") + letter + "'"; };
+    if (token.empty() && begin < line.size() && (line[begin] == '#' || line[begin] == '[')) {
+        return macroIssue(begin, line[begin]);
+    }
     if (token.empty() || token == "+" || token == "-") {
         return issueAt(begin, "expected a number after " + quoted());
     }
@@ -130,6 +141,9 @@ std::optional<ScanIssue> unexpectedCharacter(std::string_view line, std::size_t 
     if (c == ')') {
         return issueAt(i, "unbalanced parenthesis: ')' without a matching '('");
     }
+    if (c == '#' || c == '[') {
+        return macroIssue(i, static_cast<char>(c));
+    }
     return issueAt(i, std::string("unexpected character '") + static_cast<char>(c) +
                           "': expected a word (a letter followed by a number)");
 }
@@ -154,6 +168,9 @@ std::optional<ScanIssue> scanWord(std::string_view line, std::size_t& i, Scanned
         // Kept verbatim; several M words may share a block. M2/M30 are noted so that a reader
         // can tell a complete program from a truncated one.
         block.programEnd = block.programEnd || word.value == 2.0 || word.value == 30.0;
+        if (word.value == 98.0 || word.value == 99.0) {
+            block.subprogramWord = static_cast<std::uint32_t>(letterOffset);
+        }
         return std::nullopt;
     }
     if (letter == 'G') {
@@ -201,6 +218,7 @@ std::optional<ScanIssue> scanBlock(std::string_view line, ScannedBlock& block) {
     block.firstComment = kNoOffset;
     block.hasWords = false;
     block.programEnd = false;
+    block.subprogramWord = kNoOffset;
     std::size_t i = 0;
     while (i < line.size()) {
         const char c = line[i];

@@ -33,10 +33,11 @@ struct ScannedBlock {
     std::array<WordSpan, 26> words;
     std::array<WordSpan, kMaxGCodesPerBlock> gCodes;
     int gCount = 0;
-    std::uint32_t codeEnd = 0;              // just past the last word's number
-    std::uint32_t firstComment = kNoOffset; // the first '(' or ';'
-    bool hasWords = false;                  // any word at all, G and M included
-    bool programEnd = false;                // M2 or M30: the program ends in this block
+    std::uint32_t codeEnd = 0;                // just past the last word's number
+    std::uint32_t firstComment = kNoOffset;   // the first '(' or ';'
+    bool hasWords = false;                    // any word at all, G and M included
+    bool programEnd = false;                  // M2 or M30: the program ends in this block
+    std::uint32_t subprogramWord = kNoOffset; // the M98 (call) or M99 (return) word, if any
 
     bool has(char letter) const { return (present >> (letter - 'A')) & 1u; }
     const WordSpan& word(char letter) const {

@@ -17,7 +17,14 @@ struct Rejected {
     const char* reason;
 };
 
-constexpr std::array<Rejected, 13> kRejectedCodes{{
+constexpr const char* kMacroCall =
+    "custom macro calls G65/G66 are not supported: BladeAxis reads a flat program; have the "
+    "post-processor write every move";
+
+constexpr std::array<Rejected, 16> kRejectedCodes{{
+    {650, kMacroCall},
+    {660, kMacroCall},
+    {661, kMacroCall},
     {20, "circular interpolation G2/G3 is not supported in four-axis programs: post the program "
          "with linear moves"},
     {30, "circular interpolation G2/G3 is not supported in four-axis programs: post the program "

@@ -35,6 +35,18 @@ void ModalInterpreter::apply(const ScannedBlock& block, std::string_view line,
         return;
     }
     const Context at{block, line, lineBegin, lineNumber};
+    if (block.subprogramWord != kNoOffset) {
+        fail(at, block.subprogramWord,
+             "subprogram " +
+                 std::string(line.substr(block.subprogramWord, 3) == "M99" ||
+                                     line.substr(block.subprogramWord, 3) == "m99"
+                                 ? "return M99"
+                                 : "call M98") +
+                 (block.has('P') ? " P" + std::string(block.word('P').text(line)) : "") +
+                 ": BladeAxis reads one flat program and would miss the subprogram's moves; "
+                 "have the post-processor expand subprograms");
+        return;
+    }
     BlockCodes codes;
     if (!readGCodes(at, codes) || !checkLetters(at) || !applyFeedWord(at) || !applyCWord(at)) {
         return;
@@ -199,12 +211,7 @@ bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axisWords)
         }
         const WordSpan& word = at.block.word(kAxisLetters[axis]);
         noteAxisWord(m_program.axisStyles[axis], word.text(at.line));
-        double value = word.value;
-        if (isRotaryIndex(axis)) {
-            value = units::degToRad(value);
-        } else if (m_inch) {
-            value = units::inchToMm(value);
-        }
+        double value = axisWordValue(at, axis, word);
         if (m_incremental) {
             if (!(m_known & bit)) {
                 const std::string name(1, kAxisLetters[axis]);
@@ -221,6 +228,60 @@ bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axisWords)
         }
     }
     return true;
+}
+
+// The word's value in mm or rad: the control's rule for a number without a decimal point, then
+// inch and the angle unit.
+double ModalInterpreter::axisWordValue(const Context& at, std::size_t axis, const WordSpan& word) {
+    const std::string_view text = word.text(at.line);
+    const bool hasPoint = text.find_first_of(".eE") != std::string_view::npos;
+    double value = word.value;
+    if (value != 0.0) {
+        int& first = hasPoint ? m_firstPointLine : m_firstIntegerLine;
+        first = first == 0 ? at.lineNumber : first;
+    }
+    const kinematics::NumberRules& rules = m_machine.numbers;
+    const bool rotary = isRotaryIndex(axis);
+    if (!hasPoint && rules.integerWords == kinematics::IntegerWords::Increments) {
+        value *= rotary ? rules.incrementDeg : (m_inch ? rules.incrementInch : rules.incrementMm);
+    }
+    if (rotary) {
+        m_largestRotaryWord = std::max(m_largestRotaryWord, std::abs(word.value));
+        m_firstRotaryLine = m_firstRotaryLine == 0 ? at.lineNumber : m_firstRotaryLine;
+        return m_angleUnit == AngleUnit::Radians ? value : units::degToRad(value);
+    }
+    return m_inch ? units::inchToMm(value) : value;
+}
+
+void ModalInterpreter::noteDeclaredUnit(AngleUnit unit, int lineNumber) {
+    if (!m_angleUnit) {
+        m_angleUnit = unit;
+        m_unitDeclarationLine = lineNumber;
+    }
+}
+
+void ModalInterpreter::finish() {
+    m_program.angleUnit = m_angleUnit.value_or(AngleUnit::Degrees);
+    // A rotary word beyond 2 pi cannot be radians; below it, a helical blade pass in degrees
+    // would turn less than 6.3 deg, so the values alone cannot tell.
+    if (!m_angleUnit && m_largestRotaryWord > 0.0 && m_largestRotaryWord <= units::kTwoPi) {
+        m_errors.add(m_firstRotaryLine, 1,
+                     "the unit of the rotary words is ambiguous: every A and B is at most " +
+                         formatTrimmed(m_largestRotaryWord, 6) +
+                         " (<= 2 pi), which reads as radians as well as degrees; give "
+                         "--angle-unit deg|rad (job key angle_unit) or a header comment such as "
+                         "(ANGLES IN DEGREES)");
+    }
+    if (m_machine.numbers.integerWords == kinematics::IntegerWords::RefuseMixed &&
+        m_firstPointLine > 0 && m_firstIntegerLine > 0) {
+        m_errors.add(
+            m_firstIntegerLine, 1,
+            "axis words without a decimal point here, with one at line " +
+                std::to_string(m_firstPointLine) +
+                ": a Fanuc-style control reads X1000 as 1.000 mm (least input increments), "
+                "others as 1000 mm; say which in the machine file (\"integer_words\": "
+                "\"increments\" or \"units\", docs/machine-file.md)");
+    }
 }
 
 bool ModalInterpreter::allAxesKnown() const {

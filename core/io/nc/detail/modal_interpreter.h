@@ -7,6 +7,7 @@
 #include "core/io/nc/detail/error_list.h"
 #include "core/io/nc/detail/g_codes.h"
 #include "core/io/nc/gcode_program.h"
+#include "core/io/read_options.h"
 #include "core/kinematics/machine_model.h"
 
 #include <array>
@@ -18,13 +19,24 @@ namespace bladeaxis::io::nc::detail {
 
 class ModalInterpreter {
   public:
+    // `angleUnit`: the unit of rotary words when the user stated it; empty: degrees unless a
+    // header comment declares radians, and checked at the end (finish).
     ModalInterpreter(GcodeProgram& program, const kinematics::MachineModel& machine,
-                     ErrorList& errors)
-        : m_program(program), m_machine(machine), m_errors(errors) {}
+                     ErrorList& errors, std::optional<AngleUnit> angleUnit)
+        : m_program(program), m_machine(machine), m_errors(errors), m_angleUnit(angleUnit) {}
 
     // Interprets one scanned block. `line` is its text, starting at `lineBegin` in the program.
     void apply(const ScannedBlock& block, std::string_view line, std::uint32_t lineBegin,
                int lineNumber);
+
+    // A comment line before the first rotary word that states the unit of the rotary words
+    // ("(ANGLES IN RADIANS)"), unless the user stated it.
+    void noteDeclaredUnit(AngleUnit unit, int lineNumber);
+    bool rotaryWordSeen() const { return m_firstRotaryLine > 0; }
+
+    // The checks that need the whole program: an angle unit the values cannot decide, axis words
+    // with and without a decimal point mixed. Records the unit read in the program.
+    void finish();
 
   private:
     // The non-modal and motion codes of one block.
@@ -48,6 +60,7 @@ class ModalInterpreter {
     bool applyCWord(const Context& at);
     void applyOneShot(const Context& at, GKind kind, std::uint8_t axisWords);
     bool applyAxisWords(const Context& at, std::uint8_t axisWords);
+    double axisWordValue(const Context& at, std::size_t axis, const WordSpan& word);
     bool allAxesKnown() const;
     bool checkFeedAvailable(const Context& at);
     void addRecord(const Context& at, std::uint8_t axisWords);
@@ -71,6 +84,13 @@ class ModalInterpreter {
     std::optional<double> m_c; // deg, the constant C
     std::uint8_t m_outside = 0x1F;
     std::optional<Vec3> m_lastTip;
+
+    std::optional<AngleUnit> m_angleUnit; // given or declared; empty: degrees, checked in finish
+    int m_unitDeclarationLine = 0;        // the header comment that declared it, if any
+    double m_largestRotaryWord = 0.0;     // max |A|, |B| as written
+    int m_firstRotaryLine = 0;
+    int m_firstPointLine = 0;   // first non-zero axis word with a decimal point
+    int m_firstIntegerLine = 0; // first non-zero axis word without one
 };
 
 } // namespace bladeaxis::io::nc::detail

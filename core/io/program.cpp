@@ -89,7 +89,7 @@ Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileN
         resolved.angleUnit = program->angleUnit; // the written program is read back in it
         return LoadedProgram{std::move(*program), resolved};
     }
-    auto program = cl::parseApt(text, fileName);
+    auto program = cl::parseApt(text, fileName, options);
     if (!program) {
         return std::unexpected(program.error());
     }

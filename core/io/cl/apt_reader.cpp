@@ -44,15 +44,30 @@ struct ModalState {
     std::uint32_t multaxEpoch = 0;
 };
 
+// APT source motion and circles: statements that move the tool along geometry BladeAxis does
+// not evaluate. CL data from a CAM system's post has GOTOs only; these come from APT part
+// programs or circle output.
+constexpr std::string_view kUnfollowedMotion[] = {"GO",     "GOFWD", "GOLFT",  "GORGT",
+                                                  "GOBACK", "GOUP",  "GODOWN", "INDIRV",
+                                                  "INDIRP", "PSIS",  "CIRCLE", "GOCLER"};
+
 class AptReader {
   public:
-    AptReader(std::string_view text, std::string_view file) : m_text(text), m_file(file) {}
+    AptReader(std::string_view text, std::string_view file, const ReadOptions& options)
+        : m_text(text), m_file(file), m_defaultFeed(options.feedMmPerS) {}
 
     Result<AptProgram> run();
 
   private:
     void dispatch();
     void readGoto();
+    void readFrom();
+    void readDelta();
+    void readMsys();
+    void refuseMotion();
+    std::optional<Vec3> readPointAndAxis(std::string_view word);
+    bool takeFeed(toolpath::ClRecord& record);
+    void addRecord(toolpath::ClRecord record, AptMotion motion, std::uint8_t numberCount);
     void readFedrat();
     void readUnits();
     void readCutter();
@@ -75,6 +90,10 @@ class AptReader {
     std::vector<Error> m_errors;
     bool m_finished = false;
     bool m_pathEnded = false;
+    std::optional<double> m_defaultFeed; // mm/s, for CL data without FEDRAT
+    bool m_reportedMissingFeed = false;
+    std::uint32_t m_frame = 0;     // index of the MSYS frame in force
+    std::optional<Vec3> m_lastTip; // world, for GODLTA
 };
 
 void AptReader::fail(std::size_t bodyPos, std::string message) {
@@ -121,56 +140,189 @@ void AptReader::dispatch() {
         m_finished = true;
     } else if (equalsIgnoreCase(word, "END-OF-PATH")) {
         m_pathEnded = true; // NX CLSF ends each tool path so, and has no FINI
+    } else if (equalsIgnoreCase(word, "FROM")) {
+        readFrom();
+    } else if (equalsIgnoreCase(word, "GODLTA")) {
+        readDelta();
+    } else if (equalsIgnoreCase(word, "MSYS")) {
+        readMsys();
+    } else if (std::any_of(
+                   std::begin(kUnfollowedMotion), std::end(kUnfollowedMotion),
+                   [&word](std::string_view motion) { return equalsIgnoreCase(word, motion); })) {
+        refuseMotion();
     }
-    // Everything else (PARTNO, PPRINT, LOADTL, SPINDL, COOLNT, MSYS, TOOL PATH, PAINT, CUTCOM,
-    // END, ...) does not move the tool: it stays in AptProgram::text and is otherwise ignored.
+    // Everything else (PARTNO, PPRINT, LOADTL, SPINDL, COOLNT, TOOL PATH, PAINT, CUTCOM, END,
+    // ...) does not move the tool: it stays in AptProgram::text and is otherwise ignored.
 }
 
-void AptReader::readGoto() {
+void AptReader::refuseMotion() {
+    const std::string word(m_parsed.word);
+    const bool circle = equalsIgnoreCase(word, "CIRCLE");
+    fail(m_parsed.wordPos,
+         circle ? "circular move (CIRCLE/): BladeAxis re-schedules linear CL data and would "
+                  "take the arc for its chord; post the program with linear moves (GOTO only)"
+                : word + ": APT part-program motion, not CL data; run the part program through "
+                         "the APT processor and read the CL file it writes (GOTO statements)");
+}
+
+// x,y,z[,i,j,k] of GOTO/FROM in the frame in force, to world: the tip, and the unit axis
+// (which also becomes the modal axis) when six numbers are given.
+std::optional<Vec3> AptReader::readPointAndAxis(std::string_view word) {
     const auto& fields = m_parsed.fields;
     if (fields.size() != 3 && fields.size() != 6) {
-        fail(m_parsed.argsPos,
-             "expected 3 or 6 numbers after GOTO/, got " + std::to_string(fields.size()));
-        return;
+        fail(m_parsed.argsPos, "expected 3 or 6 numbers after " + std::string(word) + "/, got " +
+                                   std::to_string(fields.size()));
+        return std::nullopt;
     }
     double values[6] = {};
     for (std::size_t i = 0; i < fields.size(); ++i) {
         std::optional<double> value = number(fields[i], kGotoFieldNames[i]);
         if (!value) {
-            return;
+            return std::nullopt;
         }
         values[i] = *value;
     }
-    toolpath::ClRecord record;
-    record.tip = Vec3(values[0], values[1], values[2]) * lengthScale();
-    if (!isFinite(record.tip)) {
-        fail(fields[0].pos, "GOTO/ coordinates out of range");
-        return;
+    const AptFrame& frame = m_program.frames[m_frame];
+    const Vec3 tip = frame.pointToWorld(Vec3(values[0], values[1], values[2]) * lengthScale());
+    if (!isFinite(tip)) {
+        fail(fields[0].pos, std::string(word) + "/ coordinates out of range");
+        return std::nullopt;
     }
     if (fields.size() == 6) {
         Vec3 axis(values[3], values[4], values[5]);
         const double norm = axis.stableNorm();
         if (!std::isfinite(norm) || norm <= tol::kZeroVector) {
-            fail(fields[3].pos, "tool axis (i,j,k) of GOTO/ has zero length");
-            return;
+            fail(fields[3].pos, "tool axis (i,j,k) of " + std::string(word) + "/ has zero length");
+            return std::nullopt;
         }
-        m_state.axis = axis / norm;
+        m_state.axis = frame.rotation * (axis / norm);
     }
-    record.axis = m_state.axis;
-    record.line = m_statement.firstLine();
+    return tip;
+}
+
+// The feed of a feed move: FEDRAT's, else the one given by the user; without either, one
+// error for the whole file (every GOTO would repeat it).
+bool AptReader::takeFeed(toolpath::ClRecord& record) {
     if (m_state.rapidNext) {
         record.motion = toolpath::MotionKind::Rapid;
-    } else if (m_state.feed) {
-        record.feed = *m_state.feed;
-    } else {
-        fail(m_parsed.wordPos, "GOTO before any FEDRAT (a feed move needs a feed rate)");
-        return;
+        return true;
     }
+    if (m_state.feed || m_defaultFeed) {
+        record.feed = m_state.feed ? *m_state.feed : *m_defaultFeed;
+        return true;
+    }
+    if (!m_reportedMissingFeed) {
+        m_reportedMissingFeed = true;
+        fail(m_parsed.wordPos, "GOTO before any FEDRAT: the file states no feed; give the feed "
+                               "with --feed (mm/min, job key feed_mm_min) or add a FEDRAT");
+    }
+    return false;
+}
+
+void AptReader::addRecord(toolpath::ClRecord record, AptMotion motion, std::uint8_t numberCount) {
+    record.line = m_statement.firstLine();
     m_state.rapidNext = false; // RAPID applies to the next motion only
+    m_lastTip = record.tip;
     m_program.path.records.push_back(record);
     m_program.source.push_back(AptRecordSource{m_statement.textBegin, m_state.multaxEpoch,
-                                               static_cast<std::uint8_t>(fields.size()),
-                                               m_state.multaxOn, m_state.inches});
+                                               numberCount, m_state.multaxOn, m_state.inches,
+                                               motion, m_frame});
+}
+
+void AptReader::readFrom() {
+    const std::optional<Vec3> tip = readPointAndAxis("FROM");
+    if (!tip) {
+        return;
+    }
+    toolpath::ClRecord record;
+    record.tip = *tip;
+    record.axis = m_state.axis;
+    record.motion = toolpath::MotionKind::Rapid; // where the tool starts, not a cut
+    addRecord(record, AptMotion::From, static_cast<std::uint8_t>(m_parsed.fields.size()));
+}
+
+// GODLTA/dx,dy,dz moves by a vector of the frame in force; GODLTA/d along the tool axis.
+void AptReader::readDelta() {
+    const auto& fields = m_parsed.fields;
+    if (fields.size() != 1 && fields.size() != 3) {
+        fail(m_parsed.argsPos, "expected 1 (along the tool axis) or 3 numbers after GODLTA/, got " +
+                                   std::to_string(fields.size()));
+        return;
+    }
+    if (!m_lastTip) {
+        fail(m_parsed.wordPos, "GODLTA before any GOTO or FROM: an incremental move needs a "
+                               "start point");
+        return;
+    }
+    Vec3 delta = Vec3::Zero();
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        std::optional<double> value = number(fields[i], "GODLTA/ increment");
+        if (!value) {
+            return;
+        }
+        delta[static_cast<Eigen::Index>(i)] = *value * lengthScale();
+    }
+    const Vec3 world = fields.size() == 1 ? Vec3(delta.x() * m_state.axis)
+                                          : Vec3(m_program.frames[m_frame].rotation * delta);
+    toolpath::ClRecord record;
+    record.tip = *m_lastTip + world;
+    record.axis = m_state.axis;
+    if (!takeFeed(record)) {
+        return;
+    }
+    addRecord(record, AptMotion::Delta, static_cast<std::uint8_t>(fields.size()));
+}
+
+// MSYS/x,y,z,xi,xj,xk,yi,yj,yk: the origin and the X and Y axes of the local system in the
+// base frame (NX CLSF and ISO 4343); Z = X x Y. MSYS with no numbers returns to the base frame.
+void AptReader::readMsys() {
+    const auto& fields = m_parsed.fields;
+    if (fields.empty()) {
+        m_frame = 0;
+        return;
+    }
+    if (fields.size() != 9) {
+        fail(m_parsed.argsPos, "expected 9 numbers after MSYS/ (origin x,y,z, then the local X "
+                               "and Y axes), got " +
+                                   std::to_string(fields.size()));
+        return;
+    }
+    double values[9] = {};
+    for (std::size_t i = 0; i < 9; ++i) {
+        std::optional<double> value = number(fields[i], "MSYS/");
+        if (!value) {
+            return;
+        }
+        values[i] = *value;
+    }
+    const Vec3 xAxis(values[3], values[4], values[5]);
+    const Vec3 yAxis(values[6], values[7], values[8]);
+    if (xAxis.norm() < tol::kZeroVector || yAxis.norm() < tol::kZeroVector ||
+        std::abs(xAxis.normalized().dot(yAxis.normalized())) > 1e-6) {
+        fail(fields[3].pos, "MSYS/ axes must be two non-zero perpendicular vectors");
+        return;
+    }
+    AptFrame frame;
+    frame.origin = Vec3(values[0], values[1], values[2]) * lengthScale();
+    frame.rotation.col(0) = xAxis.normalized();
+    frame.rotation.col(1) = yAxis.normalized();
+    frame.rotation.col(2) = xAxis.normalized().cross(yAxis.normalized());
+    m_program.frames.push_back(frame);
+    m_frame = static_cast<std::uint32_t>(m_program.frames.size() - 1);
+}
+
+void AptReader::readGoto() {
+    const std::optional<Vec3> tip = readPointAndAxis("GOTO");
+    if (!tip) {
+        return;
+    }
+    toolpath::ClRecord record;
+    record.tip = *tip;
+    record.axis = m_state.axis;
+    if (!takeFeed(record)) {
+        return;
+    }
+    addRecord(record, AptMotion::Goto, static_cast<std::uint8_t>(m_parsed.fields.size()));
 }
 
 void AptReader::readFedrat() {
@@ -352,16 +504,17 @@ Result<AptProgram> AptReader::run() {
 
 } // namespace
 
-Result<AptProgram> parseApt(std::string_view text, std::string_view fileName) {
-    return AptReader(text, fileName).run();
+Result<AptProgram> parseApt(std::string_view text, std::string_view fileName,
+                            const ReadOptions& options) {
+    return AptReader(text, fileName, options).run();
 }
 
-Result<AptProgram> readAptFile(const std::filesystem::path& path) {
+Result<AptProgram> readAptFile(const std::filesystem::path& path, const ReadOptions& options) {
     Result<std::string> text = readTextFile(path);
     if (!text) {
         return std::unexpected(std::move(text.error()));
     }
-    return parseApt(*text, path.string());
+    return parseApt(*text, path.string(), options);
 }
 
 } // namespace bladeaxis::io::cl

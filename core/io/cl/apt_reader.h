@@ -4,6 +4,7 @@
 
 #include "core/base/error.h"
 #include "core/io/cl/apt_program.h"
+#include "core/io/read_options.h"
 
 #include <filesystem>
 #include <string_view>
@@ -14,12 +15,19 @@ namespace bladeaxis::io::cl {
 constexpr int kMaxReportedErrors = 20;
 
 // Parses CL text. `fileName` names the source in diagnostics ("blade.cls:7:12: ...").
-// Errors (ErrorCode::Parse): malformed GOTO/FEDRAT/UNITS/CUTTER/TLDATA, NaN or infinite
-// numbers, a zero tool axis, a `$` continuation at the end of the file, a feed GOTO before any
-// FEDRAT, binary bytes, an empty file or one without any GOTO.
-Result<AptProgram> parseApt(std::string_view text, std::string_view fileName);
+// Errors (ErrorCode::Parse): malformed GOTO/FEDRAT/UNITS/CUTTER/TLDATA/MSYS/GODLTA/FROM, NaN
+// or infinite numbers, a zero tool axis, a `$` continuation at the end of the file, a feed
+// GOTO before any FEDRAT without a feed in the options (reported once), binary bytes, an empty
+// file or one without any GOTO, and statements that move the tool in ways BladeAxis does not
+// follow: circles (CIRCLE), APT source motion (GO, GOFWD, GOLFT, GORGT, GOBACK, GOUP, GODOWN,
+// INDIRV, INDIRP, PSIS), each naming its line and what to post instead.
+// Applied: MSYS local frames (GOTO numbers are local, records are world), GODLTA incremental
+// moves and FROM start points.
+// `options.feedMmPerS` feeds CL data that programs no FEDRAT (bare GOTO lists).
+Result<AptProgram> parseApt(std::string_view text, std::string_view fileName,
+                            const ReadOptions& options = {});
 
 // Reads and parses a file; diagnostics name it by `path`.
-Result<AptProgram> readAptFile(const std::filesystem::path& path);
+Result<AptProgram> readAptFile(const std::filesystem::path& path, const ReadOptions& options = {});
 
 } // namespace bladeaxis::io::cl

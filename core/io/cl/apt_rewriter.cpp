@@ -50,7 +50,11 @@ class AptRewriter {
   private:
     Status validate() const;
     Status rewriteRecord(std::size_t index);
+    Status rewriteDelta(std::size_t index, const std::vector<Field>& fields);
+    void rewriteNumbers(const Vec3& values, double scale, const std::vector<Field>& fields);
     void rewriteTip(std::size_t index, const std::vector<Field>& fields);
+    Vec3 localTip(std::size_t index) const;
+    Vec3 localAxis(std::size_t index) const;
     void rewriteAxis(const Vec3& axis, const std::vector<Field>& fields);
     int appendedDecimals(const std::vector<Field>& fields) const;
     bool axisDiffers(const Vec3& axis, int decimals) const;
@@ -66,6 +70,7 @@ class AptRewriter {
     Statement m_statement;
     detail::ParsedStatement m_parsed;
     Vec3 m_effectiveAxis = Vec3::UnitZ(); // the axis a reader of m_out has at this point
+    std::uint32_t m_effectiveFrame = 0;   // the MSYS frame m_effectiveAxis is written in
     bool m_insertedMultax = false;
     std::uint32_t m_insertedEpoch = 0;
 };
@@ -120,17 +125,63 @@ void AptRewriter::replaceToken(const Field& field, std::string_view text) {
     }
 }
 
-void AptRewriter::rewriteTip(std::size_t index, const std::vector<Field>& fields) {
-    const double scale = m_program.source[index].inches ? units::kMmPerInch : 1.0;
+// The records are in the world frame; the file writes them in the MSYS frame in force.
+Vec3 AptRewriter::localTip(std::size_t index) const {
+    return m_program.frames[m_program.source[index].frame].pointToLocal(m_records[index].tip);
+}
+
+Vec3 AptRewriter::localAxis(std::size_t index) const {
+    const AptFrame& frame = m_program.frames[m_program.source[index].frame];
+    return frame.rotation.transpose() * m_records[index].axis.normalized();
+}
+
+// Three numbers (mm values written in the file's length unit), each changed only where its
+// text in the file's own style changes.
+void AptRewriter::rewriteNumbers(const Vec3& values, double scale,
+                                 const std::vector<Field>& fields) {
     for (int c = 0; c < 3; ++c) {
         const Field& field = fields[static_cast<std::size_t>(c)];
         const NumberStyle style = styleOf(field.text);
         const double old = parseNumber(field.text).value_or(0.0);
-        const std::string text = formatAs(style, m_records[index].tip[c] / scale, kFreeTipDecimals);
+        const std::string text = formatAs(style, values[c] / scale, kFreeTipDecimals);
         if (text != formatAs(style, old, kFreeTipDecimals)) {
             replaceToken(field, text);
         }
     }
+}
+
+void AptRewriter::rewriteTip(std::size_t index, const std::vector<Field>& fields) {
+    const double scale = m_program.source[index].inches ? units::kMmPerInch : 1.0;
+    rewriteNumbers(localTip(index), scale, fields);
+}
+
+// GODLTA/dx,dy,dz gets the increment from the previous written point to the new one, so the
+// absolute positions are the records'. GODLTA/d moves along the tool axis and has only one
+// number: a change of its end point cannot be written in that form.
+Status AptRewriter::rewriteDelta(std::size_t index, const std::vector<Field>& fields) {
+    const double scale = m_program.source[index].inches ? units::kMmPerInch : 1.0;
+    const AptFrame& frame = m_program.frames[m_program.source[index].frame];
+    const Vec3 delta =
+        index > 0
+            ? Vec3(frame.rotation.transpose() * (m_records[index].tip - m_records[index - 1].tip))
+            : Vec3::Zero();
+    if (fields.size() == 3) {
+        rewriteNumbers(delta, scale, fields);
+        return {};
+    }
+    const Vec3 oldDelta =
+        index > 0 ? Vec3(m_program.path.records[index].tip - m_program.path.records[index - 1].tip)
+                  : Vec3::Zero();
+    const Vec3 newDelta =
+        index > 0 ? Vec3(m_records[index].tip - m_records[index - 1].tip) : Vec3::Zero();
+    if ((newDelta - oldDelta).norm() > tol::kRoundTripMm) {
+        return makeError(
+            ErrorCode::CheckFailed,
+            "GODLTA/d (a move along the tool axis) would have to change, which its "
+            "one number cannot say; post the move as GOTO or GODLTA/dx,dy,dz",
+            SourceLocation{m_program.path.sourceFile, m_program.path.records[index].line, 0});
+    }
+    return {};
 }
 
 void AptRewriter::rewriteAxis(const Vec3& axis, const std::vector<Field>& fields) {
@@ -206,10 +257,22 @@ Status AptRewriter::rewriteRecord(std::size_t index) {
     }
     detail::parseStatement(m_statement.body, m_parsed);
     const auto& fields = m_parsed.fields;
-    if (!detail::equalsIgnoreCase(m_parsed.word, "GOTO") || fields.size() != source.numberCount) {
+    const char* word = source.motion == AptMotion::Goto   ? "GOTO"
+                       : source.motion == AptMotion::From ? "FROM"
+                                                          : "GODLTA";
+    if (!detail::equalsIgnoreCase(m_parsed.word, word) || fields.size() != source.numberCount) {
         return makeError(ErrorCode::Internal, "rewriteApt: program text and records disagree");
     }
-    const Vec3 axis = m_records[index].axis.normalized();
+    if (source.motion == AptMotion::Delta) {
+        return rewriteDelta(index, fields);
+    }
+    if (source.frame != m_effectiveFrame) {
+        // The modal axis stays the same world direction across an MSYS: seen from this frame.
+        m_effectiveAxis = m_program.frames[source.frame].rotation.transpose() *
+                          (m_program.frames[m_effectiveFrame].rotation * m_effectiveAxis);
+        m_effectiveFrame = source.frame;
+    }
+    const Vec3 axis = localAxis(index);
     if (source.numberCount == 6) {
         rewriteTip(index, fields);
         rewriteAxis(axis, fields);

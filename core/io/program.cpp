@@ -13,10 +13,21 @@ const char* toString(AngleUnit unit) {
 }
 
 const char* toString(ProgramFormat format) {
-    return format == ProgramFormat::Gcode ? "gcode" : "apt";
+    switch (format) {
+    case ProgramFormat::Gcode:
+        return "gcode";
+    case ProgramFormat::Apt:
+        return "apt";
+    case ProgramFormat::Table:
+        return "table";
+    }
+    return "gcode";
 }
 
 namespace {
+
+// How many meaningful lines decide the format.
+constexpr int kLinesToClassify = 200;
 
 std::string lowerExtension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
@@ -25,37 +36,178 @@ std::string lowerExtension(const std::filesystem::path& path) {
     return extension;
 }
 
-bool containsGotoStatement(std::string_view text) {
+std::optional<ProgramFormat> formatOfExtension(const std::filesystem::path& path) {
+    static constexpr std::array<std::string_view, 8> kGcode{".nc",  ".ngc", ".tap", ".gcode",
+                                                            ".mpf", ".spf", ".iso", ".cnc"};
+    static constexpr std::array<std::string_view, 5> kApt{".cl", ".cls", ".apt", ".aptsource",
+                                                          ".clsf"};
+    static constexpr std::array<std::string_view, 4> kTable{".txt", ".csv", ".xyz", ".dat"};
+    const std::string extension = lowerExtension(path);
+    const auto in = [&extension](const auto& list) {
+        return std::find(list.begin(), list.end(), extension) != list.end();
+    };
+    if (in(kGcode)) {
+        return ProgramFormat::Gcode;
+    }
+    if (in(kApt)) {
+        return ProgramFormat::Apt;
+    }
+    if (in(kTable)) {
+        return ProgramFormat::Table;
+    }
+    return std::nullopt;
+}
+
+bool isAlpha(char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) != 0;
+}
+
+// "N10 G1 X1.", "g1x.5", "T1 M6", "O1000", ":1000": a letter, blanks, then a number.
+bool looksLikeGcodeBlock(std::string_view line) {
+    std::size_t i = line.starts_with("/") ? 1 : 0; // block delete
+    if (i >= line.size() || !(isAlpha(line[i]) || line[i] == ':')) {
+        return false;
+    }
+    ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) {
+        ++i;
+    }
+    return i < line.size() && (std::isdigit(static_cast<unsigned char>(line[i])) ||
+                               line[i] == '-' || line[i] == '+' || line[i] == '.');
+}
+
+// "GOTO/1,2,3", "TOOL PATH/...", "END-OF-PATH", "PARTNO BLADE", "$$ comment".
+bool looksLikeAptStatement(std::string_view line) {
+    if (line.starts_with("$$")) {
+        return true;
+    }
+    const std::size_t slash = line.find('/');
+    const std::string_view word = line.substr(0, slash);
+    const bool wordOnly = !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
+        return isAlpha(c) || c == ' ' || c == '-' || c == '_';
+    });
+    if (slash != std::string_view::npos) {
+        return wordOnly && isAlpha(word.front());
+    }
+    static constexpr std::array<std::string_view, 8> kBare{
+        "FINI", "END-OF-PATH", "RAPID", "MULTAX", "PARTNO", "PPRINT", "REMARK", "END"};
+    std::string upper;
+    for (char c : line.substr(0, line.find(' '))) {
+        upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+    return std::find(kBare.begin(), kBare.end(), upper) != kBare.end();
+}
+
+bool isCommentOrBlank(std::string_view line) {
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos) {
+        return true;
+    }
+    const char c = line[first];
+    return c == '(' || c == ';' || c == '%' || c == '#';
+}
+
+// A byte that cannot be in a text program: NUL and control characters other than blanks and
+// line ends, in the first 64 KiB.
+std::optional<std::size_t> binaryByte(std::string_view text) {
     const std::string_view head = text.substr(0, std::min<std::size_t>(text.size(), 1 << 16));
-    for (std::size_t at = head.find('/'); at != std::string_view::npos;
-         at = head.find('/', at + 1)) {
-        if (at >= 4) {
-            std::string word(head.substr(at - 4, 4));
-            std::transform(word.begin(), word.end(), word.begin(),
-                           [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-            if (word == "GOTO") {
-                return true;
-            }
+    for (std::size_t i = 0; i < head.size(); ++i) {
+        const auto c = static_cast<unsigned char>(head[i]);
+        if ((c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') ||
+            c == 0x7F) {
+            return i;
         }
     }
-    return false;
+    return std::nullopt;
+}
+
+int lineOfOffset(std::string_view text, std::size_t offset) {
+    return static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n')) + 1;
+}
+
+struct LineCounts {
+    int gcode = 0, apt = 0;
+    int firstUnknownLine = 0;
+};
+
+LineCounts classifyLines(std::string_view text) {
+    LineCounts counts;
+    std::size_t begin = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+    int number = 0;
+    int meaningful = 0;
+    while (begin < text.size() && meaningful < kLinesToClassify) {
+        const std::size_t newline = text.find('\n', begin);
+        const std::size_t end = newline == std::string_view::npos ? text.size() : newline;
+        std::string_view line = text.substr(begin, end - begin);
+        line.remove_prefix(std::min(line.find_first_not_of(" \t"), line.size()));
+        ++number;
+        begin = end + 1;
+        if (isCommentOrBlank(line)) {
+            continue;
+        }
+        ++meaningful;
+        if (looksLikeAptStatement(line)) {
+            ++counts.apt;
+        } else if (looksLikeGcodeBlock(line)) {
+            ++counts.gcode;
+        } else if (counts.firstUnknownLine == 0) {
+            counts.firstUnknownLine = number;
+        }
+    }
+    return counts;
+}
+
+std::optional<ProgramFormat> formatOfContent(std::string_view text, int& unknownLine) {
+    if (table::looksLikePointTable(text)) {
+        return ProgramFormat::Table;
+    }
+    const LineCounts counts = classifyLines(text);
+    unknownLine = counts.firstUnknownLine;
+    if (counts.apt == 0 && counts.gcode == 0) {
+        return std::nullopt;
+    }
+    return counts.apt > counts.gcode ? ProgramFormat::Apt : ProgramFormat::Gcode;
 }
 
 } // namespace
 
+Result<ProbedFormat> detectFormat(const std::filesystem::path& path, std::string_view text) {
+    const std::string file = path.string();
+    if (const auto binary = binaryByte(text)) {
+        return makeError(
+            ErrorCode::Parse,
+            "not a text program: binary data (byte " +
+                std::to_string(static_cast<unsigned>(static_cast<unsigned char>(text[*binary]))) +
+                ") where G-code, CL data or a point table was expected",
+            {file, lineOfOffset(text, *binary), 0});
+    }
+    const std::optional<ProgramFormat> byExtension = formatOfExtension(path);
+    int unknownLine = 0;
+    const std::optional<ProgramFormat> byContent = formatOfContent(text, unknownLine);
+    if (!byContent) {
+        if (text.find_first_not_of(" \t\r\n") == std::string_view::npos && byExtension) {
+            return ProbedFormat{*byExtension, std::nullopt}; // empty: the reader says so
+        }
+        return makeError(ErrorCode::Parse,
+                         "format not recognised: expected G-code (blocks such as 'N10 G1 X1.5 "
+                         "Y2. Z3. A45.'), APT/CLSF CL data (statements such as "
+                         "'GOTO/1.5,2,3,0,0,1') or a point table (lines of x y z i j k numbers)",
+                         {file, std::max(unknownLine, 1), 0});
+    }
+    ProbedFormat probed{*byContent, std::nullopt};
+    if (byExtension && *byExtension != *byContent) {
+        probed.warning = file + ": the extension says " + toString(*byExtension) +
+                         " but the content is " + toString(*byContent) + "; read as " +
+                         toString(*byContent);
+    }
+    return probed;
+}
+
 ProgramFormat probeFormat(const std::filesystem::path& path, std::string_view text) {
-    static constexpr std::array<std::string_view, 6> kGcode{".nc",    ".ngc", ".tap",
-                                                            ".gcode", ".mpf", ".iso"};
-    static constexpr std::array<std::string_view, 5> kApt{".cl", ".cls", ".apt", ".aptsource",
-                                                          ".clsf"};
-    const std::string extension = lowerExtension(path);
-    if (std::find(kGcode.begin(), kGcode.end(), extension) != kGcode.end()) {
-        return ProgramFormat::Gcode;
+    if (auto probed = detectFormat(path, text)) {
+        return probed->format;
     }
-    if (std::find(kApt.begin(), kApt.end(), extension) != kApt.end()) {
-        return ProgramFormat::Apt;
-    }
-    return containsGotoStatement(text) ? ProgramFormat::Apt : ProgramFormat::Gcode;
+    return formatOfExtension(path).value_or(ProgramFormat::Gcode);
 }
 
 const toolpath::Toolpath& LoadedProgram::path() const {
@@ -73,8 +225,11 @@ const std::string& LoadedProgram::text() const {
 }
 
 ProgramFormat LoadedProgram::format() const {
-    return std::holds_alternative<nc::GcodeProgram>(document) ? ProgramFormat::Gcode
-                                                              : ProgramFormat::Apt;
+    if (std::holds_alternative<nc::GcodeProgram>(document)) {
+        return ProgramFormat::Gcode;
+    }
+    return std::holds_alternative<cl::AptProgram>(document) ? ProgramFormat::Apt
+                                                            : ProgramFormat::Table;
 }
 
 Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,
@@ -89,11 +244,33 @@ Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileN
         resolved.angleUnit = program->angleUnit; // the written program is read back in it
         return LoadedProgram{std::move(*program), resolved};
     }
+    if (format == ProgramFormat::Table) {
+        auto program = table::parsePointTable(text, fileName, options);
+        if (!program) {
+            return std::unexpected(program.error());
+        }
+        return LoadedProgram{std::move(*program), options};
+    }
     auto program = cl::parseApt(text, fileName, options);
     if (!program) {
         return std::unexpected(program.error());
     }
     return LoadedProgram{std::move(*program), options};
+}
+
+Result<LoadedProgram> readProgramText(std::string_view text, const std::filesystem::path& path,
+                                      const kinematics::MachineModel& machine,
+                                      const ReadOptions& options) {
+    auto probed = detectFormat(path, text);
+    if (!probed) {
+        return std::unexpected(probed.error());
+    }
+    auto program = parseProgram(text, path.string(), probed->format, machine, options);
+    if (program && probed->warning) {
+        program->mutablePath().warnings.insert(program->mutablePath().warnings.begin(),
+                                               *probed->warning);
+    }
+    return program;
 }
 
 Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
@@ -103,7 +280,7 @@ Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
     if (!text) {
         return std::unexpected(text.error());
     }
-    return parseProgram(*text, path.string(), probeFormat(path, *text), machine, options);
+    return readProgramText(*text, path, machine, options);
 }
 
 } // namespace bladeaxis::io

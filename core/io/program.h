@@ -6,23 +6,37 @@
 #include "core/io/cl/apt_reader.h"
 #include "core/io/nc/gcode_reader.h"
 #include "core/io/read_options.h"
+#include "core/io/table/point_table.h"
 
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <variant>
 
 namespace bladeaxis::io {
 
-enum class ProgramFormat { Gcode, Apt };
+enum class ProgramFormat { Gcode, Apt, Table };
 
 const char* toString(ProgramFormat format);
 
-// Guesses the format from the file extension (.nc .ngc .tap .gcode .mpf .iso -> G-code;
-// .cl .cls .apt .aptsource .clsf -> APT) and, for other names, from the text (a GOTO/ statement
-// means APT).
+struct ProbedFormat {
+    ProgramFormat format = ProgramFormat::Gcode;
+    std::optional<std::string> warning; // the extension said otherwise
+};
+
+// The format of a program, decided by its content: the first meaningful lines (comments and
+// blank lines skipped) are G-code blocks ("N10 G1 X1."), APT/CLSF statements ("GOTO/1,2,3",
+// "PARTNO", "$$ comment") or rows of numbers with at most a header line (a point table). The
+// extension (.nc .ngc .tap .gcode .mpf .spf .iso, .cl .cls .apt .aptsource .clsf, .txt .csv
+// .xyz) only breaks a tie; when the content contradicts it, the content wins with a warning.
+// Errors (ErrorCode::Parse, file:line): binary data, or text in none of the formats.
+Result<ProbedFormat> detectFormat(const std::filesystem::path& path, std::string_view text);
+
+// The format detectFormat finds, or the extension's when the content is not recognised.
 ProgramFormat probeFormat(const std::filesystem::path& path, std::string_view text);
 
 struct LoadedProgram {
-    std::variant<nc::GcodeProgram, cl::AptProgram> document;
+    std::variant<nc::GcodeProgram, cl::AptProgram, table::TableProgram> document;
     // The options the program was read with, as resolved by the reader (a detected angle unit
     // is recorded here): the written program is read back with the same ones.
     ReadOptions options;
@@ -33,6 +47,12 @@ struct LoadedProgram {
     const std::string& text() const; // the program as read, byte for byte
     ProgramFormat format() const;
 };
+
+// Detects the format of text read from `path` and parses it; a contradicting extension becomes
+// the first warning of the toolpath.
+Result<LoadedProgram> readProgramText(std::string_view text, const std::filesystem::path& path,
+                                      const kinematics::MachineModel& machine,
+                                      const ReadOptions& options = {});
 
 // Reads and parses a program. G-code needs the machine (its axes are turned into CL by FK).
 Result<LoadedProgram> loadProgram(const std::filesystem::path& path,

@@ -105,8 +105,7 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
     if (!content) {
         return std::unexpected(content.error());
     }
-    return io::parseProgram(*content, spec.program.string(),
-                            io::probeFormat(spec.program, *content), machine, spec.read);
+    return io::readProgramText(*content, spec.program, machine, spec.read);
 }
 
 Status checkCancelled(const CancelToken& cancel) {

@@ -65,10 +65,12 @@ Result<std::string> rewriteProgram(const RescheduleInput& input,
         std::copy(passAxes.begin(), passAxes.end(), axes.begin() + input.passFirst);
         return io::nc::rewriteGcode(*gcode, axes, *input.machine);
     }
-    const auto& apt = std::get<io::cl::AptProgram>(input.program->document);
     std::vector<ClRecord> records = all;
     std::copy(passRecords.begin(), passRecords.end(), records.begin() + input.passFirst);
-    return io::cl::rewriteApt(apt, records);
+    if (const auto* table = std::get_if<io::table::TableProgram>(&input.program->document)) {
+        return io::table::rewritePointTable(*table, records);
+    }
+    return io::cl::rewriteApt(std::get<io::cl::AptProgram>(input.program->document), records);
 }
 
 // Reads the written text back and measures how far its ball centres are from the input's.

@@ -14,7 +14,7 @@ namespace bladeaxis::toolpath {
 
 enum class MotionKind { Rapid, Feed };
 
-enum class SourceFormat { Gcode, Apt };
+enum class SourceFormat { Gcode, Apt, Table };
 
 struct ClRecord {
     Vec3 tip = Vec3::Zero();   // O: tool tip (lowest point of the ball) in W, mm

@@ -287,7 +287,11 @@ Result<std::string> rewritePointTable(const TableProgram& program,
                                            records[r].tip.z(), axis.x(),
                                            axis.y(),           axis.z()};
         const TableRecordSource& source = program.sources[r];
-        for (std::size_t c = 0; c < 6; ++c) {
+        // Columns may be in any order ("i j k x y z"): copy them in the order they are written.
+        std::array<std::size_t, 6> order{0, 1, 2, 3, 4, 5};
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return source.begin[a] < source.begin[b]; });
+        for (const std::size_t c : order) {
             const std::size_t begin = source.lineBegin + source.begin[c];
             const std::string_view old(program.text.data() + begin, source.length[c]);
             const double oldValue = parseNumber(old).value_or(0.0);

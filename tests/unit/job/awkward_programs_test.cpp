@@ -3,6 +3,7 @@
 
 #include "core/base/file_io.h"
 #include "core/base/units.h"
+#include "core/io/table/point_table.h"
 
 #include <gtest/gtest.h>
 
@@ -195,6 +196,48 @@ TEST(AwkwardPrograms, CrlfAndContinuationLinesRescheduleLikeTheCleanProgram) {
     const auto result = runAndWrite(spec);
     ASSERT_TRUE(result.has_value()) << result.error().toString();
     expectSameSchedule(*result, cleanAptResult(), 1e-12);
+}
+
+// CL data that is only GOTO lines (no FEDRAT, no CUTTER) needs the feed and the radius from the
+// user; with them it is the clean program.
+TEST(AwkwardPrograms, HeaderlessGotoListNeedsTheFeedAndThenReschedulesLikeTheCleanProgram) {
+    const CleanPass& clean = cleanPass();
+    AptStyle style;
+    style.header = false;
+    JobSpec spec = rescheduleJob(writeProgram(
+        "headerless.cl", aptText(clean.path, clean.toolRadius, clean.feedMmPerMin, style)));
+    expectRefused(spec, ErrorCode::Parse, "--feed");
+    spec.read.feedMmPerS = units::perMinuteToPerSecond(clean.feedMmPerMin);
+    const auto result = runAndWrite(spec);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    expectSameSchedule(*result, cleanAptResult(), 1e-12);
+}
+
+// x y z i j k tables, whitespace or CSV, with or without a header line, are read by content
+// whatever their extension, and re-schedule like the clean program once the feed is given.
+TEST(AwkwardPrograms, PointTablesRescheduleLikeTheCleanProgram) {
+    const CleanPass& clean = cleanPass();
+    struct Variant {
+        std::string name;
+        char separator;
+        bool header;
+    };
+    for (const Variant& variant :
+         {Variant{"table.txt", ' ', false}, Variant{"table.csv", ',', true},
+          Variant{"table_named_as.nc", ';', true}}) {
+        JobSpec spec = rescheduleJob(
+            writeProgram(variant.name, tableText(clean.path, variant.separator, variant.header)));
+        expectRefused(spec, ErrorCode::Parse, "--feed");
+        spec.read.feedMmPerS = units::perMinuteToPerSecond(clean.feedMmPerMin);
+        const auto result = runAndWrite(spec);
+        ASSERT_TRUE(result.has_value()) << variant.name << ": " << result.error().toString();
+        expectSameSchedule(*result, cleanAptResult(), 1e-12);
+        // The written table reads back to the schedule's own tool axes.
+        const std::string written = readTextFile(spec.outputProgram).value_or("");
+        const auto reread = io::table::parsePointTable(written, "written", spec.read);
+        ASSERT_TRUE(reread.has_value()) << reread.error().toString();
+        ASSERT_EQ(reread->path.records.size(), clean.path.records.size());
+    }
 }
 
 } // namespace

@@ -90,6 +90,7 @@ class AptReader {
     std::vector<Error> m_errors;
     bool m_finished = false;
     bool m_pathEnded = false;
+    int m_lastStatementLine = 0;         // where a file without FINI stops
     std::optional<double> m_defaultFeed; // mm/s, for CL data without FEDRAT
     bool m_reportedMissingFeed = false;
     std::uint32_t m_frame = 0;     // index of the MSYS frame in force
@@ -486,6 +487,7 @@ Result<AptProgram> AptReader::run() {
                 {}});
             break;
         }
+        m_lastStatementLine = m_statement.firstLine();
         detail::parseStatement(m_statement.body, m_parsed);
         dispatch();
     }
@@ -497,7 +499,10 @@ Result<AptProgram> AptReader::run() {
                          SourceLocation{std::string(m_file), 1, 1});
     }
     if (!m_finished && !m_pathEnded) { // a file cut short still parses statement by statement
-        warn("no FINI or END-OF-PATH: the file may be truncated");
+        m_program.path.warnings.push_back(
+            std::string(m_file) + ":" + std::to_string(m_lastStatementLine) +
+            ": the file ends here, at its last statement, without FINI or END-OF-PATH: it may "
+            "be truncated");
     }
     return std::move(m_program);
 }

@@ -189,6 +189,7 @@ TEST(ParseApt, FileWithoutFiniOrEndOfPathIsReadWithATruncationWarning) {
     ASSERT_TRUE(truncated.has_value());
     ASSERT_EQ(truncated->path.warnings.size(), 1u);
     EXPECT_NE(truncated->path.warnings[0].find("may be truncated"), std::string::npos);
+    EXPECT_EQ(truncated->path.warnings[0].rfind("c.cls:4:", 0), 0u) << "names the last line";
 }
 
 } // namespace

@@ -1,0 +1,2 @@
+Toolpath export
+This file lists the finishing pass.

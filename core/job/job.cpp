@@ -180,6 +180,23 @@ std::optional<double> jobToolRadius(const JobSpec& spec, std::optional<double> g
     return spec.toolRadius ? spec.toolRadius : generated ? generated : path.toolRadius;
 }
 
+// The largest ball a blade finishing job plausibly uses, with a wide margin: a radius beyond it
+// is a typo or a unit slip (1e12, a diameter in micrometres) whose ball centres lie metres off
+// the part, and every figure computed from them would be nonsense.
+constexpr double kMaxToolRadiusMm = 500.0;
+
+Status checkToolRadius(std::optional<double> radius, const toolpath::Toolpath& path) {
+    if (!radius || (*radius > 0.0 && *radius <= kMaxToolRadiusMm)) {
+        return {};
+    }
+    return makeError(ErrorCode::InvalidArgument,
+                     "a ball radius of " + formatShortest(*radius) +
+                         " mm is not a ball-end cutter: expected more than 0 and at most " +
+                         formatShortest(kMaxToolRadiusMm) +
+                         " mm (--tool-radius, job key tool_radius_mm, or the file's CUTTER)",
+                     {path.sourceFile});
+}
+
 bool checksCad(const JobSpec& spec) {
     return !spec.cad.file.empty() || spec.demo;
 }
@@ -395,6 +412,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     result.warnings = result.program.path().warnings;
     result.toolRadius =
         jobToolRadius(spec, generatedRadius, result.program.path(), result.warnings);
+    if (auto status = checkToolRadius(result.toolRadius, result.program.path()); !status) {
+        return std::unexpected(status.error());
+    }
     for (const std::string& warning : result.warnings) {
         progress.warning(warning);
     }

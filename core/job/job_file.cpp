@@ -502,7 +502,7 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
     if (!spec.outputDir.empty()) {
         json["output_dir"] = relative(spec.outputDir);
     }
-    return json.dump(2) + "\n";
+    return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 } // namespace bladeaxis::job

@@ -285,7 +285,9 @@ Status writeComparison(const JobSpec& spec, const JobResult& result,
     const compare::Comparison& comparison = *result.comparison;
     const std::string name = fs::path(result.program.path().sourceFile).filename().string();
     const std::pair<const char*, std::string> files[] = {
-        {"compare.json", report::compareJson(comparison).dump(2) + "\n"},
+        {"compare.json", report::compareJson(comparison)
+                                 .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+                             "\n"},
         {"compare.csv", report::compareCsv(comparison)},
         {"report.html", report::compareHtml(comparison, name)}};
     for (const auto& [file, text] : files) {
@@ -385,7 +387,8 @@ Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
 }
 
 std::string reportJsonText(const JobResult& result, const JobSpec* spec) {
-    return reportJson(result, spec).dump(2) + "\n";
+    return reportJson(result, spec).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+           "\n";
 }
 
 namespace {

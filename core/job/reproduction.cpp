@@ -239,7 +239,7 @@ std::string reproductionJsonText(const ReproductionResult& result) {
         json["per_blade"].push_back(entry);
     }
     json["timing"] = {{"total_s", result.seconds}};
-    return json.dump(2) + "\n";
+    return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::string reproductionCsv(const ReproductionResult& result) {

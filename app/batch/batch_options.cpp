@@ -172,8 +172,9 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
         ->check(CLI::IsMember({"tip", "centre"}));
     cli.add_option(
            "--derivatives", raw.derivatives,
-           "spline (default), fd (finite differences) or filter (controller-like, --filter-ms)")
-        ->check(CLI::IsMember({"spline", "fd", "filter"}));
+           "spline (default: micrometre chords merged, docs/figures.md), raw-spline (through "
+           "every point), fd (finite differences) or filter (controller-like, --filter-ms)")
+        ->check(CLI::IsMember({"spline", "raw-spline", "fd", "filter"}));
     cli.add_option("--filter-ms", raw.filterMs.text,
                    "Moving-average window of --derivatives filter, ms (default 8)");
     cli.add_flag("--json", raw.json, "Print report.json to standard output instead of the summary");

@@ -1,6 +1,7 @@
 #include "core/analysis/axis_profile.h"
 
 #include "core/analysis/derivatives.h"
+#include "core/analysis/motion_knots.h"
 
 #include <algorithm>
 #include <cmath>
@@ -147,6 +148,11 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
     for (std::size_t i = 0; i < n; ++i) {
         profile.time[i] = profile.pathParameter[i] / profile.feed;
     }
+    std::vector<std::size_t> knots;
+    if (options.method == DerivativeMethod::Spline) {
+        knots = motionKnots(profile.pathParameter, axes, profile.sampleRecord);
+        profile.mergedShortChords = n - knots.size();
+    }
     std::vector<double> position;
     for (kinematics::AxisId id : kinematics::kAllAxes) {
         position.resize(n);
@@ -155,7 +161,7 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         }
         Result<AxisSeries> series =
             differentiateAxis(profile.pathParameter, std::move(position), profile.feed,
-                              options.method, options.filterSeconds);
+                              options.method, options.filterSeconds, knots);
         if (!series) {
             Error error = std::move(series.error());
             error.message = std::string("axis ") + kinematics::axisName(id) + ": " + error.message;
@@ -181,6 +187,7 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
 namespace {
 constexpr std::pair<const char*, DerivativeMethod> kDerivativeMethodNames[] = {
     {"spline", DerivativeMethod::Spline},
+    {"raw-spline", DerivativeMethod::RawSpline},
     {"fd", DerivativeMethod::FiniteDifference},
     {"filter", DerivativeMethod::Filtered},
 };

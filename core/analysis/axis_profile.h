@@ -25,13 +25,16 @@ constexpr double kMinPathStepMm = 1e-9;
 // or the cutter centre Q = O + R V (then A'' = theta''(S) F^2 exactly for re-scheduled paths).
 enum class FeedReference { Tip, Centre };
 
-// Spline: not-a-knot cubic spline of each axis over s (the headline method). FiniteDifference:
-// raw 3-point differences (they mostly measure the CL discretisation). Filtered: the
-// controller-like filter of spec §8.1 (1 ms resampling, moving average applied twice).
-enum class DerivativeMethod { Spline, FiniteDifference, Filtered };
+// Spline (the default, docs/figures.md): not-a-knot cubic spline of each axis over s through
+// the samples that carry motion (motionKnots: micrometre chords on a straight move are merged),
+// evaluated at every sample. RawSpline: the same spline through every sample (spec §8.1's
+// headline method; a 2 um chord moves its peaks by tens of per cent). FiniteDifference: raw
+// 3-point differences (they mostly measure the CL discretisation). Filtered: the controller-like
+// filter of spec §8.1 (1 ms resampling, moving average applied twice).
+enum class DerivativeMethod { Spline, RawSpline, FiniteDifference, Filtered };
 
 // The names of the methods on the command line (--derivatives) and in job files: "spline",
-// "fd", "filter".
+// "raw-spline", "fd", "filter".
 const char* nameOf(DerivativeMethod method);
 std::optional<DerivativeMethod> derivativeMethodNamed(std::string_view name);
 
@@ -68,10 +71,11 @@ struct AxisProfile {
     // A reversals over ALL input records (indices are record indices): a rotation at a fixed
     // point, merged away for the derivatives, still turns the axis.
     ReversalAudit aReversals;
-    double pathLength = 0.0;                          // mm
-    double feed = 0.0;                                // mm/s used
-    double cycleTime = 0.0;                           // s at that constant feed
-    std::size_t mergedDuplicates = 0;                 // samples dropped because ds < kMinPathStepMm
+    double pathLength = 0.0;           // mm
+    double feed = 0.0;                 // mm/s used
+    double cycleTime = 0.0;            // s at that constant feed
+    std::size_t mergedDuplicates = 0;  // samples dropped because ds < kMinPathStepMm
+    std::size_t mergedShortChords = 0; // samples off the spline's knots (DerivativeMethod::Spline)
     FeedReference feedReference = FeedReference::Tip; // which arc length s is (report it)
     DerivativeMethod method = DerivativeMethod::Spline;
 

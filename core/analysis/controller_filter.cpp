@@ -10,7 +10,9 @@ namespace {
 std::vector<double> resample(std::span<const double> s, std::span<const double> position,
                              double feed, double step) {
     const double duration = (s.back() - s.front()) / feed;
-    const auto count = static_cast<std::size_t>(std::floor(duration / step)) + 2;
+    // Samples inside the path only: one past its end would repeat the end value and read as
+    // the axis stopping there.
+    const auto count = static_cast<std::size_t>(std::floor(duration / step)) + 1;
     std::vector<double> out(count);
     std::size_t segment = 0;
     for (std::size_t k = 0; k < count; ++k) {
@@ -48,9 +50,24 @@ std::vector<double> movingAverage(std::span<const double> values, std::size_t wi
     }
     const std::size_t half = width / 2;
     std::vector<double> prefix(n + 2 * half + 1, 0.0);
+    // Outside the series the axis continues its motion: the padding is the point reflection
+    // of the series about its end sample (2 q_0 - q_j), which any straight motion extends
+    // exactly. Holding the end value instead would stop an axis that is moving at the start of
+    // the pass dead within one window and show a start-up acceleration of about v / window that
+    // the program never commands.
+    const auto padded = [&](std::size_t k) {
+        if (k < half) {
+            const std::size_t j = std::min(half - k, n - 1);
+            return 2.0 * values[0] - values[j];
+        }
+        if (k - half >= n) {
+            const std::size_t j = std::min(k - half - (n - 1), n - 1);
+            return 2.0 * values[n - 1] - values[n - 1 - j];
+        }
+        return values[k - half];
+    };
     for (std::size_t k = 0; k < n + 2 * half; ++k) {
-        const std::size_t source = k < half ? 0 : std::min(k - half, n - 1);
-        prefix[k + 1] = prefix[k] + values[source];
+        prefix[k + 1] = prefix[k] + padded(k);
     }
     std::vector<double> out(n);
     const double span = static_cast<double>(2 * half + 1);

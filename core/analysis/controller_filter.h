@@ -15,12 +15,14 @@ struct FilteredAxis {
 };
 
 // s: strictly increasing path parameter (mm), position: axis samples, feed > 0 (mm/s),
-// windowSeconds >= 0 (0: no smoothing). The axis holds its end values outside the path.
+// windowSeconds >= 0 (0: no smoothing). Outside the path the axis continues its motion (the
+// series is extended by point reflection about its ends): an axis already moving at the start
+// of the pass shows no start-up peak.
 FilteredAxis filterAxis(std::span<const double> s, std::span<const double> position, double feed,
                         double windowSeconds, double step = 1e-3);
 
-// Centred moving average over `width` samples (odd; even widths grow by one), edges padded with
-// the end values.
+// Centred moving average over `width` samples (odd; even widths grow by one), edges padded by
+// point reflection about the end samples, so a straight run stays exactly straight.
 std::vector<double> movingAverage(std::span<const double> values, std::size_t width);
 
 // Linear interpolation of a uniformly stepped series at time t (clamped to its ends).

@@ -85,7 +85,7 @@ void finiteDifferences(std::span<const double> s, double feed, AxisSeries& serie
 
 // Returns the largest |velocity| found at the 4 interior points of the intervals.
 Status splineDerivatives(std::span<const double> s, double feed, AxisSeries& series,
-                         double& interiorPeak) {
+                         double& interiorPeak, std::span<const std::size_t> knots) {
     const std::size_t n = s.size();
     series.velocity.assign(n, 0.0);
     series.acceleration.assign(n, 0.0);
@@ -94,25 +94,64 @@ Status splineDerivatives(std::span<const double> s, double feed, AxisSeries& ser
     if (n < 2) {
         return {};
     }
-    const geometry::CubicSpline spline(s, series.position);
+    std::vector<double> knotS, knotQ;
+    knotS.reserve(knots.size());
+    knotQ.reserve(knots.size());
+    for (const std::size_t k : knots) {
+        knotS.push_back(s[k]);
+        knotQ.push_back(series.position[k]);
+    }
+    const geometry::CubicSpline spline(knotS, knotQ);
     if (!spline.isValid()) {
         return makeError(ErrorCode::Internal, "axis spline rejected validated samples");
     }
     const double feed2 = feed * feed;
     const double feed3 = feed2 * feed;
+    std::size_t knot = 0; // the knot at or before sample i
     for (std::size_t i = 0; i < n; ++i) {
-        series.velocity[i] = spline.firstDerivativeAtKnot(i) * feed;
-        series.acceleration[i] = spline.secondDerivativeAtKnot(i) * feed2;
-        series.jerk[i] = spline.thirdDerivativeAtKnot(i) * feed3;
+        while (knot + 1 < knots.size() && knots[knot + 1] <= i) {
+            ++knot;
+        }
+        if (knots[knot] == i) {
+            series.velocity[i] = spline.firstDerivativeAtKnot(knot) * feed;
+            series.acceleration[i] = spline.secondDerivativeAtKnot(knot) * feed2;
+            series.jerk[i] = spline.thirdDerivativeAtKnot(knot) * feed3;
+            continue;
+        }
+        // A merged sample lies inside the interval that starts at the knot before it.
+        series.velocity[i] = spline.firstDerivative(knot, s[i]) * feed;
+        series.acceleration[i] = spline.secondDerivative(knot, s[i]) * feed2;
+        series.jerk[i] = spline.thirdDerivative(knot) * feed3;
     }
-    for (std::size_t i = 0; i + 1 < n; ++i) {
-        const double h = s[i + 1] - s[i];
+    for (std::size_t i = 0; i + 1 < knotS.size(); ++i) {
+        const double h = knotS[i + 1] - knotS[i];
         for (int k = 1; k <= 4; ++k) {
-            const double x = s[i] + 0.2 * k * h;
+            const double x = knotS[i] + 0.2 * k * h;
             interiorPeak = std::max(interiorPeak, std::abs(spline.firstDerivative(i, x)));
         }
     }
     interiorPeak *= feed;
+    return {};
+}
+
+// Every sample's index: the knots of the raw spline.
+std::vector<std::size_t> allSamples(std::size_t n) {
+    std::vector<std::size_t> all(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        all[i] = i;
+    }
+    return all;
+}
+
+Status validateKnots(std::span<const std::size_t> knots, std::size_t n) {
+    const bool valid = knots.size() >= std::min<std::size_t>(n, 2) && knots.front() == 0 &&
+                       knots.back() == n - 1 && std::ranges::is_sorted(knots) &&
+                       std::ranges::adjacent_find(knots) == knots.end();
+    if (!valid) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "spline knots must be ascending sample indices from the first sample to "
+                         "the last");
+    }
     return {};
 }
 
@@ -163,7 +202,8 @@ Status validate(std::span<const double> s, std::span<const double> position, dou
 } // namespace
 
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,
-                                     double feed, DerivativeMethod method, double filterSeconds) {
+                                     double feed, DerivativeMethod method, double filterSeconds,
+                                     std::span<const std::size_t> knots) {
     if (Status ok = validate(s, position, feed); !ok) {
         return std::unexpected(std::move(ok.error()));
     }
@@ -182,8 +222,15 @@ Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<doub
         return series;
     }
     Peaks filteredPeaks;
-    if (method == DerivativeMethod::Spline) {
-        if (Status ok = splineDerivatives(s, feed, series, interiorPeak); !ok) {
+    if (method == DerivativeMethod::Spline || method == DerivativeMethod::RawSpline) {
+        std::vector<std::size_t> every;
+        if (knots.empty() || method == DerivativeMethod::RawSpline) {
+            every = allSamples(s.size());
+            knots = every;
+        } else if (Status ok = validateKnots(knots, s.size()); !ok) {
+            return std::unexpected(std::move(ok.error()));
+        }
+        if (Status ok = splineDerivatives(s, feed, series, interiorPeak, knots); !ok) {
             return std::unexpected(std::move(ok.error()));
         }
     } else if (method == DerivativeMethod::Filtered) {

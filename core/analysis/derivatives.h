@@ -15,9 +15,12 @@ namespace bladeaxis::analysis {
 // Geometry (a non-finite value, or derivatives that overflow).
 // filterSeconds is the window of DerivativeMethod::Filtered (ignored otherwise); its peaks are
 // taken over the whole 1 ms series, its per-sample values interpolated at the sample times.
+// knots (DerivativeMethod::Spline only): ascending sample indices with the first and the last
+// (motionKnots); the spline is fitted through them and evaluated at every sample. Empty: all.
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,
                                      double feed, DerivativeMethod method,
-                                     double filterSeconds = 0.008);
+                                     double filterSeconds = 0.008,
+                                     std::span<const std::size_t> knots = {});
 
 // The p-quantile (0 <= p <= 1) of |values|, linear interpolation between order statistics
 // (numpy's default). 0 for an empty input. O(n).

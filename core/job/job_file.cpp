@@ -212,7 +212,7 @@ Status JobReader::analysisOptions(const Json& root, JobSpec& spec) const {
                                 ? analysis::derivativeMethodNamed(value.get<std::string>())
                                 : std::optional<analysis::DerivativeMethod>();
         if (!method) {
-            return fail("derivatives", "expected \"spline\", \"fd\" or \"filter\"");
+            return fail("derivatives", "expected \"spline\", \"raw-spline\", \"fd\" or \"filter\"");
         }
         spec.analysis.method = *method;
     }

@@ -63,10 +63,8 @@ nlohmann::json analysisJson(const analysis::AxisProfile& profile,
     json["cycle_time_at_programmed_feed_s"] = profile.cycleTime;
     json["feed_reference"] =
         profile.feedReference == analysis::FeedReference::Centre ? "centre" : "tip";
-    json["derivatives"] = profile.method == analysis::DerivativeMethod::Spline ? "spline"
-                          : profile.method == analysis::DerivativeMethod::Filtered
-                              ? "controller filter"
-                              : "finite differences";
+    json["derivatives"] = analysis::nameOf(profile.method);
+    json["merged_short_chords"] = profile.mergedShortChords;
     nlohmann::json axes;
     for (AxisId axis : kinematics::kAllAxes) {
         axes[kinematics::axisName(axis)] = axisJson(axis, profile.axes[static_cast<int>(axis)]);

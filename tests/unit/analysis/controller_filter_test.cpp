@@ -55,6 +55,20 @@ TEST(ControllerFilter, TurnsAVelocityStepIntoABoundedAcceleration) {
     EXPECT_GT(raw->peakAcceleration, 5.0 * filtered->peakAcceleration);
 }
 
+TEST(ControllerFilter, AnAxisMovingFromTheFirstSampleShowsNoStartUpOrEndPeak) {
+    // The pass starts and ends with the axis turning at 20 units/s: the program commands no
+    // acceleration anywhere, so none may appear at the ends of the window.
+    std::vector<double> s, q;
+    for (int i = 0; i <= 137; ++i) {
+        s.push_back(0.37 * i);
+        q.push_back(0.74 * i + 5.0);
+    }
+    const auto filtered = differentiateAxis(s, q, 10.0, DerivativeMethod::Filtered, 0.008);
+    ASSERT_TRUE(filtered.has_value());
+    EXPECT_NEAR(filtered->peakVelocity, 20.0, 1e-6);
+    EXPECT_LT(filtered->peakAcceleration, 1e-4); // round-off; holding the ends gave 20 / 0.008
+}
+
 TEST(ControllerFilter, WiderWindowLowersThePeakAcceleration) {
     std::vector<double> s, q;
     for (int i = 0; i <= 400; ++i) {

@@ -22,10 +22,13 @@ struct MotionKnotTolerances {
     // tighter than the typical one) and far above the micrometre chords of a split move.
     double shortChordFraction = 0.1;
     // A short-chord sample within these of the straight move (in machine axes, interpolated
-    // linearly in the path parameter) from the previous knot to the next sample adds no motion:
-    // twice the finest resolution posts write (0.001 mm, 0.001 deg).
-    double linearMm = 2e-3;
-    double rotaryRad = 3.4906585039886593e-5; // 0.002 deg
+    // linearly in the path parameter) from the previous knot to the next sample adds no motion
+    // a controller follows: the tightest tolerances a finishing program is made to (5 um
+    // chordal, 0.01 deg of orientation), which is also what a control's compressor or corner
+    // blending merges. A split point of a smoothly curved schedule lies off the chord by
+    // t (1 - t) h^2 q'' / 2, micro-radians for a 5 um split of a 0.4 mm chord.
+    double linearMm = 5e-3;
+    double rotaryRad = 1.7453292519943295e-4; // 0.01 deg
 };
 
 // Ascending indices into `s` (the samples, s strictly increasing; sampleRecord maps a sample to

@@ -313,6 +313,92 @@ Result<LayerOptimum> minimumPeakLayer(const LayerBounds& bounds) {
     return optimum;
 }
 
+namespace {
+
+// A chord shorter than this fraction of the layer's median chord is a split of a move (posts
+// write micrometre chords), not a place where the schedule can bend: the figures merge such
+// samples (analysis/motion_knots.h), and the optimum is solved without them too. Kept in the
+// problem, a 2 um chord makes its second differences dominate and the optimum answers another
+// question than on the same path without the split.
+constexpr double kShortChordFraction = 0.1;
+
+double medianStep(std::span<const double> s) {
+    std::vector<double> steps;
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+        steps.push_back(s[i + 1] - s[i]);
+    }
+    if (steps.empty()) {
+        return 0.0;
+    }
+    const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+    std::nth_element(steps.begin(), middle, steps.end());
+    return *middle;
+}
+
+// The samples of the problem, without those a short chord away from the previous kept one (the
+// first and the last always kept).
+std::vector<std::size_t> samplesWithoutShortChords(std::span<const double> s) {
+    const double shortChord = kShortChordFraction * medianStep(s);
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const bool last = i + 1 == s.size();
+        if (kept.empty() || s[i] - s[kept.back()] >= shortChord) {
+            kept.push_back(i);
+        } else if (last) {
+            if (kept.size() > 1) {
+                kept.back() = i; // the end sample carries the end condition
+            } else {
+                kept.push_back(i);
+            }
+        }
+    }
+    return kept;
+}
+
+LayerBounds keepSamples(const LayerBounds& bounds, std::span<const std::size_t> kept) {
+    LayerBounds thinned = bounds;
+    thinned.s.clear();
+    thinned.lower.clear();
+    thinned.upper.clear();
+    for (const std::size_t i : kept) {
+        thinned.s.push_back(bounds.s[i]);
+        thinned.lower.push_back(bounds.lower[i]);
+        thinned.upper.push_back(bounds.upper[i]);
+    }
+    return thinned;
+}
+
+// theta at every sample: the kept samples' values, linear in s between them, within each
+// merged sample's own bounds.
+std::vector<double> atEverySample(const LayerBounds& bounds, std::span<const std::size_t> kept,
+                                  std::span<const double> keptTheta) {
+    std::vector<double> theta(bounds.s.size());
+    for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
+        const std::size_t a = kept[k], b = kept[k + 1];
+        for (std::size_t i = a; i < b; ++i) {
+            const double t = (bounds.s[i] - bounds.s[a]) / (bounds.s[b] - bounds.s[a]);
+            const double value = keptTheta[k] + t * (keptTheta[k + 1] - keptTheta[k]);
+            theta[i] = i == a ? value : std::clamp(value, bounds.lower[i], bounds.upper[i]);
+        }
+    }
+    theta[kept.back()] = keptTheta.back();
+    return theta;
+}
+
+Result<std::vector<double>> solveLayer(const LayerBounds& bounds, Objective objective) {
+    const std::vector<std::size_t> kept = samplesWithoutShortChords(bounds.s);
+    const bool thinned = kept.size() < bounds.s.size() && kept.size() >= 4;
+    const LayerBounds problem = thinned ? keepSamples(bounds, kept) : bounds;
+    auto optimum =
+        objective == Objective::SmoothestQp ? smoothestLayer(problem) : minimumPeakLayer(problem);
+    if (!optimum) {
+        return std::unexpected(optimum.error());
+    }
+    return thinned ? atEverySample(bounds, kept, optimum->theta) : std::move(optimum->theta);
+}
+
+} // namespace
+
 Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Objective objective) {
     const auto started = std::chrono::steady_clock::now();
     const std::size_t n = reference.thetaAbsolute.size();
@@ -321,16 +407,14 @@ Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Obj
     const auto& layers = reference.layers;
     for (std::size_t k = 0; k < layers.size(); ++k) {
         const LayerBounds bounds = boundsOf(layers[k], k == 0, k + 1 == layers.size());
-        auto optimum =
-            objective == Objective::SmoothestQp ? smoothestLayer(bounds) : minimumPeakLayer(bounds);
-        if (!optimum) {
-            Error error = optimum.error();
+        auto theta = solveLayer(bounds, objective);
+        if (!theta) {
+            Error error = theta.error();
             error.message = "layer " + std::to_string(k + 1) + ": " + error.message;
             return std::unexpected(error);
         }
         for (std::size_t j = 0; j < layers[k].inputIndex.size(); ++j) {
-            path.thetaAbsolute[layers[k].inputIndex[j]] =
-                layers[k].junctionAngle + optimum->theta[j];
+            path.thetaAbsolute[layers[k].inputIndex[j]] = layers[k].junctionAngle + (*theta)[j];
         }
         ++path.layers;
     }

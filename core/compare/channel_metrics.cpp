@@ -23,6 +23,18 @@ std::vector<double> secondDerivative(std::span<const double> s, std::span<const 
     return second;
 }
 
+namespace {
+
+double startingBranch(const scheduling::LayerResult& layer) {
+    if (!layer.thetaMin.empty() && !layer.thetaMax.empty() &&
+        std::isfinite(layer.thetaMin.front() + layer.thetaMax.front())) {
+        return 0.5 * (layer.thetaMin.front() + layer.thetaMax.front());
+    }
+    return layer.thetaOriginal.empty() ? 0.0 : layer.thetaOriginal.front();
+}
+
+} // namespace
+
 std::vector<std::vector<double>> layerThetas(const scheduling::ScheduleResult& reference,
                                              std::span<const Vec3> axes) {
     std::vector<std::vector<double>> thetas;
@@ -30,7 +42,11 @@ std::vector<std::vector<double>> layerThetas(const scheduling::ScheduleResult& r
     for (const scheduling::LayerResult& layer : reference.layers) {
         std::vector<double> theta;
         theta.reserve(layer.inputIndex.size());
-        double previous = layer.thetaOriginal.empty() ? 0.0 : layer.thetaOriginal.front();
+        // The first sample takes the 2 pi branch nearest the channel's middle: the channel is
+        // what the figures are measured against, and a schedule may lie more than half a turn
+        // from the CAM orientation (starting from the original there picked the wrong branch).
+        // The rest follow by continuity, so a schedule that really leaves the channel shows.
+        double previous = startingBranch(layer);
         for (std::size_t index : layer.inputIndex) {
             const double absolute = scheduling::planeAngle(axes[index], reference.traversalSign);
             previous = geometry::unwrapNear(absolute - layer.junctionAngle, previous);

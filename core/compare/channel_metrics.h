@@ -22,7 +22,8 @@ struct ChannelMetrics {
 
 // theta of every layer sample of `reference`, for tool axes given per input sample (the
 // reference's layers index them through inputIndex), unwrapped along each layer from the
-// original theta at its first sample. Angles relative to each layer's junctionAngle, rad.
+// branch nearest the channel's middle at its first sample. Angles relative to each layer's
+// junctionAngle, rad.
 std::vector<std::vector<double>> layerThetas(const scheduling::ScheduleResult& reference,
                                              std::span<const Vec3> axes);
 

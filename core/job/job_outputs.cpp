@@ -393,11 +393,31 @@ std::string reportJsonText(const JobResult& result, const JobSpec* spec) {
 
 namespace {
 
-std::string percent(double before, double after) {
-    if (!(before > 0.0)) {
-        return "n/a";
+// "(61.3% lower)", "(12.0% higher)", or, when the input's figure is about zero and a
+// percentage would say nothing, "(the input's is about 0)".
+std::string change(double before, double after, std::string_view lowerWord,
+                   std::string_view higherWord) {
+    const double scale = std::max(std::abs(before), std::abs(after));
+    if (!(scale > 0.0)) {
+        return "(unchanged)";
     }
-    return formatFixed(100.0 * (before - after) / before, 1) + "%";
+    if (!(std::abs(before) > 1e-3 * scale)) {
+        return "(the input's is about 0)";
+    }
+    const double relative = 100.0 * (before - after) / before;
+    const bool lower = relative >= 0.0;
+    return "(" + formatFixed(std::abs(relative), 1) + "% " +
+           std::string(lower ? lowerWord : higherWord) + ")";
+}
+
+// "channel clearance >= 1.234 deg", or why there is no figure: every layer kept its original
+// orientation, which the channel check does not apply to.
+std::string clearanceText(const RescheduleOutcome& outcome) {
+    if (!std::isfinite(outcome.minChannelClearanceRad)) {
+        return "no layer re-scheduled, channel clearance not applicable";
+    }
+    return "channel clearance >= " +
+           formatFixed(units::radToDeg(outcome.minChannelClearanceRad), 3) + " deg";
 }
 
 std::string rescheduledSummary(const JobResult& result) {
@@ -417,23 +437,23 @@ std::string rescheduledSummary(const JobResult& result) {
     text += "A reversals  " + std::to_string(before.aReversals.count) + " -> " +
             std::to_string(after.aReversals.count) + "\n";
     text += "A peak vel.  " + formatFixed(units::radToDeg(a0.peakVelocity), 1) + " -> " +
-            formatFixed(units::radToDeg(a1.peakVelocity), 1) + " deg/s (" +
-            percent(a0.peakVelocity, a1.peakVelocity) + " lower)\n";
+            formatFixed(units::radToDeg(a1.peakVelocity), 1) + " deg/s " +
+            change(a0.peakVelocity, a1.peakVelocity, "lower", "higher") + "\n";
     text += "A peak acc.  " + formatFixed(units::radToDeg(a0.peakAcceleration), 0) + " -> " +
-            formatFixed(units::radToDeg(a1.peakAcceleration), 0) + " deg/s^2 (" +
-            percent(a0.peakAcceleration, a1.peakAcceleration) + " lower)\n";
+            formatFixed(units::radToDeg(a1.peakAcceleration), 0) + " deg/s^2 " +
+            change(a0.peakAcceleration, a1.peakAcceleration, "lower", "higher") + "\n";
     text += "T1           " + formatFixed(result.constantFeed.time, 1) + " -> " +
-            formatFixed(outcome.constantFeed.time, 1) + " s (" +
-            percent(result.constantFeed.time, outcome.constantFeed.time) + " shorter)\n";
+            formatFixed(outcome.constantFeed.time, 1) + " s " +
+            change(result.constantFeed.time, outcome.constantFeed.time, "shorter", "longer") + "\n";
     if (result.timeOptimal && outcome.timeOptimal) {
         text += "T2           " + formatFixed(*result.timeOptimal, 1) + " -> " +
-                formatFixed(*outcome.timeOptimal, 1) + " s (" +
-                percent(*result.timeOptimal, *outcome.timeOptimal) + " shorter, time-optimal)\n";
+                formatFixed(*outcome.timeOptimal, 1) + " s " +
+                change(*result.timeOptimal, *outcome.timeOptimal, "shorter", "longer") +
+                ", time-optimal\n";
     }
     text += "checks       ball centres kept within " +
-            formatFixed(outcome.maxCentreDeviationMm * 1000.0, 2) +
-            " um after re-reading; channel clearance >= " +
-            formatFixed(units::radToDeg(outcome.minChannelClearanceRad), 3) + " deg\n";
+            formatFixed(outcome.maxCentreDeviationMm * 1000.0, 2) + " um after re-reading; " +
+            clearanceText(outcome) + "\n";
     return text;
 }
 

@@ -120,16 +120,22 @@ CompareTableCell emptyCell() {
     return {std::nullopt, "-", {}};
 }
 
-// A fairness entry in display units: "A peak velocity: <setting> (203.45 deg/s)".
-std::string describeFairness(const compare::FairnessEntry& entry) {
-    std::string unit = "s";
-    double value = entry.value;
+// A fairness entry's value in the units of the tables beside it (deg/s for A, mm/s for the
+// linear axes, s for times): the metric is held in mm, rad, s inside.
+std::pair<double, std::string> fairnessDisplayValue(const compare::FairnessEntry& entry) {
     for (AxisId axis : kTableAxes) {
         if (entry.metric.starts_with(kinematics::axisName(axis))) {
-            value = display(axis, value);
-            unit = entry.metric.ends_with("velocity") ? velocityUnit(axis) : accelerationUnit(axis);
+            const bool velocity = entry.metric.ends_with("velocity");
+            return {display(axis, entry.value),
+                    velocity ? velocityUnit(axis) : accelerationUnit(axis)};
         }
     }
+    return {entry.value, "s"};
+}
+
+// A fairness entry in display units: "A peak velocity: <setting> (203.45 deg/s)".
+std::string describeFairness(const compare::FairnessEntry& entry) {
+    const auto [value, unit] = fairnessDisplayValue(entry);
     return entry.metric + ": " + entry.setting + " (" + formatShortest(value) + " " + unit + ")";
 }
 
@@ -538,8 +544,9 @@ nlohmann::json compareJson(const compare::Comparison& comparison) {
         json["quaternion_settings"].push_back(methodJson(setting, comparison));
     }
     for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
-        json["quaternion_fairness"][entry.metric] = {{"setting", entry.setting},
-                                                     {"value", entry.value}};
+        const auto [value, unit] = fairnessDisplayValue(entry);
+        json["quaternion_fairness"][entry.metric] = {
+            {"setting", entry.setting}, {"value", value}, {"unit", unit}};
     }
     json["quaternion_failures"] = comparison.quaternionFailures;
     json["optimum_failures"] = comparison.optimumFailures;
@@ -611,9 +618,10 @@ std::string compareHtml(const compare::Comparison& comparison, const std::string
     if (!comparison.quaternionFairness.empty()) {
         std::vector<std::vector<std::string>> fairness;
         for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
-            fairness.push_back({entry.metric, entry.setting, formatShortest(entry.value)});
+            const auto [value, unit] = fairnessDisplayValue(entry);
+            fairness.push_back({entry.metric, entry.setting, formatShortest(value) + " " + unit});
         }
-        page.table({"metric (internal units)", "best quaternion setting", "value"}, fairness);
+        page.table({"metric", "best quaternion setting", "value"}, fairness);
     }
     if (!original.sweep.empty()) {
         page.heading("Machining time against the rotary-axis limits");

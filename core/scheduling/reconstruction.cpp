@@ -2,6 +2,7 @@
 
 #include "core/base/number_io.h"
 #include "core/base/tolerances.h"
+#include "core/base/units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -72,8 +73,9 @@ std::string describeFailures(const ReconstructionCheck& check) {
         check.maxCentreErrorMm, ReconstructionCheck::kCentreLimitMm, "mm");
     add(!(check.maxUnitError < ReconstructionCheck::kUnitLimit), "tool axis length error",
         check.maxUnitError, ReconstructionCheck::kUnitLimit, "");
-    add(!(check.maxTiltError < ReconstructionCheck::kTiltLimit), "tilt B error", check.maxTiltError,
-        ReconstructionCheck::kTiltLimit, "rad");
+    add(!(check.maxTiltError < ReconstructionCheck::kTiltLimit), "tilt B error",
+        units::radToDeg(check.maxTiltError), units::radToDeg(ReconstructionCheck::kTiltLimit),
+        "deg");
     return text;
 }
 

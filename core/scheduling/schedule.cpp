@@ -243,9 +243,7 @@ void checkJunctions(ScheduleResult& result) {
 
 void addCheckWarnings(ScheduleResult& result) {
     if (!result.check.passes()) {
-        result.warnings.push_back("reconstruction check failed: centre error " +
-                                  std::to_string(result.check.maxCentreErrorMm) + " mm, tilt " +
-                                  std::to_string(result.check.maxTiltError));
+        result.warnings.push_back("reconstruction check failed: " + describeFailures(result.check));
     }
     if (result.check.reversals > 0) {
         result.warnings.push_back("the rotary axis reverses " +
@@ -253,8 +251,9 @@ void addCheckWarnings(ScheduleResult& result) {
     }
     for (std::size_t k = 0; k < result.layers.size(); ++k) {
         if (result.layers[k].minClearance < -1e-9) {
-            result.warnings.push_back("layer " + std::to_string(k) + " leaves the raw channel by " +
-                                      std::to_string(-result.layers[k].minClearance) + " rad");
+            result.warnings.push_back(
+                "layer " + std::to_string(k + 1) + " leaves the raw channel by " +
+                formatFixed(units::radToDeg(-result.layers[k].minClearance), 4) + " deg");
         }
     }
 }

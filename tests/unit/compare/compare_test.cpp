@@ -108,6 +108,22 @@ TEST(Compare, ChannelMetricsAgreeWithTheEnginesOwnClearance) {
     EXPECT_NEAR(comparison.find("stheta-best")->channel.minClearance, engineClearance, 1e-9);
 }
 
+TEST(Compare, ChannelMetricsDoNotDependOnHowFarTheCamOrientationIsFromTheSchedule) {
+    // A CAM orientation more than half a turn from the schedule must not put the schedule on
+    // another 2 pi branch of the channel.
+    scheduling::ScheduleResult reference = demoComparison().reference;
+    const ChannelMetrics before = measureInChannel(reference, reference.newAxes);
+    for (auto& layer : reference.layers) {
+        for (double& theta : layer.thetaOriginal) {
+            theta += 3.9; // 223 deg
+        }
+    }
+    const ChannelMetrics after = measureInChannel(reference, reference.newAxes);
+    EXPECT_EQ(after.samplesOutside, 0U);
+    EXPECT_NEAR(after.minClearance, before.minClearance, 1e-12);
+    EXPECT_NEAR(after.peakSecondDerivative, before.peakSecondDerivative, 1e-9);
+}
+
 TEST(Compare, WrongNumberOfAxesIsAnError) {
     EvaluationContext context = demo().context();
     context.reference = &demoComparison().reference;

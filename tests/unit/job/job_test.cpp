@@ -6,6 +6,7 @@
 
 #include <clocale>
 #include <filesystem>
+#include <limits>
 #include <regex>
 
 namespace bladeaxis::job {
@@ -150,6 +151,34 @@ TEST(Job, OriginalReadyHookSeesTheProgramBeforeTheReschedule) {
     EXPECT_FALSE(rescheduledYet);
     EXPECT_EQ(records, result->pass.count);
     EXPECT_GT(records, 0u);
+}
+
+TEST(JobSummary, SaysHigherWhenAFigureRoseAndNeverPrintsANegativeReduction) {
+    auto result = runDemo();
+    ASSERT_TRUE(result.has_value() && result->rescheduled);
+    auto& before = result->original.axes[static_cast<int>(kinematics::AxisId::A)];
+    const auto& after = result->rescheduled->profile.axis(kinematics::AxisId::A);
+    before.peakVelocity = after.peakVelocity / 10.0;
+    const std::string summary = formatSummary(*result);
+    EXPECT_NE(summary.find("deg/s (900.0% higher)"), std::string::npos) << summary;
+    EXPECT_FALSE(std::regex_search(summary, std::regex(R"(-[0-9.]+%)"))) << summary;
+}
+
+TEST(JobSummary, AnInputFigureOfAboutZeroGetsNoPercentage) {
+    auto result = runDemo();
+    ASSERT_TRUE(result.has_value() && result->rescheduled);
+    result->original.axes[static_cast<int>(kinematics::AxisId::A)].peakVelocity = 1e-12;
+    const std::string summary = formatSummary(*result);
+    EXPECT_NE(summary.find("(the input's is about 0)"), std::string::npos) << summary;
+}
+
+TEST(JobSummary, NoLayerReScheduledSaysSoInsteadOfAnInfiniteClearance) {
+    auto result = runDemo();
+    ASSERT_TRUE(result.has_value() && result->rescheduled);
+    result->rescheduled->minChannelClearanceRad = std::numeric_limits<double>::infinity();
+    const std::string summary = formatSummary(*result);
+    EXPECT_EQ(summary.find("inf"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("channel clearance not applicable"), std::string::npos) << summary;
 }
 
 } // namespace

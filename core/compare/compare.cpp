@@ -199,7 +199,7 @@ Status addOptimum(Add& add, Comparison& comparison) {
                                                           comparison.reference.traversalSign));
         }
         const char* setting = objective == optimal::Objective::SmoothestQp
-                                  ? "minimum integral of theta''^2, ADMM"
+                                  ? "minimum integral of theta''^2, interior point"
                                   : "minimum peak theta'', interior point";
         if (auto s = add(name, setting, std::move(axes), optimum->seconds); !s) {
             return s;

@@ -1,6 +1,6 @@
 #include "core/optimal/layer_optimum.h"
 
-#include "core/optimal/interior_point_lp.h"
+#include "core/optimal/interior_point.h"
 
 #include <algorithm>
 #include <array>
@@ -12,8 +12,9 @@ namespace bladeaxis::optimal {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 using Triplet = Eigen::Triplet<double>;
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Vector = Eigen::VectorXd;
 
 // One second difference of the objective: D2 = sum coefficient * theta[column], weighted by
 // the length of S it stands for (w_i of spec §9.1).
@@ -76,46 +77,64 @@ void addRow(const SecondDifferenceRow& row, double scale, Eigen::Index rowIndex,
     }
 }
 
-struct Rows {
-    std::vector<Triplet> triplets;
-    std::vector<double> lower, upper;
-    Eigen::Index count = 0;
+// Bounds and monotone differences as rows A x <= b, and the junction conditions as rows
+// E x = d, on the first n variables.
+struct LayerRows {
+    std::vector<Triplet> inequality, equality;
+    std::vector<double> rhs, equalityRhs;
 
-    void add(std::initializer_list<std::pair<Eigen::Index, double>> entries, double lo, double hi) {
-        for (const auto& [col, value] : entries) {
-            triplets.emplace_back(count, col, value);
+    static void add(std::vector<Triplet>& rows, std::vector<double>& values,
+                    std::initializer_list<std::pair<Eigen::Index, double>> entries, double value) {
+        const auto row = static_cast<Eigen::Index>(values.size());
+        for (const auto& [col, coefficient] : entries) {
+            rows.emplace_back(row, col, coefficient);
         }
-        lower.push_back(lo);
-        upper.push_back(hi);
-        ++count;
+        values.push_back(value);
+    }
+    void lessEqual(std::initializer_list<std::pair<Eigen::Index, double>> entries, double value) {
+        add(inequality, rhs, entries, value);
+    }
+    void equal(std::initializer_list<std::pair<Eigen::Index, double>> entries, double value) {
+        add(equality, equalityRhs, entries, value);
+    }
+
+    void into(ConvexProgram& problem, Eigen::Index columns) const {
+        problem.A.resize(static_cast<Eigen::Index>(rhs.size()), columns);
+        problem.A.setFromTriplets(inequality.begin(), inequality.end());
+        problem.b = Eigen::Map<const Vector>(rhs.data(), static_cast<Eigen::Index>(rhs.size()));
+        problem.E.resize(static_cast<Eigen::Index>(equalityRhs.size()), columns);
+        problem.E.setFromTriplets(equality.begin(), equality.end());
+        problem.d = Eigen::Map<const Vector>(equalityRhs.data(),
+                                             static_cast<Eigen::Index>(equalityRhs.size()));
     }
 };
 
-// Bounds, monotone differences and the junction conditions, on the first n variables.
-void addScheduleRows(const LayerBounds& b, Rows& rows) {
+void addScheduleRows(const LayerBounds& b, LayerRows& rows) {
     const auto n = static_cast<Eigen::Index>(b.s.size());
     for (Eigen::Index i = 0; i < n; ++i) {
-        rows.add({{i, 1.0}}, b.lower[static_cast<std::size_t>(i)],
-                 b.upper[static_cast<std::size_t>(i)]);
-    }
-    for (Eigen::Index i = 0; i + 1 < n; ++i) {
-        rows.add({{i, -1.0}, {i + 1, 1.0}}, 0.0, kInfinity);
+        const auto k = static_cast<std::size_t>(i);
+        rows.lessEqual({{i, 1.0}}, b.upper[k]);
+        rows.lessEqual({{i, -1.0}}, -b.lower[k]);
+        if (i + 1 < n) {
+            rows.lessEqual({{i, 1.0}, {i + 1, -1.0}}, 0.0); // monotone
+        }
     }
     if (!b.freeStart) {
-        rows.add({{0, 1.0}}, b.start, b.start);
-        if (!b.mirroredStart) {
-            rows.add({{0, -1.0}, {1, 1.0}}, 0.0, 0.0);
+        rows.equal({{0, 1.0}}, b.start);
+        if (!b.mirroredStart && !b.freeStartSlope) {
+            rows.equal({{0, -1.0}, {1, 1.0}}, 0.0);
         }
     }
     if (!b.freeEnd) {
-        rows.add({{n - 1, 1.0}}, b.end, b.end);
-        if (!b.mirroredEnd) {
-            rows.add({{n - 2, -1.0}, {n - 1, 1.0}}, 0.0, 0.0);
+        rows.equal({{n - 1, 1.0}}, b.end);
+        if (!b.mirroredEnd && !b.freeEndSlope) {
+            rows.equal({{n - 2, -1.0}, {n - 1, 1.0}}, 0.0);
         }
     }
 }
 
-QpProblem smoothestQp(const LayerBounds& b) {
+// 1/2 theta' P theta = sum w_i D2_i^2 (times a constant).
+ConvexProgram smoothestQp(const LayerBounds& b) {
     const auto n = static_cast<Eigen::Index>(b.s.size());
     std::vector<Triplet> d2;
     const std::vector<SecondDifferenceRow> objective = objectiveRows(b);
@@ -125,73 +144,40 @@ QpProblem smoothestQp(const LayerBounds& b) {
     }
     SparseMatrix D(static_cast<Eigen::Index>(objective.size()), n);
     D.setFromTriplets(d2.begin(), d2.end());
-    Rows rows;
+    // Scaled by L^3 / 12: the cubic of spec §9.4 then has the objective theta_e^2, an angle
+    // squared, the scale the interior point's relative gap is measured against.
+    const double length = b.s.back() - b.s.front();
+    const double scale = std::pow(length, 3) / 12.0;
+    ConvexProgram qp;
+    qp.P = 2.0 * scale * SparseMatrix(D.transpose() * D);
+    qp.c = Vector::Zero(n);
+    LayerRows rows;
     addScheduleRows(b, rows);
-    QpProblem qp;
-    qp.P = 2.0 * SparseMatrix(D.transpose() * D); // 1/2 x'Px = sum w D2^2
-    qp.q = Vector::Zero(n);
-    qp.M.resize(rows.count, n);
-    qp.M.setFromTriplets(rows.triplets.begin(), rows.triplets.end());
-    qp.lower = Eigen::Map<const Vector>(rows.lower.data(), rows.count);
-    qp.upper = Eigen::Map<const Vector>(rows.upper.data(), rows.count);
+    rows.into(qp, n);
     return qp;
 }
 
 // Epigraph form: variables (theta, t), minimise t with -t <= (L^2 / 4) D2_i theta <= t. The
 // scale makes t the angle a bang-bang profile of that peak covers over the layer (the §9.4
 // oracle), i.e. of the order of the angles, which keeps the interior point well conditioned.
-SparseLp minimumPeakLp(const LayerBounds& b) {
+ConvexProgram minimumPeakLp(const LayerBounds& b) {
     const auto n = static_cast<Eigen::Index>(b.s.size());
     const double length = b.s.back() - b.s.front();
     const double scale = 0.25 * length * length;
-    std::vector<Triplet> inequality, equality;
-    std::vector<double> rhs, equalityRhs;
-    auto add = [&](std::vector<Triplet>& rows, std::vector<double>& values,
-                   std::initializer_list<std::pair<Eigen::Index, double>> entries, double value) {
-        const auto row = static_cast<Eigen::Index>(values.size());
-        for (const auto& [col, coefficient] : entries) {
-            rows.emplace_back(row, col, coefficient);
-        }
-        values.push_back(value);
-    };
-    for (Eigen::Index i = 0; i < n; ++i) {
-        const auto k = static_cast<std::size_t>(i);
-        add(inequality, rhs, {{i, 1.0}}, b.upper[k]);
-        add(inequality, rhs, {{i, -1.0}}, -b.lower[k]);
-        if (i + 1 < n) {
-            add(inequality, rhs, {{i, 1.0}, {i + 1, -1.0}}, 0.0); // monotone
-        }
-    }
+    LayerRows rows;
+    addScheduleRows(b, rows);
     for (const SecondDifferenceRow& d2 : objectiveRows(b)) {
         for (double sign : {1.0, -1.0}) {
-            const auto row = static_cast<Eigen::Index>(rhs.size());
-            addRow(d2, sign * scale, row, inequality);
-            inequality.emplace_back(row, n, -1.0);
-            rhs.push_back(0.0);
+            const auto row = static_cast<Eigen::Index>(rows.rhs.size());
+            addRow(d2, sign * scale, row, rows.inequality);
+            rows.inequality.emplace_back(row, n, -1.0);
+            rows.rhs.push_back(0.0);
         }
     }
-    if (!b.freeStart) {
-        add(equality, equalityRhs, {{0, 1.0}}, b.start);
-        if (!b.mirroredStart) {
-            add(equality, equalityRhs, {{0, -1.0}, {1, 1.0}}, 0.0);
-        }
-    }
-    if (!b.freeEnd) {
-        add(equality, equalityRhs, {{n - 1, 1.0}}, b.end);
-        if (!b.mirroredEnd) {
-            add(equality, equalityRhs, {{n - 2, -1.0}, {n - 1, 1.0}}, 0.0);
-        }
-    }
-    SparseLp lp;
+    ConvexProgram lp;
     lp.c = Vector::Zero(n + 1);
     lp.c[n] = 1.0;
-    lp.A.resize(static_cast<Eigen::Index>(rhs.size()), n + 1);
-    lp.A.setFromTriplets(inequality.begin(), inequality.end());
-    lp.b = Eigen::Map<const Vector>(rhs.data(), static_cast<Eigen::Index>(rhs.size()));
-    lp.E.resize(static_cast<Eigen::Index>(equalityRhs.size()), n + 1);
-    lp.E.setFromTriplets(equality.begin(), equality.end());
-    lp.d =
-        Eigen::Map<const Vector>(equalityRhs.data(), static_cast<Eigen::Index>(equalityRhs.size()));
+    rows.into(lp, n + 1);
     return lp;
 }
 
@@ -214,21 +200,49 @@ Status validate(const LayerBounds& b) {
 
 } // namespace
 
-LayerBounds boundsOf(const scheduling::LayerResult& layer, bool firstLayer, bool lastLayer) {
+namespace {
+
+// The monotone hull of the raw channel: a non-decreasing theta inside [thetaMin, thetaMax] lies
+// below every later thetaMax and above every earlier thetaMin, and any theta between these
+// running bounds can be made so.
+void rawMonotoneHull(const scheduling::LayerResult& layer, LayerBounds& b) {
+    const std::size_t n = layer.thetaMin.size();
+    b.lower.resize(n);
+    b.upper.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        b.lower[i] = i == 0 ? layer.thetaMin[0] : std::max(b.lower[i - 1], layer.thetaMin[i]);
+    }
+    for (std::size_t i = n; i-- > 0;) {
+        b.upper[i] = i + 1 == n ? layer.thetaMax[i] : std::min(b.upper[i + 1], layer.thetaMax[i]);
+    }
+}
+
+} // namespace
+
+LayerBounds boundsOf(const scheduling::LayerResult& layer, bool firstLayer, bool lastLayer,
+                     OptimumConstraints constraints) {
     LayerBounds b;
     b.s = layer.s;
-    b.lower = layer.lo;
-    b.upper = layer.hi;
+    const bool likeTheEngine = constraints == OptimumConstraints::LikeTheEngine;
+    if (likeTheEngine && layer.thetaMin.size() == layer.s.size() &&
+        layer.thetaMax.size() == layer.s.size()) {
+        rawMonotoneHull(layer, b);
+    } else {
+        b.lower = layer.lo;
+        b.upper = layer.hi;
+    }
     b.start = layer.theta.empty() ? 0.0 : layer.theta.front();
     b.end = layer.theta.empty() ? 0.0 : layer.theta.back();
-    b.freeStart = firstLayer;
-    b.freeEnd = lastLayer;
+    b.freeStart = firstLayer && !likeTheEngine;
+    b.freeEnd = lastLayer && !likeTheEngine;
+    b.freeStartSlope = firstLayer && likeTheEngine;
+    b.freeEndSlope = lastLayer && likeTheEngine;
     const std::size_t n = b.s.size();
     auto fits = [&](double value, std::size_t i) {
         return i < n && value >= b.lower[i] && value <= b.upper[i];
     };
-    b.mirroredStart = !firstLayer && n > 1 && !fits(b.start, 1);
-    b.mirroredEnd = !lastLayer && n > 1 && !fits(b.end, n - 2);
+    b.mirroredStart = !b.freeStart && !b.freeStartSlope && n > 1 && !fits(b.start, 1);
+    b.mirroredEnd = !b.freeEnd && !b.freeEndSlope && n > 1 && !fits(b.end, n - 2);
     return b;
 }
 
@@ -266,51 +280,40 @@ double secondDifferenceEnergy(std::span<const double> s, std::span<const double>
     return secondDifferenceEnergy(samples, theta);
 }
 
-Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds, const AdmmSettings& settings) {
-    if (auto status = validate(bounds); !status) {
-        return std::unexpected(status.error());
-    }
+namespace {
+
+Result<LayerOptimum> solveLayerProgram(const LayerBounds& bounds, const ConvexProgram& problem) {
     const auto started = std::chrono::steady_clock::now();
-    auto solution = solveQp(smoothestQp(bounds), settings);
+    auto solution = solveInteriorPoint(problem);
     if (!solution) {
         return std::unexpected(solution.error());
-    }
-    if (!solution->converged) {
-        return makeError(ErrorCode::Infeasible, "the optimum did not converge in " +
-                                                    std::to_string(solution->iterations) +
-                                                    " iterations (primal residual " +
-                                                    std::to_string(solution->primalResidual) + ")");
     }
     LayerOptimum optimum;
     const auto n = static_cast<Eigen::Index>(bounds.s.size());
     optimum.theta.assign(solution->x.data(), solution->x.data() + n);
     optimum.peakSecondDifference = peakSecondDifference(bounds, optimum.theta);
     optimum.secondDifferenceEnergy = secondDifferenceEnergy(bounds, optimum.theta);
-    optimum.solver = std::move(*solution);
+    optimum.iterations = solution->iterations;
+    optimum.relativeResidual = solution->relativeResidual;
     optimum.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return optimum;
+}
+
+} // namespace
+
+Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds) {
+    if (auto status = validate(bounds); !status) {
+        return std::unexpected(status.error());
+    }
+    return solveLayerProgram(bounds, smoothestQp(bounds));
 }
 
 Result<LayerOptimum> minimumPeakLayer(const LayerBounds& bounds) {
     if (auto status = validate(bounds); !status) {
         return std::unexpected(status.error());
     }
-    const auto started = std::chrono::steady_clock::now();
-    auto solution = solveLp(minimumPeakLp(bounds));
-    if (!solution) {
-        return std::unexpected(solution.error());
-    }
-    LayerOptimum optimum;
-    const auto n = static_cast<Eigen::Index>(bounds.s.size());
-    optimum.theta.assign(solution->x.data(), solution->x.data() + n);
-    optimum.peakSecondDifference = peakSecondDifference(bounds, optimum.theta);
-    optimum.secondDifferenceEnergy = secondDifferenceEnergy(bounds, optimum.theta);
-    optimum.solver.iterations = solution->iterations;
-    optimum.solver.converged = solution->converged;
-    optimum.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    return optimum;
+    return solveLayerProgram(bounds, minimumPeakLp(bounds));
 }
 
 namespace {
@@ -385,7 +388,9 @@ std::vector<double> atEverySample(const LayerBounds& bounds, std::span<const std
     return theta;
 }
 
-Result<std::vector<double>> solveLayer(const LayerBounds& bounds, Objective objective) {
+} // namespace
+
+Result<std::vector<double>> optimalLayer(const LayerBounds& bounds, Objective objective) {
     const std::vector<std::size_t> kept = samplesWithoutShortChords(bounds.s);
     const bool thinned = kept.size() < bounds.s.size() && kept.size() >= 4;
     const LayerBounds problem = thinned ? keepSamples(bounds, kept) : bounds;
@@ -397,8 +402,6 @@ Result<std::vector<double>> solveLayer(const LayerBounds& bounds, Objective obje
     return thinned ? atEverySample(bounds, kept, optimum->theta) : std::move(optimum->theta);
 }
 
-} // namespace
-
 Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Objective objective) {
     const auto started = std::chrono::steady_clock::now();
     const std::size_t n = reference.thetaAbsolute.size();
@@ -407,7 +410,7 @@ Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Obj
     const auto& layers = reference.layers;
     for (std::size_t k = 0; k < layers.size(); ++k) {
         const LayerBounds bounds = boundsOf(layers[k], k == 0, k + 1 == layers.size());
-        auto theta = solveLayer(bounds, objective);
+        auto theta = optimalLayer(bounds, objective);
         if (!theta) {
             Error error = theta.error();
             error.message = "layer " + std::to_string(k + 1) + ": " + error.message;

@@ -1,12 +1,10 @@
 #pragma once
 // The physical-limit baseline of spec §9: per layer, the best theta(S) under the same hull,
 // monotonicity and junction/end-slope constraints as the S-theta engine: `optimal-qp`, the
-// smoothest (minimum sum w_i D2_i^2, about the integral of theta''^2), solved by the ADMM of
-// admm.h; and `optimal-lp`, the minimum peak |D2_i|, solved by the interior-point method of
-// interior_point_lp.h (the ADMM does not reach an LP's vertex to a useful accuracy).
+// smoothest (minimum sum w_i D2_i^2, about the integral of theta''^2), and `optimal-lp`, the
+// minimum peak |D2_i|, both solved by the interior-point method of interior_point.h.
 
 #include "core/base/error.h"
-#include "core/optimal/admm.h"
 #include "core/scheduling/schedule.h"
 
 #include <span>
@@ -29,23 +27,45 @@ struct LayerBounds {
     // the condition is a mirrored ghost sample (theta_-1 = theta_1), the usual discrete form of
     // theta' = 0: its second difference 2 (theta_1 - theta_0) / h_0^2 joins the objective.
     bool mirroredStart = false, mirroredEnd = false;
+    // The value is held, the slope is not: the engine's outer ends (spec §3.3: the input
+    // orientation clamped into the hull, no lead segment).
+    bool freeStartSlope = false, freeEndSlope = false;
+};
+
+// What the optimum is held to.
+enum class OptimumConstraints {
+    // Like for like with the engine's output: the monotone hull of the raw channel (the channel
+    // the engine's schedule is checked against; the best preset may use all of its margin) and
+    // the engine's values at every layer end, with a zero slope where the engine has one (at
+    // the junctions; the path's outer ends hold the value only, as the engine's do).
+    LikeTheEngine,
+    // Spec §9.1 as written: the engine's hull shrunk by its margin, the outer ends free. The
+    // engine may leave this hull (into its margin), so it is not the engine's problem.
+    ShrunkHull,
 };
 
 // The junction values are the engine's; an end is mirrored where a flat step is infeasible.
-LayerBounds boundsOf(const scheduling::LayerResult& layer, bool firstLayer, bool lastLayer);
+LayerBounds boundsOf(const scheduling::LayerResult& layer, bool firstLayer, bool lastLayer,
+                     OptimumConstraints constraints = OptimumConstraints::LikeTheEngine);
 
 struct LayerOptimum {
     std::vector<double> theta;
     double peakSecondDifference = 0.0;   // max |D2_i| (mirrored ends included), rad/mm^2
     double secondDifferenceEnergy = 0.0; // sum w_i D2_i^2 (mirrored ends included)
-    QpSolution solver;
+    int iterations = 0;
+    double relativeResidual = 0.0; // of the interior point's KKT conditions
     double seconds = 0.0;
 };
 
 // Errors: InvalidArgument (fewer than 4 samples, sizes, an empty hull), Infeasible (the solver
 // did not converge to a feasible point).
-Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds, const AdmmSettings& settings = {});
+Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds);
 Result<LayerOptimum> minimumPeakLayer(const LayerBounds& bounds);
+
+// theta at every sample of `bounds` as optimalPath computes it: the layer solved without the
+// samples a short chord (under a tenth of the median) from the previous one, which are then
+// interpolated linearly within their own bounds (see docs/figures.md).
+Result<std::vector<double>> optimalLayer(const LayerBounds& bounds, Objective objective);
 
 // The optimal schedule of a whole path: every layer of the engine's result optimised, as an
 // absolute in-plane angle per input sample (merged duplicates share their sample's angle).

@@ -1,6 +1,7 @@
-// The §9 baseline: the ADMM QP against the closed form of §9.4, optimality checked by feasible
-// perturbations (the problem is convex: no feasible direction may lower the objective), and
-// against the engine, whose schedule is feasible for the same problem and so can never beat it.
+// The §9 baseline: the interior point's QP and LP against the closed forms of §9.4, optimality
+// checked by feasible perturbations (the problem is convex: no feasible direction may lower the
+// objective), and against the engine, whose schedule is feasible for the same problem and so can
+// never beat it.
 
 #include "core/blade/presets.h"
 #include "core/optimal/layer_optimum.h"
@@ -15,9 +16,8 @@ namespace bladeaxis::optimal {
 namespace {
 
 constexpr double kEndSlack = 1e-3;
-constexpr int kFamilyBlades = 10; // with the demo: about 2 s
-constexpr std::size_t kLargestConvergingQp = 401;
-constexpr std::size_t kLargestConvergingLp = 1001;
+constexpr int kFamilyBlades = 10;          // with the demo: about 2 s
+constexpr std::size_t kSpecSamples = 2001; // spec §10.1: n = 2000
 
 // An intermediate layer of length L from 0 to thetaEnd with a channel wide enough not to bind.
 LayerBounds wideLayer(double length, double thetaEnd, std::size_t samples) {
@@ -57,13 +57,11 @@ TEST(OptimalLayer, MinimumPeakIsTheBangBangOracle) {
 }
 
 // Spec §10.1 asks for the §9.4 analytic optima within 1 % at n = 2000 and a KKT residual below
-// 1e-6. Neither solver converges at n = 2001 on this wide layer: the ADMM not within its 50000
-// iterations (7 s; the Hessian's condition grows like n^4), the interior point not within its
-// 200. The checks run at the largest sizes that converge within test time (a known limit of
-// both solvers on long layers, reported by optimumFailures when it happens in a comparison).
-TEST(OptimalLayer, MinimumPeakIsTheBangBangOracleWithinOnePercentOnAThousandSamples) {
+// 1e-6. (The ADMM of spec §9.3 did not converge at n = 2001 within 50000 iterations: the
+// Hessian's condition grows like n^4. The interior point takes 20-40 Newton steps.)
+TEST(OptimalLayer, MinimumPeakIsTheBangBangOracleWithinOnePercentOnTwoThousandSamples) {
     const double length = 200.0, thetaEnd = 6.0;
-    auto lp = minimumPeakLayer(wideLayer(length, thetaEnd, kLargestConvergingLp));
+    auto lp = minimumPeakLayer(wideLayer(length, thetaEnd, kSpecSamples));
     ASSERT_TRUE(lp.has_value()) << lp.error().toString();
     const double peak = 4.0 * thetaEnd / (length * length);
     EXPECT_NEAR(lp->peakSecondDifference, peak, 0.01 * peak);
@@ -71,12 +69,11 @@ TEST(OptimalLayer, MinimumPeakIsTheBangBangOracleWithinOnePercentOnAThousandSamp
 
 TEST(OptimalLayer, SmoothestIsTheCubicOracleWithinOnePercentWithResidualsBelowOneMillionth) {
     const double length = 200.0, thetaEnd = 6.0;
-    auto qp = smoothestLayer(wideLayer(length, thetaEnd, kLargestConvergingQp));
+    auto qp = smoothestLayer(wideLayer(length, thetaEnd, kSpecSamples));
     ASSERT_TRUE(qp.has_value()) << qp.error().toString();
     const double energy = 12.0 * thetaEnd * thetaEnd / std::pow(length, 3);
     EXPECT_NEAR(qp->secondDifferenceEnergy, energy, 0.01 * energy);
-    EXPECT_LT(qp->solver.primalResidual, 1e-6);
-    EXPECT_LT(qp->solver.dualResidual, 1e-6);
+    EXPECT_LT(qp->relativeResidual, 1e-6);
 }
 
 std::vector<scheduling::LayerResult> scheduledLayers(const blade::BladeSpec& bladeSpec,
@@ -102,13 +99,13 @@ const DemoLayers& demo() {
     return d;
 }
 
-// Spec §9.4: the engine's schedule is feasible for the optimum's problem (same hull, monotone,
-// same junction values), so neither of its objectives can be below the optimum's. The slack
-// covers the solvers' tolerances (1e-7 relative for the ADMM, 1e-9 for the interior point) and
-// the flat end step of §9.1, which the engine meets analytically: where a corner reaches into
-// the first or last interval its first difference is up to ~1e-5 rad (turbine layers), not 0.
-// Over the demo, a symmetric blade and the family the engine stays >= 1.2x the optimum in
-// both objectives, so 0.1 % slack is far from hiding a violation.
+// Spec §9.4: the engine's schedule is feasible for the optimum's problem (the same raw channel,
+// monotone, the same end values and slopes; checked below), so neither of its objectives can be
+// below the optimum's. The slack covers the solver's tolerance (a relative KKT residual of 1e-9,
+// 1e-6 where it stalls) and the flat end step of §9.1, which the engine meets analytically: where a
+// corner reaches into the first or last interval its first difference is up to ~1e-5 rad (turbine
+// layers), not 0. Over the demo, a symmetric blade and the family the engine stays >= 1.2x the
+// optimum in both objectives, so 0.1 % slack is far from hiding a violation.
 struct Dominance {
     std::size_t layers = 0, mirroredEnds = 0;
 };
@@ -125,11 +122,16 @@ Dominance expectTheEngineNeverBeatsTheOptimum(const std::vector<scheduling::Laye
         if (!qp || !lp) {
             continue;
         }
+        // Like for like: the engine's schedule is a feasible point of the optimum's problem.
+        for (std::size_t i = 0; i < bounds.s.size(); ++i) {
+            EXPECT_GE(layers[k].theta[i], bounds.lower[i] - 1e-9) << label << " " << k << " " << i;
+            EXPECT_LE(layers[k].theta[i], bounds.upper[i] + 1e-9) << label << " " << k << " " << i;
+        }
         const double enginePeak = peakSecondDifference(bounds, layers[k].theta);
         const double engineEnergy = secondDifferenceEnergy(bounds, layers[k].theta);
         EXPECT_GE(enginePeak, (1.0 - slack) * lp->peakSecondDifference) << label << " " << k;
         EXPECT_GE(engineEnergy, (1.0 - slack) * qp->secondDifferenceEnergy) << label << " " << k;
-        // Up to the ADMM's feasibility tolerance: at a pinched end the QP may touch the bound
+        // Up to the solver's feasibility tolerance: at a pinched end the QP may touch the bound
         // ~1e-6 rad outside, which the mirrored sample's D2 (2 / h^2 per rad) shows in the peak.
         EXPECT_LE(lp->peakSecondDifference, qp->peakSecondDifference * (1.0 + 1e-3) + 1e-9)
             << "the min-peak optimum has the lowest peak, " << label << " layer " << k;

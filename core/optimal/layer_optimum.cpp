@@ -134,7 +134,7 @@ void addScheduleRows(const LayerBounds& b, LayerRows& rows) {
 }
 
 // 1/2 theta' P theta = sum w_i D2_i^2 (times a constant).
-ConvexProgram smoothestQp(const LayerBounds& b) {
+ConvexProgram smoothestQpOf(const LayerBounds& b) {
     const auto n = static_cast<Eigen::Index>(b.s.size());
     std::vector<Triplet> d2;
     const std::vector<SecondDifferenceRow> objective = objectiveRows(b);
@@ -160,7 +160,7 @@ ConvexProgram smoothestQp(const LayerBounds& b) {
 // Epigraph form: variables (theta, t), minimise t with -t <= (L^2 / 4) D2_i theta <= t. The
 // scale makes t the angle a bang-bang profile of that peak covers over the layer (the §9.4
 // oracle), i.e. of the order of the angles, which keeps the interior point well conditioned.
-ConvexProgram minimumPeakLp(const LayerBounds& b) {
+ConvexProgram minimumPeakLpOf(const LayerBounds& b) {
     const auto n = static_cast<Eigen::Index>(b.s.size());
     const double length = b.s.back() - b.s.front();
     const double scale = 0.25 * length * length;
@@ -302,18 +302,26 @@ Result<LayerOptimum> solveLayerProgram(const LayerBounds& bounds, const ConvexPr
 
 } // namespace
 
+ConvexProgram smoothestProgram(const LayerBounds& bounds) {
+    return smoothestQpOf(bounds);
+}
+
+ConvexProgram minimumPeakProgram(const LayerBounds& bounds) {
+    return minimumPeakLpOf(bounds);
+}
+
 Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds) {
     if (auto status = validate(bounds); !status) {
         return std::unexpected(status.error());
     }
-    return solveLayerProgram(bounds, smoothestQp(bounds));
+    return solveLayerProgram(bounds, smoothestQpOf(bounds));
 }
 
 Result<LayerOptimum> minimumPeakLayer(const LayerBounds& bounds) {
     if (auto status = validate(bounds); !status) {
         return std::unexpected(status.error());
     }
-    return solveLayerProgram(bounds, minimumPeakLp(bounds));
+    return solveLayerProgram(bounds, minimumPeakLpOf(bounds));
 }
 
 namespace {

@@ -5,6 +5,7 @@
 // minimum peak |D2_i|, both solved by the interior-point method of interior_point.h.
 
 #include "core/base/error.h"
+#include "core/optimal/interior_point.h"
 #include "core/scheduling/schedule.h"
 
 #include <span>
@@ -56,6 +57,12 @@ struct LayerOptimum {
     double relativeResidual = 0.0; // of the interior point's KKT conditions
     double seconds = 0.0;
 };
+
+// The two problems as the interior point solves them (for cross-checks with other solvers):
+// variables theta (and, for the LP, the peak's epigraph variable last). Bounds must be valid
+// (at least 4 samples, S increasing).
+ConvexProgram smoothestProgram(const LayerBounds& bounds);
+ConvexProgram minimumPeakProgram(const LayerBounds& bounds);
 
 // Errors: InvalidArgument (fewer than 4 samples, sizes, an empty hull), Infeasible (the solver
 // did not converge to a feasible point).

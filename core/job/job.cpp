@@ -11,6 +11,7 @@
 #include "core/job/demo_program.h"
 #include "core/kinematics/kinematics.h"
 #include "core/kinematics/machine_file.h"
+#include "core/kinematics/travel_limits.h"
 
 #include <chrono>
 
@@ -130,6 +131,12 @@ Status analyse(JobResult& result, const JobSpec& spec) {
         return std::unexpected(axes.error());
     }
     result.axes = std::move(*axes);
+    if (const auto excess = kinematics::firstTravelExcess(result.axes, result.machine)) {
+        result.warnings.push_back(
+            result.program.path().sourceFile + ":" + std::to_string(pass[excess->index].line) +
+            ": the input program drives " + kinematics::describe(*excess) + " of the machine '" +
+            result.machine.name + "' (is the machine file the machine it runs on?)");
+    }
     analysis::AxisProfileOptions options = spec.analysis;
     if (result.toolRadius) {
         options.toolRadius = *result.toolRadius;
@@ -427,8 +434,13 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
         cadSpec = std::move(*checked);
     }
     progress.progress(0.3, "analysing the original axis motion");
+    const std::size_t warningsBeforeAnalysis = result.warnings.size();
     if (auto status = analyse(result, spec); !status) {
         return std::unexpected(status.error());
+    }
+    // Now, not only in the summary: a refused output prints no summary.
+    for (std::size_t i = warningsBeforeAnalysis; i < result.warnings.size(); ++i) {
+        progress.warning(result.warnings[i]);
     }
     if (originalReady) {
         originalReady(result);

@@ -6,6 +6,7 @@
 #include "core/io/cl/apt.h"
 #include "core/io/nc/gcode.h"
 #include "core/kinematics/kinematics.h"
+#include "core/kinematics/travel_limits.h"
 
 #include <algorithm>
 #include <chrono>
@@ -189,6 +190,23 @@ Status checkModuloSteps(const RescheduleInput& input, const RescheduleOutcome& o
     return {};
 }
 
+// The written program must stay inside the machine's travel: a new orientation moves the linear
+// axes too (the ball centre is kept, the pivot is not), so a program inside its travel can be
+// re-scheduled out of it.
+Status checkTravel(const RescheduleInput& input, const RescheduleOutcome& outcome) {
+    const auto excess = kinematics::firstTravelExcess(outcome.axes, *input.machine);
+    if (!excess) {
+        return {};
+    }
+    return makeError(ErrorCode::CheckFailed,
+                     "the re-scheduled block would drive " + kinematics::describe(*excess) +
+                         " of the machine '" + input.machine->name +
+                         "'; nothing was written. Check that the machine file is the machine the "
+                         "program runs on and that the program's zero is where the machine "
+                         "expects it, or narrow the channel (--margin-deg) so the tool tilts less",
+                     {input.program->path().sourceFile, passOf(input)[excess->index].line, 0});
+}
+
 } // namespace
 
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel) {
@@ -234,6 +252,9 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(status.error());
     }
     if (auto status = checkModuloSteps(input, outcome); !status) {
+        return std::unexpected(status.error());
+    }
+    if (auto status = checkTravel(input, outcome); !status) {
         return std::unexpected(status.error());
     }
     if (input.analyseNewMotion) {

@@ -104,10 +104,11 @@ void buildPathParameter(std::span<const toolpath::ClRecord> records,
     auto pointOf = [&](const toolpath::ClRecord& r) -> Vec3 {
         return centre ? Vec3(r.tip + radius * r.axis) : r.tip;
     };
+    const bool timed = options.blockTimes && !centre;
     profile.pathParameter.reserve(records.size());
     profile.sampleRecord.reserve(records.size());
     Vec3 last = pointOf(records[0]);
-    double s = 0.0;
+    double s = 0.0, length = 0.0;
     profile.pathParameter.push_back(0.0);
     profile.sampleRecord.push_back(0);
     for (std::size_t i = 1; i < records.size(); ++i) {
@@ -117,12 +118,16 @@ void buildPathParameter(std::span<const toolpath::ClRecord> records,
             ++profile.mergedDuplicates;
             continue;
         }
-        s += step;
+        // A merged record's block time is carried by the next kept one: its chord is measured
+        // from the last kept point, and the feed of the block that ends there times it.
+        const double feed = records[i].feed;
+        s += timed && feed > 0.0 ? step * profile.feed / feed : step;
+        length += step;
         last = p;
         profile.pathParameter.push_back(s);
         profile.sampleRecord.push_back(i);
     }
-    profile.pathLength = s;
+    profile.pathLength = length;
 }
 
 } // namespace
@@ -142,7 +147,7 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
     profile.feedReference = options.feedReference;
     profile.method = options.method;
     buildPathParameter(records, options, profile);
-    profile.cycleTime = profile.pathLength / profile.feed;
+    profile.cycleTime = profile.pathParameter.back() / profile.feed;
     const std::size_t n = profile.pathParameter.size();
     profile.time.resize(n);
     for (std::size_t i = 0; i < n; ++i) {

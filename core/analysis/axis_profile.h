@@ -47,6 +47,13 @@ struct AxisProfileOptions {
     // ignored). A per-record feed would add impulsive accelerations at every feed step, which
     // measure the post-processor, not the tool orientation.
     double feedOverride = 0.0;
+    // The records' feeds are the program's block timing (G93 inverse time: each block lasts
+    // 1/F whatever its length, and the reader turns that into the tip speed of the block). Then
+    // the path parameter advances by F x the block's time instead of its tip chord, so every
+    // figure, T1 and T2 describe the motion as the program times it (a re-scheduled block with
+    // the same F but a new tip chord has a new tip speed). Tip feed reference only; the reported
+    // path length stays the tip's.
+    bool blockTimes = false;
     double toolRadius = 0.0;      // mm, required (> 0) for FeedReference::Centre
     double filterSeconds = 0.008; // moving-average window of DerivativeMethod::Filtered
 };

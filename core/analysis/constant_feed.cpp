@@ -54,7 +54,11 @@ ConstantFeedTime constantFeedTime(const AxisProfile& profile,
     }
     result.binding = tightest < feed ? tightestKind : ConstantFeedTime::Binding::Programmed;
     result.achievableFeed = std::min(feed, tightest);
-    result.time = profile.pathLength / result.achievableFeed;
+    // The path parameter is the tip's arc length, or F x the block times of a program timed by
+    // its blocks (AxisProfileOptions::blockTimes): the programmed time scaled to the feed.
+    const double parameterLength =
+        profile.pathParameter.empty() ? profile.pathLength : profile.pathParameter.back();
+    result.time = parameterLength / result.achievableFeed;
     return result;
 }
 

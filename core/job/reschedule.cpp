@@ -74,8 +74,14 @@ Result<std::string> rewriteProgram(const RescheduleInput& input,
     return io::cl::rewriteApt(std::get<io::cl::AptProgram>(input.program->document), records);
 }
 
-// Reads the written text back and measures how far its ball centres are from the input's.
-Result<double> verifyCentres(const RescheduleInput& input, const std::string& text) {
+// The written program as read back: how far its ball centres are from the input's, and the
+// tip feed of each pass record as the control will run it.
+struct WrittenProgram {
+    double maxCentreDeviationMm = 0.0;
+    std::vector<double> passFeeds; // mm/s
+};
+
+Result<WrittenProgram> readBackWritten(const RescheduleInput& input, const std::string& text) {
     const toolpath::Toolpath& original = input.program->path();
     auto reread = io::parseProgram(text, original.sourceFile + " (re-scheduled)",
                                    input.program->format(), *input.machine, input.program->options);
@@ -91,14 +97,17 @@ Result<double> verifyCentres(const RescheduleInput& input, const std::string& te
                          "the re-scheduled program has " + std::to_string(records.size()) +
                              " records, the input " + std::to_string(original.records.size()));
     }
-    double deviation = 0.0;
+    WrittenProgram written;
+    written.passFeeds.reserve(input.passCount);
     for (std::size_t i = input.passFirst; i < input.passFirst + input.passCount; ++i) {
-        deviation =
-            std::max(deviation, (toolpath::ballCentre(records[i], input.toolRadius) -
-                                 toolpath::ballCentre(original.records[i], input.toolRadius))
-                                    .norm());
+        written.maxCentreDeviationMm =
+            std::max(written.maxCentreDeviationMm,
+                     (toolpath::ballCentre(records[i], input.toolRadius) -
+                      toolpath::ballCentre(original.records[i], input.toolRadius))
+                         .norm());
+        written.passFeeds.push_back(records[i].feed);
     }
-    return deviation;
+    return written;
 }
 
 RescheduleOutcome outcomeFrom(scheduling::ScheduleResult schedule, std::span<const ClRecord> pass) {
@@ -209,6 +218,19 @@ Status checkTravel(const RescheduleInput& input, const RescheduleOutcome& outcom
 
 } // namespace
 
+bool passIsInverseTime(const io::LoadedProgram& program, std::size_t first, std::size_t count) {
+    const auto* gcode = std::get_if<io::nc::GcodeProgram>(&program.document);
+    if (gcode == nullptr) {
+        return false;
+    }
+    for (std::size_t i = first; i < first + count && i < gcode->sources.size(); ++i) {
+        if ((gcode->sources[i].flags & io::nc::kInverseTime) != 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel) {
     if (!(input.toolRadius > 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
@@ -238,16 +260,28 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     }
     outcome.programText = std::move(*text);
     outcome.stageSeconds.rewrite = clock.lap();
-    // The re-read check and the analysis of the new motion are independent: run them at once.
-    auto analysed = std::async(input.analyseNewMotion ? std::launch::async : std::launch::deferred,
+    // The analysis describes the program actually written. Its feeds are the input's unless
+    // the pass is in inverse time (G93), where the same F over a new tip chord is a new tip
+    // speed: then the analysis waits for the written program's feeds. Otherwise the re-read
+    // check and the analysis are independent and run at once.
+    const bool feedsFromWritten =
+        passIsInverseTime(*input.program, input.passFirst, input.passCount);
+    const bool analyseAtOnce = input.analyseNewMotion && !feedsFromWritten;
+    auto analysed = std::async(analyseAtOnce ? std::launch::async : std::launch::deferred,
                                [&] { return analyseNewMotion(input, outcome); });
-    auto deviation =
-        input.verifyByRereading ? verifyCentres(input, outcome.programText) : Result<double>(0.0);
+    auto written = input.verifyByRereading || feedsFromWritten
+                       ? readBackWritten(input, outcome.programText)
+                       : Result<WrittenProgram>(WrittenProgram{});
     outcome.stageSeconds.verify = clock.lap();
-    if (!deviation) {
-        return std::unexpected(deviation.error());
+    if (!written) {
+        return std::unexpected(written.error());
     }
-    outcome.maxCentreDeviationMm = *deviation;
+    outcome.maxCentreDeviationMm = written->maxCentreDeviationMm;
+    if (feedsFromWritten) {
+        for (std::size_t i = 0; i < outcome.records.size(); ++i) {
+            outcome.records[i].feed = written->passFeeds[i];
+        }
+    }
     if (auto status = checkOutcome(outcome, input.program->path().sourceFile); !status) {
         return std::unexpected(status.error());
     }

@@ -56,6 +56,12 @@ struct RescheduleInput {
 // own number precision (4 decimals) moves centres by well under this.
 constexpr double kCentreDeviationLimitMm = 5e-3;
 
+// True when a block of the pass is in inverse time (G93): its F fixes the block's time, so the
+// same F over a new tip chord is a new tip speed. The analyses of such a pass follow the
+// program's block times (AxisProfileOptions::blockTimes), and the analysis of the re-scheduled
+// program takes its feeds from the written program read back.
+bool passIsInverseTime(const io::LoadedProgram& program, std::size_t first, std::size_t count);
+
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel);
 
 } // namespace bladeaxis::job

@@ -20,6 +20,9 @@ inline constexpr std::uint16_t kNoWord = 0xFFFF;
 enum RecordFlag : std::uint8_t {
     kIncremental = 1, // G91: axis words are increments
     kInch = 2,        // G20: linear words are inches
+    // G93: F is the inverse of the block's time, so a block whose tip chord changes changes its
+    // tip speed when written back with the same F (its ball-centre speed does not).
+    kInverseTime = 4,
 };
 
 // Where one CL record lives in GcodeProgram::text. Offsets, not strings: 24 bytes per record,

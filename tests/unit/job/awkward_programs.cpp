@@ -108,8 +108,21 @@ std::string tableText(const toolpath::Toolpath& path, char separator, bool heade
     return text;
 }
 
+// F of block i: one F for G94, the feed over the tip chord into the block for G93 (the first
+// block's chord is the one out of it).
+std::string feedWord(const toolpath::Toolpath& path, std::size_t i, double feedMmPerMin,
+                     FeedMode feedMode) {
+    if (feedMode == FeedMode::PerMinute) {
+        return i == 0 ? " F" + number(feedMmPerMin, 1) : "";
+    }
+    const auto& records = path.records;
+    const std::size_t from = i == 0 ? 0 : i - 1, to = i == 0 ? 1 : i;
+    const double chord = (records[to].tip - records[from].tip).norm();
+    return " F" + number(feedMmPerMin / std::max(chord, 1e-6), 3);
+}
+
 std::string gcodeText(const toolpath::Toolpath& path, const kinematics::MachineModel& machine,
-                      double feedMmPerMin, RotaryUnit unit, double bNoiseDeg) {
+                      double feedMmPerMin, RotaryUnit unit, double bNoiseDeg, FeedMode feedMode) {
     std::vector<kinematics::ToolPose> poses;
     for (const ClRecord& record : path.records) {
         poses.push_back({record.tip, record.axis.normalized()});
@@ -122,13 +135,14 @@ std::string gcodeText(const toolpath::Toolpath& path, const kinematics::MachineM
         return unit == RotaryUnit::Radians ? number(radians, 7)
                                            : number(units::radToDeg(radians), 4);
     };
-    std::string text = "(AWKWARD BLADE PROGRAM)\nG21 G90 G94\n";
+    std::string text = feedMode == FeedMode::PerMinute ? "(AWKWARD BLADE PROGRAM)\nG21 G90 G94\n"
+                                                       : "(AWKWARD BLADE PROGRAM)\nG21 G90 G93\n";
     for (std::size_t i = 0; i < solved.axes.size(); ++i) {
         const kinematics::MachineAxes& axes = solved.axes[i];
         const double noise = (i % 2 == 0 ? 1.0 : -1.0) * units::degToRad(bNoiseDeg);
         text += "G1 X" + number(axes.x, 4) + " Y" + number(axes.y, 4) + " Z" + number(axes.z, 4) +
                 " A" + rotary(axes.a) + " B" + rotary(axes.b + noise);
-        text += i == 0 ? " F" + number(feedMmPerMin, 1) + "\n" : "\n";
+        text += feedWord(path, i, feedMmPerMin, feedMode) + "\n";
     }
     return text + "M30\n";
 }

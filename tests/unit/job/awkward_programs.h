@@ -40,11 +40,15 @@ std::string aptText(const toolpath::Toolpath& path, double toolRadius, double fe
 std::string tableText(const toolpath::Toolpath& path, char separator, bool header);
 
 enum class RotaryUnit { Degrees, Radians };
+enum class FeedMode { PerMinute, InverseTime }; // G94 (one F) or G93 (F on every block)
 
 // ISO G-code of the records on `machine` (inverse kinematics, A continuous), rotary words in
-// `unit`, a program end M30; `bNoiseDeg` adds +-that much, alternating, to every B word.
+// `unit`, a program end M30; `bNoiseDeg` adds +-that much, alternating, to every B word. In
+// inverse time every block's F is the feed over its tip chord (1/min), as a post writes it for
+// a constant tip feed.
 std::string gcodeText(const toolpath::Toolpath& path, const kinematics::MachineModel& machine,
-                      double feedMmPerMin, RotaryUnit unit, double bNoiseDeg = 0.0);
+                      double feedMmPerMin, RotaryUnit unit, double bNoiseDeg = 0.0,
+                      FeedMode feedMode = FeedMode::PerMinute);
 
 // The same ball centres with the tilt B rising linearly by `extraTiltDeg` along the pass: a
 // five-axis program (each tool axis turned about the in-plane normal, the tip moved to keep Q).

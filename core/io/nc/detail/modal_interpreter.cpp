@@ -328,7 +328,8 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
         source.wordLength[axis] = static_cast<std::uint8_t>(word.valueEnd - word.valueBegin);
     }
     source.flags =
-        static_cast<std::uint8_t>((m_incremental ? kIncremental : 0) | (m_inch ? kInch : 0));
+        static_cast<std::uint8_t>((m_incremental ? kIncremental : 0) | (m_inch ? kInch : 0) |
+                                  (m_inverseTime ? kInverseTime : 0));
     source.setOutside = m_outside;
     m_outside = 0;
     if (!(m_known & kBBit) && !m_warnedDefaultB) {

@@ -168,7 +168,7 @@ Result<cad::CadShape> bladeShape(const JobSpec& spec) {
 // Why the file gave no radius, in the words of its format.
 std::string radiusSourceHint(io::ProgramFormat format) {
     return format == io::ProgramFormat::Gcode
-               ? "G-code does not state it, unless its post writes it in a header comment"
+               ? "the G-code states no ball end in a header comment such as (T1 D=8. CR=4.)"
                : "the CL data has no CUTTER or TLDATA statement";
 }
 

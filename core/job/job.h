@@ -26,7 +26,7 @@ struct JobSpec {
     std::filesystem::path program;     // input NC or CL file; ignored when demo is set
     bool demo = false;                 // run on the built-in demo blade program instead
     std::filesystem::path machineFile; // empty: the built-in default blade machine
-    std::optional<double> toolRadius;  // mm; overrides the radius stated in a CL file
+    std::optional<double> toolRadius;  // mm; overrides the radius the program states
     io::ReadOptions read;              // angle unit, feed and table columns the file may not state
     // When a program counts as a four-axis blade pass (B tolerance, distance to the channel).
     ProgramCheckOptions check;

@@ -1,9 +1,11 @@
 #include "core/io/nc/gcode_reader.h"
 
 #include "core/base/file_io.h"
+#include "core/base/number_io.h"
 #include "core/io/nc/detail/block_scanner.h"
 #include "core/io/nc/detail/error_list.h"
 #include "core/io/nc/detail/modal_interpreter.h"
+#include "core/io/nc/detail/tool_comment.h"
 
 #include <algorithm>
 #include <cctype>
@@ -65,8 +67,44 @@ std::size_t byteOrderMarkLength(std::string_view text) {
     return text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
 }
 
+struct StatedTool {
+    detail::ToolComment tool;
+    int line = 0;
+};
+
+// The ball radius the header comments state (tools stated before the first move), converted to
+// mm; a warning instead where they state no ball end or disagree, so the radius must be given.
+void applyStatedTools(const std::vector<StatedTool>& tools, GcodeProgram& program) {
+    if (tools.empty()) {
+        return;
+    }
+    const std::string& file = program.path.sourceFile;
+    const bool inch = !program.sources.empty() && (program.sources.front().flags & kInch) != 0;
+    const double toMm = inch ? 25.4 : 1.0;
+    for (const StatedTool& stated : tools) {
+        if (!stated.tool.isBallEnd()) {
+            program.path.warnings.push_back(
+                file + ":" + std::to_string(stated.line) +
+                ": the header names a cutter D=" + formatShortest(stated.tool.diameter) +
+                " CR=" + formatShortest(stated.tool.cornerRadius) +
+                ", not a ball end (CR is not D/2): its radius is not used");
+            return;
+        }
+        if (stated.tool.cornerRadius != tools.front().tool.cornerRadius) {
+            program.path.warnings.push_back(
+                file + ":" + std::to_string(stated.line) + ": the header names ball radii " +
+                formatShortest(tools.front().tool.cornerRadius) + " (line " +
+                std::to_string(tools.front().line) + ") and " +
+                formatShortest(stated.tool.cornerRadius) + ": neither is used");
+            return;
+        }
+    }
+    program.path.toolRadius = tools.front().tool.cornerRadius * toMm;
+}
+
 void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machine,
                     const ReadOptions& options, detail::ErrorList& errors) {
+    std::vector<StatedTool> statedTools;
     detail::ModalInterpreter interpreter(program, machine, errors, options.angleUnit);
     detail::ScannedBlock block;
     const std::string_view text = program.text;
@@ -90,6 +128,11 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
                 interpreter.noteDeclaredUnit(*unit, lineNumber);
             }
         }
+        if (program.path.records.empty()) {
+            if (const auto tool = detail::toolInComment(line)) {
+                statedTools.push_back({*tool, lineNumber});
+            }
+        }
         if (auto issue = detail::scanBlock(line, block)) {
             errors.add(lineNumber, static_cast<int>(issue->offset) + 1, std::move(issue->message));
         } else if (ended && block.hasWords) {
@@ -111,6 +154,7 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
         begin = end + 1;
     }
     interpreter.finish();
+    applyStatedTools(statedTools, program);
     // [A] A program cut short (a failed transfer, a full disk) still parses block by block;
     // without its M2/M30 the engineer must be told, since the re-scheduled copy would be as
     // short.

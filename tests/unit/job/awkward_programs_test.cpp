@@ -2,6 +2,7 @@
 // refusal that names its condition and line and writes nothing, or the clean program's result.
 
 #include "core/base/file_io.h"
+#include "core/base/number_io.h"
 #include "core/base/units.h"
 #include "core/io/table/point_table.h"
 
@@ -149,6 +150,29 @@ TEST(AwkwardPrograms, BNoiseWithinTheToleranceIsSnappedAndReschedulesLikeTheClea
     EXPECT_TRUE(reported);
     // 0.001 deg of B moves the programmed tip by microns; the schedule follows within 0.01 deg.
     expectSameSchedule(*noisy, *reference, units::degToRad(0.01));
+}
+
+TEST(AwkwardPrograms, AGcodeProgramWhosePostStatesTheBallNeedsNoToolRadius) {
+    const CleanPass& clean = cleanPass();
+    const auto machine = kinematics::defaultBladeMachine();
+    const std::string moves =
+        gcodeText(clean.path, machine, clean.feedMmPerMin, RotaryUnit::Degrees);
+    const std::string header = "(T1 D=" + formatShortest(2.0 * clean.toolRadius) +
+                               " CR=" + formatShortest(clean.toolRadius) + " - ball end mill)\n";
+    JobSpec stated = rescheduleJob(writeProgram("stated_ball.nc", header + moves));
+    stated.toolRadius.reset();
+    const auto result = runAndWrite(stated);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    ASSERT_TRUE(result->toolRadius.has_value());
+    EXPECT_DOUBLE_EQ(*result->toolRadius, clean.toolRadius);
+    EXPECT_TRUE(fs::exists(stated.outputProgram));
+
+    JobSpec unstated = rescheduleJob(writeProgram("unstated_ball.nc", moves));
+    unstated.toolRadius.reset();
+    const auto refused = runAndWrite(unstated);
+    ASSERT_FALSE(refused.has_value());
+    EXPECT_NE(refused.error().message.find("such as (T1 D=8. CR=4.)"), std::string::npos)
+        << refused.error().toString();
 }
 
 TEST(AwkwardPrograms, BNoiseAboveTheToleranceIsRefusedUnlessTheUserAllowsIt) {

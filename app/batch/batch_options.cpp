@@ -91,6 +91,18 @@ std::string optionName(const std::string& key) {
 }
 
 // One command-line option per entry of the parameter schema (style guide §14).
+
+// A preset value as a person reads it: 12 significant digits, so that 30 deg held in radians
+// shows as -30, not -29.999999999999996 (job files keep the exact value).
+std::string forHelp(const std::string& value) {
+    const auto number = parseNumber(value);
+    if (!number || *number == 0.0 || !std::isfinite(*number)) {
+        return value;
+    }
+    const double scale = std::pow(10.0, 11.0 - std::floor(std::log10(std::abs(*number))));
+    return formatShortest(std::round(*number * scale) / scale);
+}
+
 void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
     auto* group = cli.add_option_group("Scheduling",
                                        "Parameters of the S-theta re-scheduling (spec Appendix A)");
@@ -121,8 +133,8 @@ void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
             }
             help += "}";
         }
-        help += " (best: " + info.get(scheduling::bestPreset()) +
-                ", faithful: " + info.get(scheduling::faithfulPreset()) + ")";
+        help += " (best: " + forHelp(info.get(scheduling::bestPreset())) +
+                ", faithful: " + forHelp(info.get(scheduling::faithfulPreset())) + ")";
         group->add_option_function<std::string>(
             optionName(info.key),
             [&raw, key = info.key](const std::string& value) { raw.parameters[key] = value; },

@@ -32,6 +32,14 @@ TEST(BatchCli, HelpListsTheExitCodes) {
     EXPECT_NE(result.out.find("--machine"), std::string::npos);
 }
 
+TEST(BatchCli, HelpShowsPresetValuesAsAPersonWritesThem) {
+    const CliRun result = run({"--batch", "--help"});
+    EXPECT_EQ(result.code, 0);
+    EXPECT_NE(result.out.find("(best: -30, faithful: -30)"), std::string::npos);
+    EXPECT_EQ(result.out.find("99999999"), std::string::npos) << "a degree value shown in full";
+    EXPECT_EQ(result.out.find("00000001"), std::string::npos);
+}
+
 TEST(BatchCli, VersionPrintsTheVersion) {
     const CliRun result = run({"--batch", "--version"});
     EXPECT_EQ(result.code, kExitOk);

@@ -302,7 +302,9 @@ Status JobReader::layerEdits(const Json& list, JobSpec& spec) const {
 }
 
 Status JobReader::read(const Json& root, JobSpec& spec) const {
-    if (!root.is_object() || root.value("schema", "") != kSchema) {
+    const bool schemaNamed = root.is_object() && root.contains("schema") &&
+                             root.at("schema").is_string() && root.at("schema") == kSchema;
+    if (!schemaNamed) {
         return fail("schema", std::string("expected \"schema\": \"") + kSchema + "\"");
     }
     for (const auto& [key, target] :
@@ -424,7 +426,19 @@ Status parseJobJson(std::string_view text, const fs::path& path, JobSpec& spec) 
         return makeError(ErrorCode::InvalidArgument, "invalid JSON in the job file",
                          {path.string()});
     }
-    return JobReader(text, path).read(root, spec);
+    // A value of the wrong type where the reader asks nlohmann for one ("schema": true, a
+    // layer number of -1) throws; it is the file's error, not a bug: an invalid argument naming
+    // the file, never an internal error.
+    try {
+        return JobReader(text, path).read(root, spec);
+    } catch (const Json::exception& error) {
+        const std::string what = error.what();
+        const std::size_t bracket = what.find("] ");
+        return makeError(ErrorCode::InvalidArgument,
+                         "unexpected value in the job file: " +
+                             (bracket == std::string::npos ? what : what.substr(bracket + 2)),
+                         {path.string()});
+    }
 }
 
 Status readJobFile(const fs::path& path, JobSpec& spec) {

@@ -129,6 +129,21 @@ TEST(JobFile, AnOutputProgramOverAFileThatIsNoProgramIsRefused) {
     EXPECT_TRUE(parseJobJson(previous, dir / "job.json", spec).has_value());
 }
 
+// Found by fuzzing: values of the wrong JSON type used to escape as exceptions (exit 1).
+TEST(JobFile, ValuesOfTheWrongTypeAreInvalidArgumentsNamingTheFile) {
+    for (const std::string text :
+         {"{\"schema\": true}", "{\"schema\": \"bladeaxis-job/1\", \"columns\": 5}",
+          "{\"schema\": \"bladeaxis-job/1\", \"layer_edits\": [{\"layer\": -1}]}",
+          "{\"schema\": \"bladeaxis-job/1\", \"layer_edits\": [{\"layer\": 1, "
+          "\"margin_deg\": \"wide\"}]}"}) {
+        JobSpec spec;
+        const auto status = parseJobJson(text, "/jobs/job.json", spec);
+        ASSERT_FALSE(status.has_value()) << text;
+        EXPECT_EQ(status.error().code, ErrorCode::InvalidArgument) << status.error().toString();
+        EXPECT_EQ(status.error().where.file, "/jobs/job.json");
+    }
+}
+
 TEST(JobFile, UnknownDerivativeMethodNamesTheKey) {
     const std::string text = "{\n \"schema\": \"bladeaxis-job/1\",\n \"derivatives\": \"cubic\"\n}";
     JobSpec spec;

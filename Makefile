@@ -4,7 +4,7 @@
 BUILD_DIR := build/dev
 JOBS ?= $(shell nproc)
 
-.PHONY: deps configure build demo test bench format format-check clean
+.PHONY: deps configure build demo test bench fuzz format format-check clean
 
 deps:
 	bash packaging/install-deps.sh
@@ -23,6 +23,10 @@ test: build
 
 bench: build
 	bash tests/bench/run_benchmarks.sh $(BUILD_DIR)
+
+# libFuzzer on every reader for FUZZ_SECONDS each (default 300); see docs/reliability.md.
+fuzz: deps
+	bash packaging/fuzz.sh
 
 format:
 	find core app tests $$(test -d ui && echo ui) -name '*.h' -o -name '*.cpp' | xargs clang-format -i

@@ -244,6 +244,19 @@ Result<GeneratedPath> generateHelicalPath(const Blade& blade, const HelicalPathS
         for (const Sample& s : samples) {
             appendRecord(s, r, spec, random, out);
         }
+        // Projected from the revolutions so far, so that the refusal comes before the memory
+        // is spent.
+        const std::size_t perRevolution = out.path.records.size() / static_cast<std::size_t>(r + 1);
+        const std::size_t projected = perRevolution * static_cast<std::size_t>(spec.revolutions);
+        if (projected > kMaxGeneratedPoints) {
+            return makeError(ErrorCode::InvalidArgument,
+                             "the path would have about " + std::to_string(projected) +
+                                 " points (" + std::to_string(perRevolution) +
+                                 " per revolution), more than the " +
+                                 std::to_string(kMaxGeneratedPoints) +
+                                 " a generated program may have: fewer revolutions or a coarser "
+                                 "chordal tolerance");
+        }
     }
     Result<Sample> last = sampler.at(spec.revolutions);
     if (!last) {

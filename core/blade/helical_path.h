@@ -32,6 +32,10 @@
 
 namespace bladeaxis::blade {
 
+// The most points a generated path may have (10 million records, about 2 GB while generating):
+// a revolution count or tolerance beyond it is refused instead of exhausting memory.
+inline constexpr std::size_t kMaxGeneratedPoints = 10'000'000;
+
 struct HelicalPathSpec {
     double toolRadius = 8.0;                           // R, mm
     double pitch = 0.5;                                // mm of x per revolution, > 0

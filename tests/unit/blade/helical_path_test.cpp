@@ -48,6 +48,21 @@ std::vector<double> unwrappedAxisAngle(const GeneratedPath& path) {
     return angles;
 }
 
+TEST(HelicalPath, APathOfMoreThanTenMillionPointsIsRefusedAfterItsFirstRevolution) {
+    auto bladeModel = Blade::create(demoBladeSpec());
+    ASSERT_TRUE(bladeModel.has_value());
+    HelicalPathSpec spec = demoPathSpec();
+    spec.revolutions = 10000;
+    spec.pitch = 0.0015; // 10,000 revolutions within the blade's span
+    spec.chordalTolerance = 1e-4;
+    const auto path = generateHelicalPath(*bladeModel, spec);
+    ASSERT_FALSE(path.has_value());
+    EXPECT_EQ(path.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(path.error().message.find("more than the 10000000 a generated program may have"),
+              std::string::npos)
+        << path.error().toString();
+}
+
 TEST(HelicalPath, ContactsLieOnTheSectionsAndCentresOnTheSurfaceNormal) {
     const GeneratedPath& path = demoPath();
     const double radius = 8.0;

@@ -32,7 +32,10 @@ cmake --build build/fuzz -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
 data=tests/data
 seeds() {
     case "$1" in
-    program) echo "$data/nc $data/cl $data/awkward $data/bad $data/programs" ;;
+    program)
+        echo "tests/fuzz/corpus/gcode tests/fuzz/corpus/apt tests/fuzz/corpus/point_table" \
+            "$data/nc $data/cl $data/awkward $data/bad $data/programs"
+        ;;
     gcode) echo "$data/nc $data/bad/nc $data/awkward" ;;
     apt) echo "$data/cl $data/bad/cl $data/awkward" ;;
     point_table) echo "$data/awkward" ;;

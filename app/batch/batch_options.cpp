@@ -106,7 +106,9 @@ std::string forHelp(const std::string& value) {
 void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
     auto* group = cli.add_option_group("Scheduling",
                                        "Parameters of the S-theta re-scheduling (spec Appendix A)");
-    group->add_option("-o,--output", raw.outputProgram, "Write the re-scheduled program here");
+    group->add_option("-o,--output", raw.outputProgram,
+                      "Write the re-scheduled program here; - writes it to standard output (the "
+                      "summary then goes to standard error)");
     group->add_option("--cl-output", raw.outputCl,
                       "Also write the re-scheduled toolpath as CL data (APT) here");
     group->add_option("--preset", raw.preset, "faithful (the paper's rules) or best (default)")
@@ -144,7 +146,9 @@ void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
 
 void defineOptions(CLI::App& cli, RawOptions& raw) {
     cli.add_flag("--batch", raw.batch, "Run headless: no window, no display needed");
-    cli.add_option("program", raw.program, "NC program (G-code) or CL data (APT/CLSF) to analyse");
+    cli.add_option("program", raw.program,
+                   "NC program (G-code), CL data (APT/CLSF) or point table to analyse; - reads "
+                   "standard input");
     cli.add_flag("--demo", raw.demo, "Use the built-in demo blade program");
     auto* cad = cli.add_option_group("Blade CAD", "Clearance check against the real blade");
     cad->add_option("--cad", raw.cad,

@@ -6,6 +6,8 @@
 #include <atomic>
 #include <csignal>
 #include <filesystem>
+#include <istream>
+#include <iterator>
 #include <ostream>
 #include <signal.h>
 
@@ -90,26 +92,51 @@ int runGenerate(const BatchOptions& options, std::ostream& out, std::ostream& er
     return kExitOk;
 }
 
-int runAnalyse(const BatchOptions& options, std::ostream& out, std::ostream& err) {
+// A program named `-` is read from standard input, and `-o -` writes the re-scheduled program
+// to standard output (the summary then goes to standard error), so BladeAxis can sit in a
+// post-processor's pipe. The program goes out only once every other output is written, so a
+// refused or failed job leaves standard output empty.
+int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
+               std::ostream& err) {
+    job::JobSpec spec = options.job;
+    if (!spec.demo && spec.program == "-") {
+        spec.programText = std::string(std::istreambuf_iterator<char>(in), {});
+        spec.program = "stdin";
+    }
+    const bool programToStdout = spec.outputProgram == "-";
+    if (programToStdout) {
+        spec.outputProgram.clear();
+    }
+    std::ostream& summary = programToStdout ? err : out;
     BatchProgress progress(err, options.quiet);
     CancelToken cancel;
     InterruptCancels interrupts(cancel);
-    auto result = job::runJob(options.job, progress, cancel);
+    auto result = job::runJob(spec, progress, cancel);
     if (cancel.isCancelled()) {
         return fail(cancelledError(), err);
     }
     if (!result) {
         return fail(result.error(), err);
     }
-    if (auto status = job::writeJobOutputs(options.job, *result); !status) {
+    if (auto status = job::writeJobOutputs(spec, *result); !status) {
         return fail(status.error(), err);
     }
+    if (programToStdout) {
+        if (!result->rescheduled) {
+            return fail(Error{ErrorCode::InvalidArgument,
+                              "an output program needs re-scheduling; it was not run",
+                              {},
+                              {}},
+                        err);
+        }
+        out << result->rescheduled->programText << std::flush;
+    }
     if (options.printJson) {
-        out << job::reportJsonText(*result);
+        summary << job::reportJsonText(*result);
     } else if (!options.quiet) {
-        out << job::formatSummary(*result);
+        summary << job::formatSummary(*result);
         if (!options.job.outputDir.empty()) {
-            out << "outputs      " << options.job.outputDir.string() << '\n';
+            summary << "outputs      " << options.job.outputDir.string() << '\n';
         }
     }
     return kExitOk;
@@ -147,7 +174,7 @@ int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& e
 
 } // namespace
 
-int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err) {
+int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err, std::istream& in) {
     switch (options.mode) {
     case BatchOptions::Mode::Help:
         out << options.helpText;
@@ -159,7 +186,7 @@ int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err) 
     case BatchOptions::Mode::Generate:
         return runGenerate(options, out, err);
     case BatchOptions::Mode::Analyse:
-        return runAnalyse(options, out, err);
+        return runAnalyse(options, in, out, err);
     case BatchOptions::Mode::Reproduce:
         return runReproduce(options, out, err);
     }
@@ -167,13 +194,13 @@ int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err) 
 }
 
 int runBatchCommandLine(const std::vector<std::string>& arguments, std::ostream& out,
-                        std::ostream& err) {
+                        std::ostream& err, std::istream& in) {
     auto options = parseBatchOptions(arguments);
     if (!options) {
         err << "bladeaxis: " << options.error().message << "\nRun with --help for usage.\n";
         return kExitUsage;
     }
-    return runBatch(*options, out, err);
+    return runBatch(*options, out, err, in);
 }
 
 } // namespace bladeaxis::app

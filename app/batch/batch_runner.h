@@ -4,14 +4,16 @@
 
 #include "app/batch/batch_options.h"
 
-#include <iosfwd>
+#include <iostream>
 
 namespace bladeaxis::app {
 
-int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err);
+// `in` is read only for a program named `-` (standard input in a pipe).
+int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err,
+             std::istream& in = std::cin);
 
 // Parses and runs; the whole `--batch` front end.
 int runBatchCommandLine(const std::vector<std::string>& arguments, std::ostream& out,
-                        std::ostream& err);
+                        std::ostream& err, std::istream& in = std::cin);
 
 } // namespace bladeaxis::app

@@ -102,7 +102,8 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
     if (spec.program.empty()) {
         return makeError(ErrorCode::InvalidArgument, "no input program given (or use --demo)");
     }
-    auto content = readTextFile(spec.program);
+    auto content =
+        spec.programText ? Result<std::string>(*spec.programText) : readTextFile(spec.program);
     if (!content) {
         return std::unexpected(content.error());
     }

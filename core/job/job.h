@@ -23,7 +23,10 @@
 namespace bladeaxis::job {
 
 struct JobSpec {
-    std::filesystem::path program;     // input NC or CL file; ignored when demo is set
+    std::filesystem::path program; // input NC or CL file; ignored when demo is set
+    // The program's bytes when they do not come from the file `program` names (standard input
+    // in a pipe): `program` then only names it in messages.
+    std::optional<std::string> programText;
     bool demo = false;                 // run on the built-in demo blade program instead
     std::filesystem::path machineFile; // empty: the built-in default blade machine
     std::optional<double> toolRadius;  // mm; overrides the radius the program states

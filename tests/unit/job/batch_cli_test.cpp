@@ -1,10 +1,12 @@
 #include "app/batch/batch_runner.h"
 #include "app/batch/exit_codes.h"
+#include "core/base/file_io.h"
 #include "core/base/units.h"
 #include "core/cad/cad_files.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -17,12 +19,21 @@ struct CliRun {
     std::string err;
 };
 
-CliRun run(std::vector<std::string> arguments) {
+CliRun run(std::vector<std::string> arguments, const std::string& standardInput = {}) {
     arguments.insert(arguments.begin(), "bladeaxis");
     std::ostringstream out;
     std::ostringstream err;
-    const int code = runBatchCommandLine(arguments, out, err);
+    std::istringstream in(standardInput);
+    const int code = runBatchCommandLine(arguments, out, err, in);
     return {code, out.str(), err.str()};
+}
+
+std::string demoProgramText() {
+    const auto folder = std::filesystem::temp_directory_path() / "bladeaxis_pipe";
+    std::filesystem::create_directories(folder);
+    const auto program = folder / "blade.nc";
+    EXPECT_EQ(run({"--batch", "--generate", program.string(), "--revolutions", "2"}).code, kExitOk);
+    return readTextFile(program).value_or("");
 }
 
 TEST(BatchCli, HelpListsTheExitCodes) {
@@ -38,6 +49,26 @@ TEST(BatchCli, HelpShowsPresetValuesAsAPersonWritesThem) {
     EXPECT_NE(result.out.find("(best: -30, faithful: -30)"), std::string::npos);
     EXPECT_EQ(result.out.find("99999999"), std::string::npos) << "a degree value shown in full";
     EXPECT_EQ(result.out.find("00000001"), std::string::npos);
+}
+
+TEST(BatchCli, AProgramFromStandardInputIsWrittenToStandardOutputWithTheSummaryOnStandardError) {
+    const std::string program = demoProgramText();
+    ASSERT_FALSE(program.empty());
+    const CliRun result = run({"--batch", "-", "--tool-radius", "8", "-o", "-"}, program);
+    ASSERT_EQ(result.code, kExitOk) << result.err;
+    EXPECT_TRUE(result.out.starts_with("(BladeAxis synthetic blade program")) << result.out;
+    EXPECT_NE(result.out.find("M30"), std::string::npos);
+    EXPECT_NE(result.out, program) << "the orientation was re-scheduled";
+    EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'),
+              std::count(program.begin(), program.end(), '\n'));
+    EXPECT_NE(result.err.find("program      stdin (gcode"), std::string::npos) << result.err;
+}
+
+TEST(BatchCli, ABadProgramFromAPipeIsNamedStdinAndLeavesStandardOutputEmpty) {
+    const CliRun result = run({"--batch", "-", "--tool-radius", "8", "-o", "-"}, "G1 X\n");
+    EXPECT_EQ(result.code, kExitInput);
+    EXPECT_TRUE(result.out.empty()) << result.out;
+    EXPECT_NE(result.err.find("stdin:1:5: parse error"), std::string::npos) << result.err;
 }
 
 TEST(BatchCli, VersionPrintsTheVersion) {

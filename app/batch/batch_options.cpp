@@ -75,7 +75,8 @@ struct RawOptions {
     std::map<std::string, std::string> parameters; // schema key -> text, when given
     std::uint64_t seed = 1;
     bool seedGiven = false;
-    bool batch = false, demo = false, json = false, quiet = false, version = false;
+    bool batch = false, demo = false, json = false, quiet = false, version = false,
+         progress = false;
     bool analyseOnly = false;
     bool compare = false;
     bool sweep = false;
@@ -195,6 +196,8 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
                    "Moving-average window of --derivatives filter, ms (default 8)");
     cli.add_flag("--json", raw.json, "Print report.json to standard output instead of the summary");
     cli.add_flag("-q,--quiet", raw.quiet, "Print nothing but errors");
+    cli.add_flag("--progress", raw.progress,
+                 "Show the running stage on standard error (the default when it is a terminal)");
     cli.add_flag("--version", raw.version, "Print the version and exit");
     auto* generate = cli.add_option_group("Generation", "Write a synthetic blade program");
     generate->add_option("--generate", raw.generate,
@@ -421,6 +424,7 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
     }
     options.printJson = raw.json;
     options.quiet = raw.quiet;
+    options.progress = raw.progress && !raw.quiet;
     options.generate.profile = raw.profile;
     options.generate.format = raw.format;
     options.generate.seed = raw.seed;

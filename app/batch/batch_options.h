@@ -24,6 +24,9 @@ struct BatchOptions {
     job::ReproductionSpec reproduction;
     bool printJson = false; // print report.json to stdout instead of the summary
     bool quiet = false;
+    // Stage and percentage on standard error, rewritten in place: on when standard error is a
+    // terminal, or with --progress (a long --compare is otherwise silent for its duration).
+    bool progress = false;
     std::string helpText;
 };
 

@@ -71,6 +71,16 @@ TEST(BatchCli, ABadProgramFromAPipeIsNamedStdinAndLeavesStandardOutputEmpty) {
     EXPECT_NE(result.err.find("stdin:1:5: parse error"), std::string::npos) << result.err;
 }
 
+TEST(BatchCli, ProgressShowsTheRunningStageOnOneLineAndClearsIt) {
+    const CliRun shown = run({"--batch", "--demo", "--analyse-only", "--progress"});
+    ASSERT_EQ(shown.code, kExitOk) << shown.err;
+    EXPECT_NE(shown.err.find("\r 30% analysing the original axis motion\x1b[K"), std::string::npos)
+        << shown.err;
+    EXPECT_TRUE(shown.err.ends_with("\r\x1b[K")) << "the line is cleared before the summary";
+    const CliRun silent = run({"--batch", "--demo", "--analyse-only"});
+    EXPECT_EQ(silent.err.find('\r'), std::string::npos) << "off when not asked for or not a tty";
+}
+
 TEST(BatchCli, VersionPrintsTheVersion) {
     const CliRun result = run({"--batch", "--version"});
     EXPECT_EQ(result.code, kExitOk);

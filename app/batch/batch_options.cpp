@@ -453,7 +453,8 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
 } // namespace
 
 Result<BatchOptions> parseBatchOptions(const std::vector<std::string>& arguments) {
-    CLI::App cli{"BladeAxis: monotone, smooth A-axis re-scheduling of four-axis blade programs",
+    CLI::App cli{"BladeAxis: monotone, smooth A-axis re-scheduling of four-axis blade programs\n"
+                 "(section numbers \u00a7 refer to docs/method.md)",
                  "bladeaxis"};
     cli.footer(kExitCodeHelp);
     RawOptions raw;

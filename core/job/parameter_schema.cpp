@@ -110,7 +110,7 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 std::vector<ParameterInfo> geometryParameters() {
     using P = ScheduleParameters;
     return {
-        number("taper_deg", "deg", "Taper half-angle of the shank (spec §2.3)", 0, 80,
+        number("taper_deg", "deg", "Taper half-angle of the shank (§2.3)", 0, 80,
                &P::taperHalfAngleRad, kDeg),
         number("safety_deg", "deg", "Holder/safety angle added to the taper (§2.3)", 0, 80,
                &P::safetyAngleRad, kDeg),

@@ -196,11 +196,7 @@ void MainWindow::buildStatusBar() {
     m_cancel->setToolTip(tr("Stop the running job (Esc)"));
     m_cancel->setShortcut(QKeySequence(Qt::Key_Escape));
     m_cancel->setVisible(false);
-    connect(m_cancel, &QPushButton::clicked, this, [this] {
-        if (m_thread != nullptr) {
-            m_thread->requestCancel();
-        }
-    });
+    connect(m_cancel, &QPushButton::clicked, this, &MainWindow::cancelJob);
     statusBar()->addPermanentWidget(m_progress);
     statusBar()->addPermanentWidget(m_cancel);
     statusBar()->showMessage(tr("Open a program (Ctrl+O) or run the demo (Ctrl+D)"));
@@ -216,9 +212,15 @@ void MainWindow::runDemo() {
 void MainWindow::runProgram(const QString& programPath) {
     job::JobSpec spec;
     spec.program = programPath.toStdString();
-    rememberRecent(programPath);
+    m_pendingRecent = programPath; // a file that does not read is not worth recalling
     m_undo.clear();
     startJob(std::move(spec), false);
+}
+
+void MainWindow::cancelJob() {
+    if (m_thread != nullptr) {
+        m_thread->requestCancel();
+    }
 }
 
 void MainWindow::startJob(job::JobSpec spec, bool reapply) {
@@ -275,21 +277,32 @@ void MainWindow::onJobFinished() {
     m_thread = nullptr;
     m_progress->setVisible(false);
     m_cancel->setVisible(false);
+    const QString pendingRecent = std::exchange(m_pendingRecent, QString());
     if (!outcome) {
-        statusBar()->showMessage(tr("Job failed"));
-        if (outcome.error().code != ErrorCode::Cancelled) {
+        const bool cancelled = outcome.error().code == ErrorCode::Cancelled;
+        statusBar()->showMessage(cancelled ? tr("Cancelled") : tr("Job failed"));
+        if (!cancelled) {
             QMessageBox::warning(this, tr("BladeAxis"),
                                  QString::fromStdString(outcome.error().toString()));
+        }
+        // The 3D view showed the new program as soon as it was read; everything else still
+        // holds the previous result, so the view goes back to it too.
+        if (m_result && !reapply) {
+            m_view3d->showScene(m_scene);
         }
         m_editor->setPending({});
         emit jobFinished(false);
         return;
+    }
+    if (!pendingRecent.isEmpty() && !reapply) {
+        rememberRecent(pendingRecent);
     }
     if (reapply && m_result && m_result->comparison && !outcome->comparison) {
         outcome->comparison = std::move(m_result->comparison);
     }
     m_result = std::move(*outcome);
     showResult(std::move(scene));
+    updateExportActions();
     statusBar()->showMessage(
         reapply ? tr("Layer edits applied in %1 s").arg(m_result->seconds, 0, 'f', 2)
                 : tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2));

@@ -42,6 +42,8 @@ class MainWindow final : public QMainWindow {
 
     void runDemo();
     void runProgram(const QString& programPath);
+    // Stops the running job; the window keeps (and shows again) the previous result.
+    void cancelJob();
     // Reads a job file (docs/job-file.md), edits included, and runs it.
     Status openJob(const QString& jobPath);
     // Saves the current job, with the layer edits, as a job file.
@@ -78,6 +80,14 @@ class MainWindow final : public QMainWindow {
     // File > Export program / CL data after the file dialog: when the clearance check refuses
     // the output, shows where and offers "Export anyway" (the batch's --force).
     void exportProgramTo(const QString& path);
+    // "<input>_rescheduled.<ext>" beside the input (the demo's in the working folder), and the
+    // file-dialog filter of the input's format; empty before the first result.
+    QString suggestedExportPath() const;
+    QString exportFilter() const;
+    // Enabled only when there is a result to export (a program needs a re-scheduled one).
+    QAction* exportProgramAction() const { return m_exportProgram; }
+    QAction* exportClAction() const { return m_exportCl; }
+    QAction* exportReportAction() const { return m_exportReport; }
     void exportClDataTo(const QString& path);
     // Sets (or with nullopt removes) the override of a layer, shows `preview` key points in the
     // editor at once when the layer is shown, and re-runs the job. Used by the undo commands.
@@ -127,6 +137,7 @@ class MainWindow final : public QMainWindow {
     void openCadDialog();
     void openJobDialog();
     void saveJobDialog();
+    void updateExportActions();
     void exportProgramDialog();
     void exportClDialog();
     void exportReportDialog();
@@ -138,6 +149,10 @@ class MainWindow final : public QMainWindow {
     std::optional<job::JobResult> m_result;
     job::DisplayScene m_scene;
     QString m_machinePath;
+    QString m_pendingRecent; // the program of the running job: recent once it has read
+    QAction* m_exportProgram = nullptr;
+    QAction* m_exportCl = nullptr;
+    QAction* m_exportReport = nullptr;
     QString m_cadPath;
     cad::AxisRotationPlacement m_cadPlacement;
     QUndoStack m_undo;

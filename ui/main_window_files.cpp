@@ -1,5 +1,6 @@
 // The main window's menus, tool bar, files (open, save, export, recent), settings and palette.
 #include "core/base/file_io.h"
+#include "core/job/demo_program.h"
 #include "core/job/job_file.h"
 #include "ui/blade_placement_dialog.h"
 #include "ui/comparison_table.h"
@@ -11,6 +12,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -76,16 +78,17 @@ void MainWindow::buildFileMenu() {
                    tr("Save the job with its layer edits; `bladeaxis --batch --job` reruns it")),
         &QAction::triggered, this, &MainWindow::saveJobDialog);
     file->addSeparator();
-    connect(menuAction(file, tr("&Export program…"), QKeySequence(tr("Ctrl+E")),
-                       tr("Write the re-scheduled program (refused if a check failed)")),
-            &QAction::triggered, this, &MainWindow::exportProgramDialog);
-    connect(menuAction(file, tr("Export &CL data…"), QKeySequence(tr("Ctrl+Shift+E")),
-                       tr("Write the re-scheduled toolpath as APT CL data")),
-            &QAction::triggered, this, &MainWindow::exportClDialog);
-    connect(menuAction(file, tr("Export &report…"), QKeySequence(tr("Ctrl+R")),
-                       tr("Write report.json, axes.csv, layers.csv and, with a comparison, "
-                          "report.html into a folder")),
-            &QAction::triggered, this, &MainWindow::exportReportDialog);
+    m_exportProgram = menuAction(file, tr("&Export program…"), QKeySequence(tr("Ctrl+E")),
+                                 tr("Write the re-scheduled program (refused if a check failed)"));
+    connect(m_exportProgram, &QAction::triggered, this, &MainWindow::exportProgramDialog);
+    m_exportCl = menuAction(file, tr("Export &CL data…"), QKeySequence(tr("Ctrl+Shift+E")),
+                            tr("Write the re-scheduled toolpath as APT CL data"));
+    connect(m_exportCl, &QAction::triggered, this, &MainWindow::exportClDialog);
+    m_exportReport = menuAction(file, tr("Export &report…"), QKeySequence(tr("Ctrl+R")),
+                                tr("Write report.json, axes.csv, layers.csv and, with a "
+                                   "comparison, report.html into a folder"));
+    connect(m_exportReport, &QAction::triggered, this, &MainWindow::exportReportDialog);
+    updateExportActions();
     file->addSeparator();
     connect(menuAction(file, tr("&Quit"), QKeySequence::Quit, tr("Close BladeAxis")),
             &QAction::triggered, this, &QWidget::close);
@@ -340,8 +343,48 @@ void MainWindow::exportClDataTo(const QString& path) {
     }
 }
 
+void MainWindow::updateExportActions() {
+    const bool rescheduled = m_result && m_result->rescheduled;
+    for (QAction* action : {m_exportProgram, m_exportCl}) {
+        if (action != nullptr) {
+            action->setEnabled(rescheduled);
+        }
+    }
+    if (m_exportReport != nullptr) {
+        m_exportReport->setEnabled(m_result.has_value());
+    }
+}
+
+QString MainWindow::suggestedExportPath() const {
+    if (!m_result) {
+        return {};
+    }
+    const QFileInfo input(QString::fromStdString(m_spec.demo ? std::string(job::kDemoProgramName)
+                                                             : m_spec.program.string()));
+    const QString suffix = input.suffix().isEmpty() ? QString() : "." + input.suffix();
+    const QString folder = m_spec.demo ? QDir::currentPath() : input.absolutePath();
+    return QDir(folder).filePath(input.completeBaseName() + "_rescheduled" + suffix);
+}
+
+QString MainWindow::exportFilter() const {
+    const QString all = tr("All files (*)");
+    if (!m_result) {
+        return all;
+    }
+    switch (m_result->program.format()) {
+    case io::ProgramFormat::Gcode:
+        return tr("G-code (*.nc *.ngc *.tap *.iso *.mpf *.txt)") + ";;" + all;
+    case io::ProgramFormat::Apt:
+        return tr("CL data (*.cl *.cls *.apt *.aptsource)") + ";;" + all;
+    case io::ProgramFormat::Table:
+        return tr("Point tables (*.csv *.txt *.xyz)") + ";;" + all;
+    }
+    return all;
+}
+
 void MainWindow::exportProgramDialog() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export program"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export program"),
+                                                      suggestedExportPath(), exportFilter());
     if (!path.isEmpty()) {
         exportProgramTo(path);
     }

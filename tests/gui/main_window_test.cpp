@@ -23,9 +23,11 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QMessageBox>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTest>
 #include <QTimer>
@@ -343,6 +345,47 @@ class MainWindowTest final : public QObject {
         QVERIFY(QFileInfo::exists(output));
     }
 
+    void exportIsOfferedOnlyWithAResultAndSuggestsTheInputsName() {
+        bladeaxis::ui::MainWindow fresh;
+        QVERIFY(!fresh.exportProgramAction()->isEnabled());
+        QVERIFY(!fresh.exportClAction()->isEnabled());
+        QVERIFY(!fresh.exportReportAction()->isEnabled());
+        QVERIFY(fresh.suggestedExportPath().isEmpty());
+        QVERIFY(m_window->exportProgramAction()->isEnabled());
+        QVERIFY(m_window->exportReportAction()->isEnabled());
+        QVERIFY2(m_window->suggestedExportPath().endsWith("demo_blade_rescheduled.nc"),
+                 qPrintable(m_window->suggestedExportPath()));
+        QVERIFY(m_window->exportFilter().startsWith("G-code ("));
+    }
+
+    void aProgramThatDoesNotReadStaysOutOfRecentFiles() {
+        const QString missing = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/no_such_program.nc");
+        const auto passBefore = m_window->result()->pass.count;
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        closeMessageBoxesWhileWaiting(); // the error box of the failed job
+        m_window->runProgram(missing);
+        QVERIFY(finished.wait(kJobTimeoutMs));
+        QCOMPARE(finished.front().front().toBool(), false);
+        QVERIFY(!QSettings().value("recentFiles").toStringList().contains(missing));
+        QCOMPARE(m_window->result()->pass.count, passBefore);
+    }
+
+    void cancellingAJobSaysSoAndShowsThePreviousResultAgain() {
+        const auto shownBefore = m_window->view3d()->scene().passRecords;
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        m_window->runProgram(QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/programs/turbine_2rev.cls"));
+        // Cancel once the new program is on screen (the 3D view shows it as soon as it reads).
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->view3d()->scene().passRecords != shownBefore ||
+                                     !m_window->isRunning(),
+                                 kJobTimeoutMs);
+        QVERIFY2(m_window->isRunning(), "the job finished before it could be cancelled");
+        m_window->cancelJob();
+        QVERIFY(finished.wait(kJobTimeoutMs));
+        QCOMPARE(finished.front().front().toBool(), false);
+        QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("Cancelled"));
+        QCOMPARE(m_window->view3d()->scene().passRecords, shownBefore);
+    }
+
   private:
     static int headerColumn(const QTableWidget* table, const char* prefix) {
         for (int column = 0; column < table->columnCount(); ++column) {
@@ -380,6 +423,21 @@ class MainWindowTest final : public QObject {
             }
         }
         return false;
+    }
+
+    // Accepts any message box that opens in the next seconds (a failed job reports its error
+    // in one, modal to the window).
+    static void closeMessageBoxesWhileWaiting() {
+        auto* timer = new QTimer(qApp);
+        QObject::connect(timer, &QTimer::timeout, [] {
+            for (QWidget* widget : QApplication::topLevelWidgets()) {
+                if (auto* box = qobject_cast<QMessageBox*>(widget); box && box->isVisible()) {
+                    box->accept();
+                }
+            }
+        });
+        timer->start(50);
+        QTimer::singleShot(30'000, timer, &QObject::deleteLater);
     }
 
     // Waits until the job has re-run with the latest edits.

@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "core/base/units.h"
+#include "core/job/demo_program.h"
 #include "ui/comparison_table.h"
 #include "ui/job_thread.h"
 #include "ui/layer_settings_panel.h"
@@ -11,6 +12,7 @@
 
 #include <QCloseEvent>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QFont>
 #include <QHeaderView>
 #include <QLabel>
@@ -96,7 +98,9 @@ class LayerEditCommand final : public QUndoCommand {
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-    setWindowTitle(QStringLiteral("BladeAxis"));
+    updateTitle();
+    connect(&m_undo, &QUndoStack::cleanChanged, this,
+            [this](bool clean) { setWindowModified(!clean); });
     setAcceptDrops(true);
     m_layers = new QTableWidget(0, kLayerColumns, this);
     // Two-line headers (name over unit) keep the columns narrow enough for the before/after
@@ -217,6 +221,18 @@ void MainWindow::runProgram(const QString& programPath) {
     startJob(std::move(spec), false);
 }
 
+void MainWindow::updateTitle() {
+    if (!m_result) {
+        setWindowTitle(QStringLiteral("BladeAxis"));
+        return;
+    }
+    const QString name =
+        m_spec.demo ? QString::fromLatin1(job::kDemoProgramName)
+                    : QFileInfo(QString::fromStdString(m_spec.program.string())).fileName();
+    setWindowTitle(tr("%1[*] - BladeAxis").arg(name));
+    setWindowModified(!m_undo.isClean());
+}
+
 void MainWindow::cancelJob() {
     if (m_thread != nullptr) {
         m_thread->requestCancel();
@@ -241,7 +257,7 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply) {
         }
         spec.compare = m_compareAction->isChecked();
         spec.compareOptimum = m_optimumAction->isChecked();
-        m_spec = spec;
+        m_specBeforeJob = std::exchange(m_spec, spec);
     }
     // Edits do not change the comparison (its methods schedule the preset's own layers): a
     // re-run for an edit keeps the comparison it has and skips that work.
@@ -287,8 +303,11 @@ void MainWindow::onJobFinished() {
         }
         // The 3D view showed the new program as soon as it was read; everything else still
         // holds the previous result, so the view goes back to it too.
-        if (m_result && !reapply) {
-            m_view3d->showScene(m_scene);
+        if (!reapply) {
+            m_spec = m_specBeforeJob; // exports and edits go on with the result shown
+            if (m_result) {
+                m_view3d->showScene(m_scene);
+            }
         }
         m_editor->setPending({});
         emit jobFinished(false);
@@ -303,6 +322,7 @@ void MainWindow::onJobFinished() {
     m_result = std::move(*outcome);
     showResult(std::move(scene));
     updateExportActions();
+    updateTitle();
     statusBar()->showMessage(
         reapply ? tr("Layer edits applied in %1 s").arg(m_result->seconds, 0, 'f', 2)
                 : tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2));
@@ -517,6 +537,10 @@ Status MainWindow::refuseWhilePending() const {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!confirmDiscardEdits()) {
+        event->ignore();
+        return;
+    }
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());

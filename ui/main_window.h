@@ -44,6 +44,10 @@ class MainWindow final : public QMainWindow {
     void runProgram(const QString& programPath);
     // Stops the running job; the window keeps (and shows again) the previous result.
     void cancelJob();
+    // Before the window replaces or closes a job with unsaved layer edits: asks to save them
+    // (Save / Discard / Cancel); true when the caller may go on. The menu, drop and close paths
+    // ask; the programmatic runProgram/runDemo/openJob do not.
+    bool confirmDiscardEdits();
     // Reads a job file (docs/job-file.md), edits included, and runs it.
     Status openJob(const QString& jobPath);
     // Saves the current job, with the layer edits, as a job file.
@@ -138,6 +142,9 @@ class MainWindow final : public QMainWindow {
     void openJobDialog();
     void saveJobDialog();
     void updateExportActions();
+    // "blade.nc[*] - BladeAxis": the program shown, modified while the undo stack holds edits
+    // not saved in a job file.
+    void updateTitle();
     void exportProgramDialog();
     void exportClDialog();
     void exportReportDialog();
@@ -146,6 +153,7 @@ class MainWindow final : public QMainWindow {
     std::optional<bool> confirmClearance();
 
     job::JobSpec m_spec;
+    job::JobSpec m_specBeforeJob; // restored when a new job fails or is cancelled
     std::optional<job::JobResult> m_result;
     job::DisplayScene m_scene;
     QString m_machinePath;

@@ -67,7 +67,11 @@ void MainWindow::buildFileMenu() {
             &QAction::triggered, this, &MainWindow::openCadDialog);
     connect(menuAction(file, tr("Run &demo"), QKeySequence(tr("Ctrl+D")),
                        tr("Re-schedule the built-in demo blade program")),
-            &QAction::triggered, this, &MainWindow::runDemo);
+            &QAction::triggered, this, [this] {
+                if (confirmDiscardEdits()) {
+                    runDemo();
+                }
+            });
     m_recentMenu = file->addMenu(tr("&Recent programs"));
     file->addSeparator();
     connect(menuAction(file, tr("Open &job…"), QKeySequence(tr("Ctrl+J")),
@@ -259,7 +263,26 @@ Status MainWindow::openJob(const QString& jobPath) {
 Status MainWindow::saveJob(const QString& jobPath) {
     const std::filesystem::path path = jobPath.toStdString();
     const std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
-    return writeFileAtomically(path, job::jobJsonText(m_spec, folder));
+    Status written = writeFileAtomically(path, job::jobJsonText(m_spec, folder));
+    if (written) {
+        m_undo.setClean(); // the edits are in the job file now
+    }
+    return written;
+}
+
+bool MainWindow::confirmDiscardEdits() {
+    if (m_undo.isClean()) {
+        return true;
+    }
+    const auto answer = QMessageBox::question(
+        this, tr("BladeAxis"),
+        tr("The layer edits of this job are not saved. Save them in a job file?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save) {
+        saveJobDialog();
+        return m_undo.isClean();
+    }
+    return answer == QMessageBox::Discard;
 }
 
 Status MainWindow::exportProgram(const QString& path, bool force) {
@@ -407,6 +430,9 @@ void MainWindow::exportReportDialog() {
 }
 
 void MainWindow::openJobDialog() {
+    if (!confirmDiscardEdits()) {
+        return;
+    }
     const QString path =
         QFileDialog::getOpenFileName(this, tr("Open job"), QString(), tr("Job files (*.json)"));
     if (!path.isEmpty()) {
@@ -423,6 +449,9 @@ void MainWindow::saveJobDialog() {
 }
 
 void MainWindow::openProgramDialog() {
+    if (!confirmDiscardEdits()) {
+        return;
+    }
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Open program"), QString(),
         tr("Programs (*.nc *.ngc *.gcode *.tap *.cl *.apt *.cls);;All files (*)"));
@@ -453,7 +482,9 @@ void MainWindow::dropEvent(QDropEvent* event) {
     }
     const QString path = urls.front().toLocalFile();
     if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
-        runProgram(path);
+        if (confirmDiscardEdits()) {
+            runProgram(path);
+        }
         return;
     }
     QFile file(path);
@@ -502,7 +533,11 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->clear();
     const QStringList recent = QSettings().value(kRecentKey).toStringList();
     for (const QString& path : recent) {
-        m_recentMenu->addAction(path, this, [this, path] { runProgram(path); });
+        m_recentMenu->addAction(path, this, [this, path] {
+            if (confirmDiscardEdits()) {
+                runProgram(path);
+            }
+        });
     }
     m_recentMenu->setEnabled(!recent.isEmpty());
 }

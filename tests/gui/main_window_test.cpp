@@ -372,6 +372,7 @@ class MainWindowTest final : public QObject {
 
     void cancellingAJobSaysSoAndShowsThePreviousResultAgain() {
         const auto shownBefore = m_window->view3d()->scene().passRecords;
+        const std::filesystem::path programBefore = m_window->spec().program;
         QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
         m_window->runProgram(QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/programs/turbine_2rev.cls"));
         // Cancel once the new program is on screen (the 3D view shows it as soon as it reads).
@@ -384,6 +385,19 @@ class MainWindowTest final : public QObject {
         QCOMPARE(finished.front().front().toBool(), false);
         QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("Cancelled"));
         QCOMPARE(m_window->view3d()->scene().passRecords, shownBefore);
+        QVERIFY2(m_window->spec().program == programBefore, "exports use the result's job");
+    }
+
+    void theTitleNamesTheProgramAndMarksUnsavedEdits() {
+        const QString name =
+            QFileInfo(QString::fromStdString(m_window->spec().program.string())).fileName();
+        QVERIFY2(m_window->windowTitle().startsWith(name + "[*]"),
+                 qPrintable(m_window->windowTitle()));
+        m_window->undoStack()->resetClean(); // as after an edit not saved in a job file
+        QVERIFY(m_window->isWindowModified());
+        const QString job = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/title_job.json");
+        QVERIFY(m_window->saveJob(job).has_value());
+        QVERIFY(!m_window->isWindowModified());
     }
 
   private:

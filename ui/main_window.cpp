@@ -16,6 +16,7 @@
 #include <QFont>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
@@ -67,8 +68,11 @@ QString editText(const scheduling::LayerOverride* change) {
     return settings ? QObject::tr("settings") : QObject::tr("key points");
 }
 
+// A number as a person reads it in the desktop's language: thousands grouped ("1,408,372"),
+// right-aligned; the value itself kept for sorting and tests.
 QTableWidgetItem* numberItem(double value, int decimals) {
-    auto* item = new QTableWidgetItem(QString::number(value, 'f', decimals));
+    auto* item = new QTableWidgetItem(QLocale().toString(value, 'f', decimals));
+    item->setData(Qt::UserRole, value);
     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     return item;
 }
@@ -108,7 +112,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_layers->setHorizontalHeaderLabels(
         {tr("Layer"), tr("Status"), tr("Edited"), tr("Rev.\nbefore"), tr("Rev.\nafter"),
          tr("Peak A acc.\nbefore [°/s²]"), tr("Peak A acc.\nafter [°/s²]"),
-         tr("Min clearance\n[mrad]"), tr("Peak θ''\n[rad/mm²]")});
+         tr("Min clearance\n[°]"), tr("Peak θ''\n[°/mm²]")});
     m_layers->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_layers->setSelectionMode(QAbstractItemView::SingleSelection);
     m_layers->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -394,8 +398,9 @@ void MainWindow::showLayerRow(int row, const report::LayerMotion& m) {
     m_layers->setItem(row, kReversalsAfter, numberItem(m.reversalsAfter, 0));
     m_layers->setItem(row, kPeakABefore, numberItem(units::radToDeg(m.peakAccelerationBefore), 0));
     m_layers->setItem(row, kPeakAAfter, numberItem(units::radToDeg(m.peakAccelerationAfter), 0));
-    m_layers->setItem(row, kClearanceColumn, numberItem(layer.minClearance * 1000.0, 2));
-    m_layers->setItem(row, kPeakThetaColumn, numberItem(layer.peakSecondDerivative, 4));
+    m_layers->setItem(row, kClearanceColumn, numberItem(units::radToDeg(layer.minClearance), 3));
+    m_layers->setItem(row, kPeakThetaColumn,
+                      numberItem(units::radToDeg(layer.peakSecondDerivative), 4));
 }
 
 void MainWindow::showSelectedLayer(int layer) {

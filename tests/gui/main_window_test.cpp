@@ -98,6 +98,21 @@ class MainWindowTest final : public QObject {
         QVERIFY(reversalsBefore > 0);
     }
 
+    void layerTableShowsDegreesWherePeopleReadAngles() {
+        const QTableWidget* table = m_window->layerTable();
+        QStringList headers;
+        for (int column = 0; column < table->columnCount(); ++column) {
+            headers << table->horizontalHeaderItem(column)->text();
+        }
+        const QString all = headers.join('|');
+        QVERIFY2(!all.contains("mrad") && !all.contains("rad/mm"), qPrintable(all));
+        QVERIFY2(all.contains(QString::fromUtf8("Min clearance\n[°]")), qPrintable(all));
+        const int clearance = headerColumn(table, "Min clearance");
+        const auto& layer = m_window->result()->rescheduled->schedule.layers.front();
+        QCOMPARE(table->item(0, clearance)->data(Qt::UserRole).toDouble(),
+                 layer.minClearance * 180.0 / 3.14159265358979323846);
+    }
+
     void comparisonRunsWithTheJobAndFillsTheTable() {
         QVERIFY(m_window->result()->comparison.has_value());
         QCOMPARE(static_cast<std::size_t>(m_window->comparisonTable()->rowCount()),

@@ -15,6 +15,7 @@
 #include <QFileInfo>
 #include <QFont>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
 #include <QMessageBox>
@@ -237,6 +238,29 @@ void MainWindow::updateTitle() {
     setWindowModified(!m_undo.isClean());
 }
 
+bool MainWindow::needsToolRadius(const Error& error) {
+    return error.code == ErrorCode::InvalidArgument &&
+           error.message.find("ball radius") != std::string::npos &&
+           error.message.find("--tool-radius") != std::string::npos;
+}
+
+void MainWindow::askToolRadiusAndRetry(job::JobSpec spec, const QString& program) {
+    bool ok = false;
+    const double radius = QInputDialog::getDouble(
+        this, tr("Ball radius"),
+        tr("%1 does not state the ball radius of its cutter.\nBall radius R [mm]:")
+            .arg(QFileInfo(QString::fromStdString(spec.program.string())).fileName()),
+        m_toolRadius->value() > 0.0 ? m_toolRadius->value() : 4.0, 0.001, 500.0, 3, &ok);
+    if (!ok) {
+        statusBar()->showMessage(tr("No ball radius given: the program was not run"));
+        return;
+    }
+    m_toolRadius->setValue(radius); // the next programs of this session use it too
+    spec.toolRadius = radius;
+    m_pendingRecent = program;
+    startJob(std::move(spec), false);
+}
+
 void MainWindow::cancelJob() {
     if (m_thread != nullptr) {
         m_thread->requestCancel();
@@ -301,6 +325,15 @@ void MainWindow::onJobFinished() {
     if (!outcome) {
         const bool cancelled = outcome.error().code == ErrorCode::Cancelled;
         statusBar()->showMessage(cancelled ? tr("Cancelled") : tr("Job failed"));
+        if (!reapply && needsToolRadius(outcome.error())) {
+            // What the command line asks for with --tool-radius, the window asks for here.
+            job::JobSpec retry = m_spec;
+            m_spec = m_specBeforeJob;
+            m_editor->setPending({});
+            emit jobFinished(false);
+            askToolRadiusAndRetry(std::move(retry), pendingRecent);
+            return;
+        }
         if (!cancelled) {
             QMessageBox::warning(this, tr("BladeAxis"),
                                  QString::fromStdString(outcome.error().toString()));

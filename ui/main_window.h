@@ -71,6 +71,8 @@ class MainWindow final : public QMainWindow {
     ComparisonTable* comparisonTable() const { return m_comparison; }
     ToolpathView* view3d() const { return m_view3d; }
     QSlider* toolSlider() const { return m_toolSlider; }
+    // The tool bar's ball radius: 0 ("from file") uses the radius the program states.
+    QDoubleSpinBox* toolRadiusBox() const { return m_toolRadius; }
     void setDarkPalette(bool dark);
     int selectedLayer() const;
     void selectLayer(int layer);
@@ -142,6 +144,9 @@ class MainWindow final : public QMainWindow {
     void openJobDialog();
     void saveJobDialog();
     void updateExportActions();
+    static bool needsToolRadius(const Error& error);
+    // Asks for the ball radius a program does not state and runs it again with it.
+    void askToolRadiusAndRetry(job::JobSpec spec, const QString& program);
     // "blade.nc[*] - BladeAxis": the program shown, modified while the undo stack holds edits
     // not saved in a job file.
     void updateTitle();

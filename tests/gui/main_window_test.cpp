@@ -22,6 +22,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
+#include <QInputDialog>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSignalSpy>
@@ -413,6 +414,29 @@ class MainWindowTest final : public QObject {
         const QString job = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/title_job.json");
         QVERIFY(m_window->saveJob(job).has_value());
         QVERIFY(!m_window->isWindowModified());
+    }
+
+    void aProgramWithoutItsBallRadiusAsksForItInTheWindow() {
+        auto* timer = new QTimer(this);
+        connect(timer, &QTimer::timeout, this, [timer] {
+            if (auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget())) {
+                dialog->setDoubleValue(8.0);
+                dialog->accept();
+                timer->stop();
+            }
+        });
+        timer->start(50);
+        m_window->toolRadiusBox()->setValue(0.0); // "from file": the program states none
+        m_window->setBladeCad(QString());         // the blade CAD of an earlier job
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        m_window->runProgram(QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/programs/naca_weak_3rev.nc"));
+        QTRY_VERIFY_WITH_TIMEOUT(finished.size() >= 2, kJobTimeoutMs);
+        timer->deleteLater();
+        QCOMPARE(finished.at(0).front().toBool(), false); // the run that found no radius
+        QCOMPARE(finished.at(1).front().toBool(), true);  // and the run with the one given
+        QVERIFY(m_window->result()->toolRadius.has_value());
+        QCOMPARE(*m_window->result()->toolRadius, 8.0);
+        QVERIFY(m_window->windowTitle().startsWith("naca_weak_3rev.nc"));
     }
 
   private:

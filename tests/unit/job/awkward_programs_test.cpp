@@ -10,6 +10,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <unistd.h>
 
 #include "awkward_programs.h"
 #include "demo_job.h"
@@ -20,7 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-    const fs::path folder = fs::temp_directory_path() / "bladeaxis_awkward";
+    // One folder per process: ctest runs the tests of this file in parallel processes, which
+    // would otherwise write the same clean program while another reads it.
+    const fs::path folder =
+        fs::temp_directory_path() / ("bladeaxis_awkward_" + std::to_string(::getpid()));
     fs::create_directories(folder);
     return folder / name;
 }

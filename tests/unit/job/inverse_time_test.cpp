@@ -13,6 +13,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <unistd.h>
 
 #include "awkward_programs.h"
 #include "demo_job.h"
@@ -30,7 +32,9 @@ struct InverseTimeJob {
 const InverseTimeJob& inverseTimeJob() {
     static const InverseTimeJob job = [] {
         InverseTimeJob run;
-        const fs::path folder = fs::temp_directory_path() / "bladeaxis_inverse_time";
+        // One folder per process: ctest runs the two tests of this file in parallel.
+        const fs::path folder =
+            fs::temp_directory_path() / ("bladeaxis_inverse_time_" + std::to_string(::getpid()));
         fs::remove_all(folder);
         fs::create_directories(folder);
         const CleanPass& clean = cleanPass();

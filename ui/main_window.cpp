@@ -324,30 +324,28 @@ void MainWindow::onJobFinished() {
     const QString pendingRecent = std::exchange(m_pendingRecent, QString());
     if (!outcome) {
         const bool cancelled = outcome.error().code == ErrorCode::Cancelled;
+        // What the command line asks for with --tool-radius, the window asks for below.
+        const bool askRadius = !reapply && needsToolRadius(outcome.error());
         statusBar()->showMessage(cancelled ? tr("Cancelled") : tr("Job failed"));
-        if (!reapply && needsToolRadius(outcome.error())) {
-            // What the command line asks for with --tool-radius, the window asks for here.
-            job::JobSpec retry = m_spec;
-            m_spec = m_specBeforeJob;
-            m_editor->setPending({});
-            emit jobFinished(false);
-            askToolRadiusAndRetry(std::move(retry), pendingRecent);
-            return;
-        }
-        if (!cancelled) {
-            QMessageBox::warning(this, tr("BladeAxis"),
-                                 QString::fromStdString(outcome.error().toString()));
-        }
-        // The 3D view showed the new program as soon as it was read; everything else still
-        // holds the previous result, so the view goes back to it too.
+        job::JobSpec failed = m_spec;
         if (!reapply) {
-            m_spec = m_specBeforeJob; // exports and edits go on with the result shown
+            // The 3D view showed the new program as soon as it was read; everything else still
+            // holds the previous result, so the view and the job settings go back to it (an
+            // export after this writes the result shown).
+            m_spec = m_specBeforeJob;
             if (m_result) {
                 m_view3d->showScene(m_scene);
             }
         }
+        if (!cancelled && !askRadius) {
+            QMessageBox::warning(this, tr("BladeAxis"),
+                                 QString::fromStdString(outcome.error().toString()));
+        }
         m_editor->setPending({});
         emit jobFinished(false);
+        if (askRadius) {
+            askToolRadiusAndRetry(std::move(failed), pendingRecent);
+        }
         return;
     }
     if (!pendingRecent.isEmpty() && !reapply) {

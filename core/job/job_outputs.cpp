@@ -19,22 +19,6 @@ namespace bladeaxis::job {
 
 namespace {
 
-// {"A": {"backlash_deg": 0.005, "reversals": 16, "lost_motion_deg": 0.08}, ...}: the play of
-// every axis the machine file gives one, taken up at each direction change.
-nlohmann::json lostMotionJson(const analysis::AxisProfile& profile,
-                              const kinematics::MachineModel& machine) {
-    nlohmann::json json = nlohmann::json::object();
-    for (const analysis::LostMotion& loss : analysis::lostMotion(profile, machine)) {
-        const bool rotary = kinematics::isRotary(loss.axis);
-        const double scale = rotary ? units::radToDeg(1.0) : 1.0;
-        const std::string unit = rotary ? "deg" : "mm";
-        json[kinematics::axisName(loss.axis)] = {{"backlash_" + unit, loss.backlash * scale},
-                                                 {"reversals", loss.reversals},
-                                                 {"lost_motion_" + unit, loss.lostMotion * scale}};
-    }
-    return json;
-}
-
 // "backlash     A 0.005 deg: 16 -> 0 reversals, 0.080 -> 0.000 deg lost motion", one line per
 // axis with play (before only when nothing was re-scheduled).
 std::string lostMotionSummary(const JobResult& result) {
@@ -44,18 +28,19 @@ std::string lostMotionSummary(const JobResult& result) {
                            : std::vector<analysis::LostMotion>{};
     std::string text;
     for (std::size_t i = 0; i < before.size(); ++i) {
-        const bool rotary = kinematics::isRotary(before[i].axis);
-        const double scale = rotary ? units::radToDeg(1.0) : 1.0;
-        const std::string unit = rotary ? " deg" : " mm";
-        text += std::string("backlash     ") + kinematics::axisName(before[i].axis) + " " +
-                formatFixed(before[i].backlash * scale, 4) + unit + ": " +
-                std::to_string(before[i].reversals);
+        const kinematics::AxisId axis = before[i].axis;
+        const auto shown = [axis](double value, int decimals) {
+            return formatFixed(report::toReportUnit(axis, value), decimals);
+        };
+        const std::string unit = std::string(" ") + report::unitOf(axis);
+        text += std::string("backlash     ") + kinematics::axisName(axis) + " " +
+                shown(before[i].backlash, 4) + unit + ": " + std::to_string(before[i].reversals);
         if (i < after.size()) {
             text += " -> " + std::to_string(after[i].reversals);
         }
-        text += " reversals, " + formatFixed(before[i].lostMotion * scale, 3);
+        text += " reversals, " + shown(before[i].lostMotion, 3);
         if (i < after.size()) {
-            text += " -> " + formatFixed(after[i].lostMotion * scale, 3);
+            text += " -> " + shown(after[i].lostMotion, 3);
         }
         text += unit + " lost motion\n";
     }
@@ -131,7 +116,8 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
         }
     }
     json["analysis"] = report::analysisJson(outcome.profile, outcome.constantFeed);
-    json["analysis"]["lost_motion"] = lostMotionJson(outcome.profile, result.machine);
+    json["analysis"]["lost_motion"] =
+        report::lostMotionJson(analysis::lostMotion(outcome.profile, result.machine));
     json["reductions"] = report::reductionsJson(result.original, outcome.profile);
     const double before = result.constantFeed.time;
     const double after = outcome.constantFeed.time;
@@ -235,7 +221,8 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
         json["tool_radius_mm"] = *result.toolRadius;
     }
     json["original"] = report::analysisJson(result.original, result.constantFeed);
-    json["original"]["lost_motion"] = lostMotionJson(result.original, result.machine);
+    json["original"]["lost_motion"] =
+        report::lostMotionJson(analysis::lostMotion(result.original, result.machine));
     if (result.timeOptimal) {
         json["original"]["time_optimal_s"] = *result.timeOptimal;
     }

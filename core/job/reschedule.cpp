@@ -264,8 +264,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     // the pass is in inverse time (G93), where the same F over a new tip chord is a new tip
     // speed: then the analysis waits for the written program's feeds. Otherwise the re-read
     // check and the analysis are independent and run at once.
-    const bool feedsFromWritten =
-        passIsInverseTime(*input.program, input.passFirst, input.passCount);
+    const bool feedsFromWritten = input.analysis.blockTimes;
     const bool analyseAtOnce = input.analyseNewMotion && !feedsFromWritten;
     auto analysed = std::async(analyseAtOnce ? std::launch::async : std::launch::deferred,
                                [&] { return analyseNewMotion(input, outcome); });

@@ -57,9 +57,9 @@ struct RescheduleInput {
 constexpr double kCentreDeviationLimitMm = 5e-3;
 
 // True when a block of the pass is in inverse time (G93): its F fixes the block's time, so the
-// same F over a new tip chord is a new tip speed. The analyses of such a pass follow the
-// program's block times (AxisProfileOptions::blockTimes), and the analysis of the re-scheduled
-// program takes its feeds from the written program read back.
+// same F over a new tip chord is a new tip speed. The job then sets
+// AxisProfileOptions::blockTimes for both analyses, and reschedule() takes the re-scheduled
+// program's feeds from the written program read back.
 bool passIsInverseTime(const io::LoadedProgram& program, std::size_t first, std::size_t count);
 
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel);

@@ -104,7 +104,7 @@ class InteriorPoint {
                                 largestMagnitude(equalityForce), largestMagnitude(m_p.c)});
             const double gap = m_s.dot(m_z);
             const double mu = gap / static_cast<double>(m_s.size());
-            const double objective = m_p.c.dot(m_x) + 0.5 * m_x.dot(m_p.P * m_x);
+            const double objective = m_p.c.dot(m_x) + 0.5 * m_x.dot(curvature);
             const double residual = std::max(
                 {largestMagnitude(rDual) / dualScale,
                  std::max(largestMagnitude(rPrimal), largestMagnitude(rEquality)) / primalScale,

@@ -1,5 +1,6 @@
 #include "core/optimal/layer_optimum.h"
 
+#include "core/analysis/motion_knots.h"
 #include "core/optimal/interior_point.h"
 
 #include <algorithm>
@@ -133,8 +134,10 @@ void addScheduleRows(const LayerBounds& b, LayerRows& rows) {
     }
 }
 
+} // namespace
+
 // 1/2 theta' P theta = sum w_i D2_i^2 (times a constant).
-ConvexProgram smoothestQpOf(const LayerBounds& b) {
+ConvexProgram smoothestProgram(const LayerBounds& b) {
     const auto n = static_cast<Eigen::Index>(b.s.size());
     std::vector<Triplet> d2;
     const std::vector<SecondDifferenceRow> objective = objectiveRows(b);
@@ -160,7 +163,7 @@ ConvexProgram smoothestQpOf(const LayerBounds& b) {
 // Epigraph form: variables (theta, t), minimise t with -t <= (L^2 / 4) D2_i theta <= t. The
 // scale makes t the angle a bang-bang profile of that peak covers over the layer (the §9.4
 // oracle), i.e. of the order of the angles, which keeps the interior point well conditioned.
-ConvexProgram minimumPeakLpOf(const LayerBounds& b) {
+ConvexProgram minimumPeakProgram(const LayerBounds& b) {
     const auto n = static_cast<Eigen::Index>(b.s.size());
     const double length = b.s.back() - b.s.front();
     const double scale = 0.25 * length * length;
@@ -180,6 +183,8 @@ ConvexProgram minimumPeakLpOf(const LayerBounds& b) {
     rows.into(lp, n + 1);
     return lp;
 }
+
+namespace {
 
 Status validate(const LayerBounds& b) {
     const std::size_t n = b.s.size();
@@ -302,54 +307,32 @@ Result<LayerOptimum> solveLayerProgram(const LayerBounds& bounds, const ConvexPr
 
 } // namespace
 
-ConvexProgram smoothestProgram(const LayerBounds& bounds) {
-    return smoothestQpOf(bounds);
-}
-
-ConvexProgram minimumPeakProgram(const LayerBounds& bounds) {
-    return minimumPeakLpOf(bounds);
-}
-
 Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds) {
     if (auto status = validate(bounds); !status) {
         return std::unexpected(status.error());
     }
-    return solveLayerProgram(bounds, smoothestQpOf(bounds));
+    return solveLayerProgram(bounds, smoothestProgram(bounds));
 }
 
 Result<LayerOptimum> minimumPeakLayer(const LayerBounds& bounds) {
     if (auto status = validate(bounds); !status) {
         return std::unexpected(status.error());
     }
-    return solveLayerProgram(bounds, minimumPeakLpOf(bounds));
+    return solveLayerProgram(bounds, minimumPeakProgram(bounds));
 }
 
 namespace {
 
-// A chord shorter than this fraction of the layer's median chord is a split of a move (posts
-// write micrometre chords), not a place where the schedule can bend: the figures merge such
-// samples (analysis/motion_knots.h), and the optimum is solved without them too. Kept in the
+// A chord shorter than a tenth of the layer's median chord (analysis::MotionKnotTolerances,
+// the same rule the figures use) is a split of a move (posts write micrometre chords), not a
+// place where the schedule can bend: the optimum is solved without such samples. Kept in the
 // problem, a 2 um chord makes its second differences dominate and the optimum answers another
 // question than on the same path without the split.
-constexpr double kShortChordFraction = 0.1;
-
-double medianStep(std::span<const double> s) {
-    std::vector<double> steps;
-    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
-        steps.push_back(s[i + 1] - s[i]);
-    }
-    if (steps.empty()) {
-        return 0.0;
-    }
-    const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-    std::nth_element(steps.begin(), middle, steps.end());
-    return *middle;
-}
-
 // The samples of the problem, without those a short chord away from the previous kept one (the
 // first and the last always kept).
 std::vector<std::size_t> samplesWithoutShortChords(std::span<const double> s) {
-    const double shortChord = kShortChordFraction * medianStep(s);
+    const double shortChord =
+        analysis::MotionKnotTolerances{}.shortChordFraction * analysis::medianChord(s);
     std::vector<std::size_t> kept;
     for (std::size_t i = 0; i < s.size(); ++i) {
         const bool last = i + 1 == s.size();

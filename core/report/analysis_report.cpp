@@ -7,11 +7,8 @@
 
 namespace bladeaxis::report {
 
-namespace {
-
 using kinematics::AxisId;
 
-// Rotary quantities are reported in degrees, linear ones in mm.
 double toReportUnit(AxisId axis, double value) {
     return kinematics::isRotary(axis) ? units::radToDeg(value) : value;
 }
@@ -19,6 +16,20 @@ double toReportUnit(AxisId axis, double value) {
 const char* unitOf(AxisId axis) {
     return kinematics::isRotary(axis) ? "deg" : "mm";
 }
+
+nlohmann::json lostMotionJson(std::span<const analysis::LostMotion> losses) {
+    nlohmann::json json = nlohmann::json::object();
+    for (const analysis::LostMotion& loss : losses) {
+        const std::string unit = unitOf(loss.axis);
+        json[kinematics::axisName(loss.axis)] = {
+            {"backlash_" + unit, toReportUnit(loss.axis, loss.backlash)},
+            {"reversals", loss.reversals},
+            {"lost_motion_" + unit, toReportUnit(loss.axis, loss.lostMotion)}};
+    }
+    return json;
+}
+
+namespace {
 
 nlohmann::json axisJson(AxisId axis, const analysis::AxisSeries& series) {
     const std::string unit = unitOf(axis);

@@ -4,6 +4,7 @@
 // shops); the unit is part of every key and column name.
 
 #include "core/analysis/analysis.h"
+#include "core/analysis/lost_motion.h"
 #include "core/toolpath/toolpath.h"
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,14 @@
 #include <string>
 
 namespace bladeaxis::report {
+
+// Rotary quantities are reported in degrees, linear ones in mm.
+double toReportUnit(kinematics::AxisId axis, double value);
+const char* unitOf(kinematics::AxisId axis);
+
+// {"A": {"backlash_deg": 0.005, "reversals": 16, "lost_motion_deg": 0.08}, ...}: the play of
+// every axis the machine file gives one, taken up at each direction change.
+nlohmann::json lostMotionJson(std::span<const analysis::LostMotion> losses);
 
 // {"path_length_mm", "feed_mm_min", "cycle_time_s", "axes": {"X": {...}, ...},
 //  "a_reversals", "a_travel_deg", "a_backward_travel_deg", "constant_feed_time": {...}}

@@ -8,6 +8,7 @@
 #include "core/blade/presets.h"
 #include "core/optimal/layer_optimum.h"
 #include "core/scheduling/schedule.h"
+#include "tests/support/real_size_pass.h"
 
 #include <benchmark/benchmark.h>
 
@@ -16,6 +17,8 @@
 #include <cstdlib>
 #include <glpk.h>
 #include <libalglib/optimization.h>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace {
@@ -26,24 +29,7 @@ using Sparse = Eigen::SparseMatrix<double>;
 optimal::LayerBounds realSizeLayer() {
     blade::BladeSpec bladeSpec = blade::demoBladeSpec();
     bladeSpec.profile = blade::NacaProfile{0.04, 0.40, 0.18};
-    blade::HelicalPathSpec pathSpec = blade::demoPathSpec();
-    pathSpec.revolutions = 40;
-    pathSpec.pitch = 0.4;
-    pathSpec.chordalTolerance = 0.0015;
-    auto bladeModel = blade::Blade::create(bladeSpec);
-    auto path = bladeModel ? blade::generateHelicalPath(*bladeModel, pathSpec)
-                           : std::unexpected(bladeModel.error());
-    if (!path) {
-        std::fprintf(stderr, "path: %s\n", path.error().message.c_str());
-        std::abort();
-    }
-    scheduling::ScheduleInput input;
-    input.toolRadius = pathSpec.toolRadius;
-    input.centres = path->centre;
-    for (const auto& record : path->path.records) {
-        input.axes.push_back(record.axis);
-    }
-    auto scheduled = scheduling::schedule(input, scheduling::bestPreset());
+    auto scheduled = test::scheduleRealSizePass(bladeSpec, 40);
     if (!scheduled || scheduled->layers.size() < 3) {
         std::fprintf(stderr, "schedule failed\n");
         std::abort();
@@ -91,11 +77,11 @@ void loadIntoGlpk(const optimal::ConvexProgram& lp, glp_prob* problem) {
                     values.data());
 }
 
-void BM_MinimumPeakLp_OwnInteriorPoint(benchmark::State& state) {
-    const optimal::ConvexProgram lp = optimal::minimumPeakProgram(layer());
+// Our interior point on `program`, once per iteration.
+void runOwnInteriorPoint(benchmark::State& state, const optimal::ConvexProgram& program) {
     double objective = 0.0;
     for (auto _ : state) {
-        auto solution = optimal::solveInteriorPoint(lp);
+        auto solution = optimal::solveInteriorPoint(program);
         if (!solution) {
             state.SkipWithError(solution.error().message.c_str());
             return;
@@ -104,65 +90,61 @@ void BM_MinimumPeakLp_OwnInteriorPoint(benchmark::State& state) {
     }
     state.counters["objective"] = objective;
 }
+
+void BM_MinimumPeakLp_OwnInteriorPoint(benchmark::State& state) {
+    runOwnInteriorPoint(state, optimal::minimumPeakProgram(layer()));
+}
 BENCHMARK(BM_MinimumPeakLp_OwnInteriorPoint)->Unit(benchmark::kMillisecond);
 
-void BM_MinimumPeakLp_GlpkSimplex(benchmark::State& state) {
+// Solves the layer's LP with GLPK once per iteration: `solve` runs one GLPK method on the loaded
+// problem and returns its optimum, or nothing when GLPK found none.
+template <class Solve>
+void runGlpk(benchmark::State& state, const char* method, Solve&& solve) {
     const optimal::ConvexProgram lp = optimal::minimumPeakProgram(layer());
     double objective = 0.0;
     for (auto _ : state) {
         glp_prob* problem = glp_create_prob();
         loadIntoGlpk(lp, problem);
+        const std::optional<double> optimum = solve(problem);
+        glp_delete_prob(problem);
+        if (!optimum) {
+            state.SkipWithError((std::string("GLPK ") + method + " found no optimum").c_str());
+            return;
+        }
+        objective = *optimum;
+    }
+    state.counters["objective"] = objective;
+}
+
+void BM_MinimumPeakLp_GlpkSimplex(benchmark::State& state) {
+    runGlpk(state, "simplex", [](glp_prob* problem) -> std::optional<double> {
         glp_smcp parameters;
         glp_init_smcp(&parameters);
         parameters.msg_lev = GLP_MSG_OFF;
         parameters.presolve = GLP_ON;
-        const int status = glp_simplex(problem, &parameters);
-        objective = glp_get_obj_val(problem);
-        const bool optimal = status == 0 && glp_get_status(problem) == GLP_OPT;
-        glp_delete_prob(problem);
-        if (!optimal) {
-            state.SkipWithError("GLPK simplex found no optimum");
-            return;
+        if (glp_simplex(problem, &parameters) != 0 || glp_get_status(problem) != GLP_OPT) {
+            return std::nullopt;
         }
-    }
-    state.counters["objective"] = objective;
+        return glp_get_obj_val(problem);
+    });
 }
 BENCHMARK(BM_MinimumPeakLp_GlpkSimplex)->Unit(benchmark::kMillisecond);
 
 void BM_MinimumPeakLp_GlpkInteriorPoint(benchmark::State& state) {
-    const optimal::ConvexProgram lp = optimal::minimumPeakProgram(layer());
-    double objective = 0.0;
-    for (auto _ : state) {
-        glp_prob* problem = glp_create_prob();
-        loadIntoGlpk(lp, problem);
+    runGlpk(state, "interior point", [](glp_prob* problem) -> std::optional<double> {
         glp_iptcp parameters;
         glp_init_iptcp(&parameters);
         parameters.msg_lev = GLP_MSG_OFF;
-        const int status = glp_interior(problem, &parameters);
-        objective = glp_ipt_obj_val(problem);
-        const bool optimal = status == 0 && glp_ipt_status(problem) == GLP_OPT;
-        glp_delete_prob(problem);
-        if (!optimal) {
-            state.SkipWithError("GLPK interior point found no optimum");
-            return;
+        if (glp_interior(problem, &parameters) != 0 || glp_ipt_status(problem) != GLP_OPT) {
+            return std::nullopt;
         }
-    }
-    state.counters["objective"] = objective;
+        return glp_ipt_obj_val(problem);
+    });
 }
 BENCHMARK(BM_MinimumPeakLp_GlpkInteriorPoint)->Unit(benchmark::kMillisecond);
 
 void BM_SmoothestQp_OwnInteriorPoint(benchmark::State& state) {
-    const optimal::ConvexProgram qp = optimal::smoothestProgram(layer());
-    double objective = 0.0;
-    for (auto _ : state) {
-        auto solution = optimal::solveInteriorPoint(qp);
-        if (!solution) {
-            state.SkipWithError(solution.error().message.c_str());
-            return;
-        }
-        objective = solution->objective;
-    }
-    state.counters["objective"] = objective;
+    runOwnInteriorPoint(state, optimal::smoothestProgram(layer()));
 }
 BENCHMARK(BM_SmoothestQp_OwnInteriorPoint)->Unit(benchmark::kMillisecond);
 

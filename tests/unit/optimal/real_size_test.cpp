@@ -5,6 +5,7 @@
 #include "core/blade/presets.h"
 #include "core/optimal/layer_optimum.h"
 #include "core/scheduling/schedule.h"
+#include "tests/support/real_size_pass.h"
 
 #include <gtest/gtest.h>
 
@@ -15,21 +16,8 @@ namespace {
 
 std::vector<scheduling::LayerResult> realSizeLayers(const blade::BladeSpec& bladeSpec,
                                                     int revolutions) {
-    blade::HelicalPathSpec pathSpec = blade::demoPathSpec();
-    pathSpec.revolutions = revolutions;
-    pathSpec.pitch = 0.4;
-    pathSpec.chordalTolerance = 0.0015;
-    auto bladeModel = blade::Blade::create(bladeSpec);
-    auto path = blade::generateHelicalPath(*bladeModel, pathSpec);
-    EXPECT_TRUE(path.has_value());
-    scheduling::ScheduleInput input;
-    input.toolRadius = pathSpec.toolRadius;
-    input.centres = path->centre;
-    for (const auto& record : path->path.records) {
-        input.axes.push_back(record.axis);
-    }
-    auto schedule = scheduling::schedule(input, scheduling::bestPreset());
-    EXPECT_TRUE(schedule.has_value());
+    auto schedule = test::scheduleRealSizePass(bladeSpec, revolutions);
+    EXPECT_TRUE(schedule.has_value()) << schedule.error().toString();
     return schedule ? schedule->layers : std::vector<scheduling::LayerResult>{};
 }
 

@@ -53,7 +53,7 @@ Result<std::optional<double>> readNumber(const NumberOption& option) {
 struct RawOptions {
     std::string program, machine, out, generate, feedReference = "tip", derivatives = "spline";
     std::string profile = "naca-high-camber", format = "gcode";
-    std::string angleUnit, columns;
+    std::string angleUnit, columns, dialect;
     NumberOption toolRadius{"", "--tool-radius", true};
     NumberOption feed{"", "--feed", true};
     NumberOption bTolerance{"", "--b-tolerance-deg", true};
@@ -175,6 +175,10 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
                    "Unit of the A/B words of a G-code program: deg or rad (needed when the file "
                    "could be either; written programs keep it)")
         ->check(CLI::IsMember({"deg", "rad"}));
+    cli.add_option("--dialect", raw.dialect,
+                   "NC dialect of a G-code program: iso, sinumerik or heidenhain (default: from "
+                   "the content, then the extension .mpf/.spf or .h)")
+        ->check(CLI::IsMember({"iso", "sinumerik", "heidenhain"}));
     cli.add_option("--columns", raw.columns,
                    "Columns of a point table without a header line, e.g. x,y,z,i,j,k");
     cli.add_option("--b-tolerance-deg", raw.bTolerance.text,
@@ -415,6 +419,11 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
     // CLI11 has checked the name against the same list.
     options.job.analysis.method = analysis::derivativeMethodNamed(raw.derivatives)
                                       .value_or(analysis::DerivativeMethod::Spline);
+    if (!raw.dialect.empty()) { // CLI11 has checked the name
+        options.job.read.dialect = raw.dialect == "sinumerik"    ? io::NcDialect::Sinumerik
+                                   : raw.dialect == "heidenhain" ? io::NcDialect::Heidenhain
+                                                                 : io::NcDialect::Iso;
+    }
     if (!raw.angleUnit.empty()) { // CLI11 has checked it is deg or rad
         options.job.read.angleUnit =
             raw.angleUnit == "rad" ? io::AngleUnit::Radians : io::AngleUnit::Degrees;

@@ -1,6 +1,7 @@
 #include "core/io/program.h"
 
 #include "core/base/file_io.h"
+#include "core/io/nc/dialect.h"
 
 #include <algorithm>
 #include <array>
@@ -37,8 +38,8 @@ std::string lowerExtension(const std::filesystem::path& path) {
 }
 
 std::optional<ProgramFormat> formatOfExtension(const std::filesystem::path& path) {
-    static constexpr std::array<std::string_view, 8> kGcode{".nc",  ".ngc", ".tap", ".gcode",
-                                                            ".mpf", ".spf", ".iso", ".cnc"};
+    static constexpr std::array<std::string_view, 9> kGcode{
+        ".nc", ".ngc", ".tap", ".gcode", ".mpf", ".spf", ".iso", ".cnc", ".h"};
     static constexpr std::array<std::string_view, 5> kApt{".cl", ".cls", ".apt", ".aptsource",
                                                           ".clsf"};
     static constexpr std::array<std::string_view, 4> kTable{".txt", ".csv", ".xyz", ".dat"};
@@ -146,7 +147,9 @@ LineCounts classifyLines(std::string_view text) {
             continue;
         }
         ++meaningful;
-        if (looksLikeAptStatement(line)) {
+        if (nc::looksLikeHeidenhainLine(line)) {
+            ++counts.gcode;
+        } else if (looksLikeAptStatement(line)) {
             ++counts.apt;
         } else if (looksLikeGcodeBlock(line)) {
             ++counts.gcode;
@@ -222,6 +225,24 @@ toolpath::Toolpath& LoadedProgram::mutablePath() {
 const std::string& LoadedProgram::text() const {
     return std::visit([](const auto& program) -> const std::string& { return program.text; },
                       document);
+}
+
+std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t first,
+                                    std::size_t count) {
+    const auto* gcode = std::get_if<nc::GcodeProgram>(&program.document);
+    if (gcode == nullptr || count == 0) {
+        return false;
+    }
+    const auto tip = [gcode](std::size_t k) {
+        return (gcode->sources[k].flags & nc::kToolTip) != 0;
+    };
+    const bool firstTip = tip(first);
+    for (std::size_t k = first + 1; k < first + count; ++k) {
+        if (tip(k) != firstTip) {
+            return std::nullopt;
+        }
+    }
+    return firstTip;
 }
 
 ProgramFormat LoadedProgram::format() const {

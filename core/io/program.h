@@ -48,6 +48,12 @@ struct LoadedProgram {
     ProgramFormat format() const;
 };
 
+// Whether the records [first, first + count) are programmed as the tool tip in the workpiece
+// frame (Sinumerik TRAORI, Heidenhain M128 / FUNCTION TCPM); empty when some are and some are
+// not. CL data and ISO programs: false.
+std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t first,
+                                    std::size_t count);
+
 // Detects the format of text read from `path` and parses it; a contradicting extension becomes
 // the first warning of the toolpath.
 Result<LoadedProgram> readProgramText(std::string_view text, const std::filesystem::path& path,

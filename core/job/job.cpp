@@ -127,6 +127,17 @@ Status analyse(JobResult& result, const JobSpec& spec) {
                          {result.program.path().sourceFile});
     }
     const std::span<const ClRecord> pass(records.data() + result.pass.first, result.pass.count);
+    const std::optional<bool> toolTip =
+        io::programsToolTip(result.program, result.pass.first, result.pass.count);
+    if (!toolTip) {
+        return makeError(ErrorCode::Parse,
+                         "tool-tip programming (TRAORI / M128 / FUNCTION TCPM) is switched on or "
+                         "off inside the cutting pass: expected it in the same state for every "
+                         "move of the pass",
+                         {result.program.path().sourceFile, pass.front().line, 0});
+    }
+    // The program decides how its X Y Z read, and so how new orientations are written back.
+    result.machine.chain.tipInWorkpiece = *toolTip;
     auto axes = passAxes(pass, result.machine, result.program.path().sourceFile);
     if (!axes) {
         return std::unexpected(axes.error());

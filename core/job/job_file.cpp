@@ -164,6 +164,16 @@ Status JobReader::programReading(const Json& root, JobSpec& spec) const {
         }
         spec.read.angleUnit = unit == "deg" ? io::AngleUnit::Degrees : io::AngleUnit::Radians;
     }
+    if (root.contains("dialect")) {
+        const Json& value = root.at("dialect");
+        const std::string name = value.is_string() ? value.get<std::string>() : "";
+        if (name != "iso" && name != "sinumerik" && name != "heidenhain") {
+            return fail("dialect", "expected \"iso\", \"sinumerik\" or \"heidenhain\"");
+        }
+        spec.read.dialect = name == "sinumerik"    ? io::NcDialect::Sinumerik
+                            : name == "heidenhain" ? io::NcDialect::Heidenhain
+                                                   : io::NcDialect::Iso;
+    }
     if (root.contains("columns")) {
         if (!root.at("columns").is_string()) {
             return fail("columns", "expected the column names, e.g. \"x,y,z,i,j,k\"");
@@ -502,6 +512,9 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
     }
     if (spec.read.angleUnit) {
         json["angle_unit"] = io::toString(*spec.read.angleUnit);
+    }
+    if (spec.read.dialect) {
+        json["dialect"] = io::toString(*spec.read.dialect);
     }
     if (spec.read.tableColumns) {
         json["columns"] = *spec.read.tableColumns;

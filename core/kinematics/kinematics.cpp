@@ -44,8 +44,11 @@ ToolPose forwardKinematics(const TableAHeadB& chain, const MachineAxes& axes) {
     const double bMath = chain.bSign * axes.b;
     const Vec3 spindle = spindleDirection(bMath);
     const Vec3 programmed(axes.x, axes.y, axes.z);
-    const Vec3 tipMachine = programmed - chain.pivotLength * spindle - chain.headOffset;
     const Mat3 toWorkpiece = rotationX(-aMath);
+    if (chain.tipInWorkpiece) {
+        return {programmed, toWorkpiece * spindle};
+    }
+    const Vec3 tipMachine = programmed - chain.pivotLength * spindle - chain.headOffset;
     return {toWorkpiece * (tipMachine - chain.tableOffset), toWorkpiece * spindle};
 }
 
@@ -70,7 +73,9 @@ Result<MachineAxes> inverseKinematics(const TableAHeadB& chain, const ToolPose& 
 
     const Vec3 tipMachine = rotationX(aMath) * pose.tip + chain.tableOffset;
     const Vec3 programmed =
-        tipMachine + chain.pivotLength * spindleDirection(bMath) + chain.headOffset;
+        chain.tipInWorkpiece
+            ? pose.tip
+            : Vec3(tipMachine + chain.pivotLength * spindleDirection(bMath) + chain.headOffset);
     MachineAxes axes;
     axes.x = programmed.x();
     axes.y = programmed.y();

@@ -55,6 +55,10 @@ struct TableAHeadB {
     Vec3 headOffset = Vec3::Zero();  // mm, c_head: offset of the programmed point from the pivot
     int aSign = 1; // +1 when +A turns the workpiece right-handed about +X; -1 per ISO 841 flip
     int bSign = 1; // +1 when +B tilts the tool right-handed about +Y
+    // Tool-tip programming with the control's transformation on (Sinumerik TRAORI, Heidenhain
+    // M128 / FUNCTION TCPM): X Y Z are the tool tip in the workpiece frame W, and the control
+    // moves the machine's linear axes for the table and head. Set by the program, not the file.
+    bool tipInWorkpiece = false;
 };
 
 // How the control reads an axis word without a decimal point ("X1000"). Fanuc-style controls

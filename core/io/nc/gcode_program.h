@@ -23,6 +23,19 @@ enum RecordFlag : std::uint8_t {
     // G93: F is the inverse of the block's time, so a block whose tip chord changes changes its
     // tip speed when written back with the same F (its ball-centre speed does not).
     kInverseTime = 4,
+    // Tool-tip programming (Sinumerik TRAORI, Heidenhain M128 / FUNCTION TCPM): X Y Z are the
+    // tool tip in the workpiece frame, the control moves the machine axes.
+    kToolTip = 8,
+};
+
+// How a rotary word of a Sinumerik or Heidenhain block reaches its value. ISO words are Plain.
+enum class RotaryForm : std::uint8_t {
+    Plain,       // G90 absolute (G91: an increment), "A45." / "A=45"
+    Absolute,    // "A=AC(45)": absolute in any G90/G91 mode
+    Shortest,    // "A=DC(45)", or Heidenhain M126: to 45 mod 360 the shortest way
+    Positive,    // "A=ACP(45)": to 45 mod 360 turning in the positive direction
+    Negative,    // "A=ACN(45)": to 45 mod 360 turning in the negative direction
+    Incremental, // "A=IC(5)", Heidenhain "IA+5": an increment in any mode
 };
 
 // Where one CL record lives in GcodeProgram::text. Offsets, not strings: 24 bytes per record,
@@ -37,6 +50,9 @@ struct RecordSource {
     // Bit i set: axis i was last set by a block that is not a record (leading partial rapids,
     // the program start), so its modal value here is the original one, whatever the rewrite.
     std::uint8_t setOutside = 0;
+    // How the block's A and B words reach their values; for an axis without a word, the form
+    // the program used for it last (an inserted word takes that form: DC stays DC).
+    std::array<RotaryForm, 2> rotaryForms{RotaryForm::Plain, RotaryForm::Plain};
 
     bool hasWord(int axis) const { return wordBegin[static_cast<std::size_t>(axis)] != kNoWord; }
 };
@@ -61,6 +77,7 @@ struct GcodeProgram {
     std::vector<RecordSource> sources; // one per path.records entry, same order
     std::array<AxisNumberStyle, 5> axisStyles{};
     AngleUnit angleUnit = AngleUnit::Degrees; // of the rotary words, as read (and written back)
+    NcDialect dialect = NcDialect::Iso;
 };
 
 } // namespace bladeaxis::io::nc

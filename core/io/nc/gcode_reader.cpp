@@ -6,6 +6,7 @@
 #include "core/io/nc/detail/error_list.h"
 #include "core/io/nc/detail/modal_interpreter.h"
 #include "core/io/nc/detail/tool_comment.h"
+#include "core/io/nc/dialect.h"
 
 #include <algorithm>
 #include <cctype>
@@ -75,7 +76,7 @@ struct StatedTool {
 // The ball radius the header comments state (tools stated before the first move), converted to
 // mm; a warning instead where they state no ball end or disagree, so the radius must be given.
 void applyStatedTools(const std::vector<StatedTool>& tools, GcodeProgram& program) {
-    if (tools.empty()) {
+    if (tools.empty() || program.path.toolRadius) { // a Heidenhain TOOL DEF states it exactly
         return;
     }
     const std::string& file = program.path.sourceFile;
@@ -123,7 +124,7 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
             --contentEnd;
         }
         const std::string_view line = text.substr(begin, contentEnd - begin);
-        if (!interpreter.rotaryWordSeen()) {
+        if (!interpreter.rotaryWordSeen() && program.dialect == NcDialect::Iso) {
             if (const auto unit = declaredAngleUnit(line)) {
                 interpreter.noteDeclaredUnit(*unit, lineNumber);
             }
@@ -133,7 +134,7 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
                 statedTools.push_back({*tool, lineNumber});
             }
         }
-        if (auto issue = detail::scanBlock(line, block)) {
+        if (auto issue = detail::scanBlock(line, block, program.dialect)) {
             errors.add(lineNumber, static_cast<int>(issue->offset) + 1, std::move(issue->message));
         } else if (ended && block.hasWords) {
             // A subprogram body or a second program after M30: its moves are not this
@@ -180,6 +181,21 @@ Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
     program.text = std::move(text);
     program.path.sourceFile = std::string(fileName);
     program.path.format = toolpath::SourceFormat::Gcode;
+    if (options.dialect) {
+        program.dialect = *options.dialect;
+    } else {
+        DetectedDialect detected = detectDialect(program.text, fileName);
+        program.dialect = detected.dialect;
+        if (detected.warning) {
+            program.path.warnings.push_back(std::move(*detected.warning));
+        }
+    }
+    if (program.dialect != NcDialect::Iso && options.angleUnit == AngleUnit::Radians) {
+        return std::unexpected(parseErrorAt(fileName, 1,
+                                            std::string("--angle-unit rad does not apply: a ") +
+                                                toString(program.dialect) +
+                                                " program states its rotary axes in degrees"));
+    }
     reserveForLines(program);
 
     detail::ErrorList errors(fileName, kMaxParseErrors);

@@ -3,6 +3,12 @@
 // G93/G94, N, M/S/T/D/H kept verbatim, comments in ( ) and after ;, '%' lines, O numbers,
 // '/' block delete treated as active).
 //
+// The same reader takes Siemens Sinumerik 840D and Heidenhain conversational programs
+// (dialect.h decides which, ReadOptions::dialect overrides; detail/sinumerik_scanner.h and
+// detail/heidenhain_scanner.h list what each reads and refuses). Their rotary words are degrees,
+// their numbers without a decimal point whole units, and while tool-tip programming is on
+// (TRAORI, M128, FUNCTION TCPM) X Y Z are the tip in the workpiece frame.
+//
 // Decisions:
 // - A CL record is produced for every G0/G1 block with an X Y Z A or B word once X, Y, Z and A
 //   are known. B that is never programmed is taken as 0, with a warning in Toolpath::warnings.

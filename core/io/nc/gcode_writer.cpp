@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 namespace bladeaxis::io::nc {
@@ -55,13 +56,39 @@ Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> ne
     return {};
 }
 
+bool isModuloForm(RotaryForm form) {
+    return form == RotaryForm::Shortest || form == RotaryForm::Positive ||
+           form == RotaryForm::Negative;
+}
+
+double turnsUp(double delta) {
+    const double r = std::fmod(delta, units::kTwoPi);
+    return r < 0.0 ? r + units::kTwoPi : r;
+}
+
+// The position a modulo-form word (DC, ACP, ACN, M126) written as `target` reaches from `from`.
+double reachedByModulo(RotaryForm form, double from, double target) {
+    switch (form) {
+    case RotaryForm::Positive:
+        return from + turnsUp(target - from);
+    case RotaryForm::Negative:
+        return from - turnsUp(from - target);
+    default:
+        return from + std::remainder(target - from, units::kTwoPi);
+    }
+}
+
 class Rewriter {
   public:
     Rewriter(const GcodeProgram& program, const MachineModel& machine)
         : m_program(program), m_modulo(machine.aMode == kinematics::RotaryMode::Modulo),
-          m_numbers(machine.numbers) {}
+          m_numbers(machine.numbers) {
+        if (program.dialect != NcDialect::Iso) {
+            m_numbers.integerWords = kinematics::IntegerWords::Units; // as the reader took them
+        }
+    }
 
-    std::string run(std::span<const MachineAxes> newAxes) {
+    Result<std::string> run(std::span<const MachineAxes> newAxes) {
         const std::string& text = m_program.text;
         std::string out;
         out.reserve(text.size() + text.size() / 16);
@@ -70,6 +97,9 @@ class Rewriter {
             const RecordSource& source = m_program.sources[k];
             const std::string_view line = lineAt(source.lineBegin);
             std::vector<Edit> edits = editsFor(k, line, newAxes[k]);
+            if (m_failure) {
+                return std::unexpected(std::move(*m_failure));
+            }
             if (edits.empty()) {
                 continue;
             }
@@ -86,7 +116,19 @@ class Rewriter {
         std::size_t axis = 0;
         bool incremental = false;
         bool inch = false;
+        RotaryForm form = RotaryForm::Plain;
     };
+
+    static AxisContext contextOf(std::size_t axis, const RecordSource& source) {
+        const RotaryForm form =
+            axis >= kAxisA ? source.rotaryForms[axis - kAxisA] : RotaryForm::Plain;
+        const bool incremental = form == RotaryForm::Incremental ||
+                                 (form == RotaryForm::Plain && (source.flags & kIncremental) != 0);
+        return {axis, incremental, (source.flags & kInch) != 0, form};
+    }
+    bool wrapsAbsolute(const AxisContext& c) const {
+        return isModuloForm(c.form) || (c.axis == kAxisA && m_modulo);
+    }
 
     std::string_view lineAt(std::uint32_t begin) const {
         const std::string_view text = m_program.text;
@@ -109,7 +151,7 @@ class Rewriter {
             return c.inch ? units::mmToInch(value) : value;
         }
         double angle = radians() ? value : units::radToDeg(value);
-        if (absolute && c.axis == kAxisA && m_modulo) {
+        if (absolute && wrapsAbsolute(c)) {
             angle = std::fmod(angle, fullTurn());
             angle += angle < 0.0 ? fullTurn() : 0.0;
         }
@@ -147,7 +189,7 @@ class Rewriter {
     // A modulo A written as "360.000" after rounding is written as 0 instead.
     std::string wrapFormatted(const AxisContext& c, std::string text, double fileValue,
                               std::string_view old) const {
-        if (c.axis == kAxisA && m_modulo && !c.incremental &&
+        if (c.axis >= kAxisA && wrapsAbsolute(c) && !c.incremental &&
             parseNumber(text).value_or(0.0) * wordScale(c, old) >= fullTurn()) {
             const AxisNumberStyle& style = m_program.axisStyles[c.axis];
             const double wrapped = (fileValue - fullTurn()) / wordScale(c, old);
@@ -159,7 +201,7 @@ class Rewriter {
 
     double increment(const AxisContext& c, double target, double before) const {
         double delta = target - before;
-        if (c.axis == kAxisA && m_modulo) {
+        if (c.axis == kAxisA && m_modulo && c.form == RotaryForm::Plain) {
             // A modulo axis holds A in [0, 360): the shortest rotation reaches the target.
             delta = std::remainder(delta, units::kTwoPi);
         }
@@ -167,9 +209,13 @@ class Rewriter {
     }
 
     std::vector<Edit> editsFor(std::size_t k, std::string_view line, const MachineAxes& target);
+    void checkModuloMove(std::size_t k, const AxisContext& c, double before, double wanted);
+    double reachedAfter(const AxisContext& c, double before, double writtenFile) const;
+    std::string wordText(const AxisContext& c, std::string number) const;
     std::uint32_t insertionOffset(std::size_t axis, const RecordSource& source,
-                                  std::string_view line, bool& after) const;
-    Edit insertion(std::size_t axis, const RecordSource& source, std::string_view line,
+                                  std::string_view line, const detail::ScannedBlock& block,
+                                  bool& after) const;
+    Edit insertion(const AxisContext& c, const RecordSource& source, std::string_view line,
                    std::string number) const;
     static void appendEdited(std::string& out, std::string_view line, std::vector<Edit>& edits);
 
@@ -177,7 +223,69 @@ class Rewriter {
     bool m_modulo = false;
     kinematics::NumberRules m_numbers;
     std::array<double, 5> m_written{}; // what the controller holds after the previous record
+    std::optional<Error> m_failure;    // a move the block's word form cannot make
 };
+
+// A DC / M126 word turns the short way, ACP only up, ACN only down: a new position the form
+// cannot reach from the previous one is refused rather than written as a move the other way.
+void Rewriter::checkModuloMove(std::size_t k, const AxisContext& c, double before, double wanted) {
+    if (!isModuloForm(c.form) || m_failure) {
+        return;
+    }
+    const double delta = wanted - before;
+    const double tolerance = 1e-9;
+    const bool reachable =
+        c.form == RotaryForm::Shortest
+            ? std::abs(delta) < units::kPi - tolerance
+            : (c.form == RotaryForm::Positive ? delta > -tolerance : delta < tolerance) &&
+                  std::abs(delta) < units::kTwoPi - tolerance;
+    if (reachable) {
+        return;
+    }
+    static constexpr std::array<const char*, 6> kFormNames{"",
+                                                           "",
+                                                           "DC (the shorter way)",
+                                                           "ACP (positive direction only)",
+                                                           "ACN (negative direction only)",
+                                                           ""};
+    m_failure =
+        Error{ErrorCode::CheckFailed,
+              std::string("the new ") + kAxisLetters[c.axis] + " turns " +
+                  formatTrimmed(units::radToDeg(delta), 3) + " deg in a block whose word is " +
+                  kFormNames[static_cast<std::size_t>(c.form)] +
+                  ": written so, the control would turn the other way; nothing is written",
+              {m_program.path.sourceFile, m_program.path.records[k].line, 0},
+              {}};
+}
+
+// The controller's position after a word that reads `writtenFile` (file units).
+double Rewriter::reachedAfter(const AxisContext& c, double before, double writtenFile) const {
+    const double value = fromFile(c, writtenFile);
+    if (c.incremental) {
+        return before + value;
+    }
+    return isModuloForm(c.form) ? reachedByModulo(c.form, before, value) : value;
+}
+
+// The whole word for an inserted number in the block's dialect and the form the program
+// uses for that axis: "A12.5", "A=DC(12.5)", Heidenhain "A+12.5" / "IA+5".
+std::string Rewriter::wordText(const AxisContext& c, std::string number) const {
+    const std::string letter(1, kAxisLetters[c.axis]);
+    if (m_program.dialect == NcDialect::Heidenhain) {
+        if (!number.starts_with('-') && !number.starts_with('+')) {
+            number = "+" + number;
+        }
+        return (c.form == RotaryForm::Incremental ? "I" : "") + letter + number;
+    }
+    if (m_program.dialect == NcDialect::Sinumerik) {
+        static constexpr std::array<const char*, 6> kFunctions{"", "AC", "DC", "ACP", "ACN", "IC"};
+        const char* function = kFunctions[static_cast<std::size_t>(c.form)];
+        if (*function != '\0') {
+            return letter + "=" + function + "(" + number + ")";
+        }
+    }
+    return letter + number;
+}
 
 std::vector<Edit> Rewriter::editsFor(std::size_t k, std::string_view line,
                                      const MachineAxes& target) {
@@ -185,7 +293,7 @@ std::vector<Edit> Rewriter::editsFor(std::size_t k, std::string_view line,
     const MachineAxes& original = *m_program.path.records[k].axes;
     std::vector<Edit> edits;
     for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
-        const AxisContext c{axis, (source.flags & kIncremental) != 0, (source.flags & kInch) != 0};
+        const AxisContext c = contextOf(axis, source);
         const AxisNumberStyle& style = m_program.axisStyles[axis];
         const bool hasWord = source.hasWord(static_cast<int>(axis));
         const std::string_view old =
@@ -198,6 +306,7 @@ std::vector<Edit> Rewriter::editsFor(std::size_t k, std::string_view line,
                 axisValue(original, axis) - (c.incremental && hasWord ? fromFile(c, oldFile) : 0.0);
         }
         const double wanted = axisValue(target, axis);
+        checkModuloMove(k, c, before, wanted);
         const double fileValue = c.incremental ? toFile(c, increment(c, wanted, before), false)
                                                : toFile(c, wanted, true);
         double writtenFile = 0.0;
@@ -222,49 +331,57 @@ std::vector<Edit> Rewriter::editsFor(std::size_t k, std::string_view line,
                 continue;
             }
             writtenFile = parseNumber(text).value_or(fileValue);
-            edits.push_back(insertion(axis, source, line, std::move(text)));
+            edits.push_back(insertion(c, source, line, std::move(text)));
         }
-        m_written[axis] =
-            c.incremental ? before + fromFile(c, writtenFile) : fromFile(c, writtenFile);
+        m_written[axis] = reachedAfter(c, before, writtenFile);
     }
     return edits;
 }
 
-// Where a missing word goes: right after the nearest preceding axis word of the block, else
-// right before the nearest following one (a record always has at least one axis word).
+// Where a missing word goes: right after the nearest preceding axis word of the block (after
+// the ')' of "A=DC(..)"), else right before the nearest following one (a record always has at
+// least one axis word).
 std::uint32_t Rewriter::insertionOffset(std::size_t axis, const RecordSource& source,
-                                        std::string_view line, bool& after) const {
+                                        std::string_view line, const detail::ScannedBlock& block,
+                                        bool& after) const {
     for (std::size_t j = axis; j-- > 0;) {
         if (source.hasWord(static_cast<int>(j))) {
             after = true;
-            return static_cast<std::uint32_t>(source.wordBegin[j] + source.wordLength[j]);
+            std::uint32_t end = source.wordBegin[j] + source.wordLength[j];
+            while (end < line.size() && (line[end] == ' ' || line[end] == '\t')) {
+                ++end;
+            }
+            return end < line.size() && line[end] == ')'
+                       ? end + 1
+                       : static_cast<std::uint32_t>(source.wordBegin[j] + source.wordLength[j]);
         }
     }
     after = false;
     for (std::size_t j = axis + 1; j < kAxisLetters.size(); ++j) {
         if (source.hasWord(static_cast<int>(j))) {
-            std::uint32_t letter = source.wordBegin[j];
-            while (letter > 0 && (line[letter - 1] == ' ' || line[letter - 1] == '\t')) {
-                --letter; // blanks between letter and number ("X 1.0")
-            }
-            return letter - 1;
+            return block.word(kAxisLetters[j]).letter;
         }
     }
     return static_cast<std::uint32_t>(line.size());
 }
 
-Edit Rewriter::insertion(std::size_t axis, const RecordSource& source, std::string_view line,
+Edit Rewriter::insertion(const AxisContext& c, const RecordSource& source, std::string_view line,
                          std::string number) const {
-    bool after = false;
-    const std::uint32_t offset = insertionOffset(axis, source, line, after);
     // Follow the block's own layout: words separated by blanks or run together, letter case.
     detail::ScannedBlock block;
-    (void)detail::scanBlock(line, block);
+    (void)detail::scanBlock(line, block, m_program.dialect);
+    bool after = false;
+    const std::uint32_t offset = insertionOffset(c.axis, source, line, block, after);
     const std::string_view code = line.substr(0, block.codeEnd);
-    const bool spaced = code.find_first_of(" \t") != std::string_view::npos;
+    const bool spaced = m_program.dialect == NcDialect::Heidenhain ||
+                        code.find_first_of(" \t") != std::string_view::npos;
     const bool lower = code.find_first_of("xyzab") != std::string_view::npos;
-    const char letter = static_cast<char>(kAxisLetters[axis] + (lower ? 'a' - 'A' : 0));
-    std::string word = std::string(1, letter) + number;
+    std::string word = wordText(c, std::move(number));
+    if (lower) {
+        std::transform(word.begin(), word.end(), word.begin(), [](char ch) {
+            return ch >= 'A' && ch <= 'Z' ? static_cast<char>(ch - 'A' + 'a') : ch;
+        });
+    }
     if (spaced) {
         word = after ? " " + word : word + " ";
     }

@@ -1,6 +1,9 @@
 #include "core/io/nc/detail/block_scanner.h"
 
 #include "core/base/number_io.h"
+#include "core/io/nc/detail/heidenhain_scanner.h"
+#include "core/io/nc/detail/scan_helpers.h"
+#include "core/io/nc/detail/sinumerik_scanner.h"
 
 #include <cmath>
 #include <cstring>
@@ -12,18 +15,6 @@ namespace {
 // The longest number token accepted; longer ones are junk, not precision.
 constexpr std::size_t kMaxNumberLength = 40;
 
-bool isDigit(char c) {
-    return c >= '0' && c <= '9';
-}
-bool isBlank(char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
-}
-bool isLetter(char c) {
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
-}
-char upper(char c) {
-    return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
-}
 bool isControl(unsigned char c) {
     return (c < 0x20 && !isBlank(static_cast<char>(c))) || c == 0x7F;
 }
@@ -31,10 +22,6 @@ bool isControl(unsigned char c) {
 std::string hexByte(unsigned char c) {
     static constexpr char kHex[] = "0123456789ABCDEF";
     return std::string("0x") + kHex[c >> 4] + kHex[c & 0xF];
-}
-
-ScanIssue issueAt(std::size_t offset, std::string message) {
-    return {static_cast<std::uint32_t>(offset), std::move(message)};
 }
 
 // A macro variable (#101) or an expression ([#1+2]) where a number belongs.
@@ -85,6 +72,8 @@ bool looksNumeric(std::string_view token) {
     return digits > 0 && points <= 1;
 }
 
+} // namespace
+
 std::optional<ScanIssue> readNumber(std::string_view line, std::size_t begin, char letter,
                                     WordSpan& word) {
     const std::size_t end = numberEnd(line, begin);
@@ -130,7 +119,7 @@ std::optional<ScanIssue> checkCommentBytes(std::string_view line, std::size_t be
     return std::nullopt;
 }
 
-std::optional<ScanIssue> unexpectedCharacter(std::string_view line, std::size_t i) {
+ScanIssue unexpectedCharacter(std::string_view line, std::size_t i) {
     const auto c = static_cast<unsigned char>(line[i]);
     if (isControl(c)) {
         return issueAt(i, "binary data (byte " + hexByte(c) + "): expected a text NC program");
@@ -180,15 +169,43 @@ std::optional<ScanIssue> scanWord(std::string_view line, std::size_t& i, Scanned
         block.gCodes[static_cast<std::size_t>(block.gCount++)] = word;
         return std::nullopt;
     }
+    return storeWord(letter, word, block);
+}
+
+std::optional<ScanIssue> storeWord(char letter, const WordSpan& word, ScannedBlock& block) {
     const int index = letter - 'A';
     if ((block.present >> index) & 1u) {
-        return issueAt(letterOffset, std::string("word '") + letter +
-                                         "' repeated in one block: expected it once");
+        return issueAt(word.letter, std::string("word '") + letter +
+                                        "' repeated in one block: expected it once");
     }
     block.present |= 1u << index;
     block.words[static_cast<std::size_t>(index)] = word;
+    block.hasWords = true;
     return std::nullopt;
 }
+
+std::string readIdentifier(std::string_view line, std::size_t& i) {
+    std::string name;
+    while (i < line.size() && (isLetter(line[i]) || isDigit(line[i]) || line[i] == '_')) {
+        name += upper(line[i]);
+        ++i;
+    }
+    return name;
+}
+
+void resetBlock(ScannedBlock& block) {
+    block.present = 0;
+    block.gCount = 0;
+    block.codeEnd = 0;
+    block.firstComment = kNoOffset;
+    block.hasWords = false;
+    block.programEnd = false;
+    block.subprogramWord = kNoOffset;
+    block.controls = 0;
+    block.tool = {};
+}
+
+namespace {
 
 std::optional<ScanIssue> scanComment(std::string_view line, std::size_t& i, ScannedBlock& block) {
     if (block.firstComment == kNoOffset) {
@@ -211,14 +228,20 @@ std::optional<ScanIssue> scanComment(std::string_view line, std::size_t& i, Scan
 
 } // namespace
 
+std::optional<ScanIssue> scanBlock(std::string_view line, ScannedBlock& block, NcDialect dialect) {
+    switch (dialect) {
+    case NcDialect::Sinumerik:
+        return scanSinumerikBlock(line, block);
+    case NcDialect::Heidenhain:
+        return scanHeidenhainBlock(line, block);
+    case NcDialect::Iso:
+        break;
+    }
+    return scanBlock(line, block);
+}
+
 std::optional<ScanIssue> scanBlock(std::string_view line, ScannedBlock& block) {
-    block.present = 0;
-    block.gCount = 0;
-    block.codeEnd = 0;
-    block.firstComment = kNoOffset;
-    block.hasWords = false;
-    block.programEnd = false;
-    block.subprogramWord = kNoOffset;
+    resetBlock(block);
     std::size_t i = 0;
     while (i < line.size()) {
         const char c = line[i];

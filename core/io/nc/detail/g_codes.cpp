@@ -1,5 +1,6 @@
 #include "core/io/nc/detail/g_codes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -104,6 +105,47 @@ std::string gCodeName(int code) {
         name += "." + std::to_string(code % 10);
     }
     return name;
+}
+
+} // namespace bladeaxis::io::nc::detail
+
+namespace bladeaxis::io::nc::detail {
+
+namespace {
+
+// G9, G60, G64, G641..G645, G601..G603 (exact stop and continuous-path modes), G500 and
+// G505..G599 work offsets, G17..G19 planes, G40: nothing a four-axis reading depends on.
+bool isSinumerikNoOp(int code) {
+    static constexpr std::array<int, 16> kCodes{90,   170,  180,  190,  400,  600,  640,  6010,
+                                                6020, 6030, 6410, 6420, 6430, 6440, 6450, 5000};
+    return std::find(kCodes.begin(), kCodes.end(), code) != kCodes.end() ||
+           (code >= 5050 && code <= 5990 && code % 10 == 0) ||
+           (code >= 540 && code <= 570 && code % 10 == 0);
+}
+
+} // namespace
+
+GCodeInfo classifySinumerikGCode(int code) {
+    switch (code) {
+    case 700:
+    case 7000:
+        return {GKind::Inch};
+    case 710:
+    case 7100:
+        return {GKind::Metric};
+    case 1530:
+        return {GKind::MachineCoordinates};
+    case 200:
+    case 210:
+        return {GKind::Unsupported, "G20/G21 are ISO-mode codes: a Sinumerik program states inch "
+                                    "or metric with G70/G71 (G700/G710)"};
+    default:
+        break;
+    }
+    if (isSinumerikNoOp(code)) {
+        return {GKind::NoOp};
+    }
+    return classifyGCode(code);
 }
 
 } // namespace bladeaxis::io::nc::detail

@@ -33,6 +33,11 @@ std::optional<int> gCodeTimesTen(double value);
 
 GCodeInfo classifyGCode(int codeTimesTen);
 
+// The same for Sinumerik's own G codes: G70/G71 and G700/G710 for inch and metric, G153 for
+// machine coordinates, its continuous-path, exact-stop and frame-suppression codes as no-ops;
+// the ISO-mode G20/G21 are refused.
+GCodeInfo classifySinumerikGCode(int codeTimesTen);
+
 // "G43.4" for 434.
 std::string gCodeName(int codeTimesTen);
 

@@ -24,6 +24,16 @@ bool isRotaryIndex(std::size_t axis) {
 
 } // namespace
 
+ModalInterpreter::ModalInterpreter(GcodeProgram& program, const kinematics::MachineModel& machine,
+                                   ErrorList& errors, std::optional<AngleUnit> angleUnit)
+    : m_program(program), m_machine(machine), m_errors(errors), m_angleUnit(angleUnit) {
+    m_integerWords = machine.numbers.integerWords;
+    if (program.dialect != NcDialect::Iso) {
+        m_angleUnit = AngleUnit::Degrees;
+        m_integerWords = kinematics::IntegerWords::Units;
+    }
+}
+
 bool ModalInterpreter::fail(const Context& at, std::uint32_t offset, std::string message) {
     m_errors.add(at.lineNumber, static_cast<int>(offset) + 1, std::move(message));
     return false;
@@ -48,7 +58,8 @@ void ModalInterpreter::apply(const ScannedBlock& block, std::string_view line,
         return;
     }
     BlockCodes codes;
-    if (!readGCodes(at, codes) || !checkLetters(at) || !applyFeedWord(at) || !applyCWord(at)) {
+    if (!applyControls(at) || !readGCodes(at, codes) || !checkLetters(at) || !applyFeedWord(at) ||
+        !applyCWord(at)) {
         return;
     }
     std::uint8_t axisWords = 0;
@@ -89,6 +100,48 @@ void ModalInterpreter::apply(const ScannedBlock& block, std::string_view line,
     addRecord(at, axisWords);
 }
 
+bool ModalInterpreter::applyControls(const Context& at) {
+    const std::uint16_t controls = at.block.controls;
+    if (controls & (kToolTipOn | kToolTipOff)) {
+        m_toolTip = (controls & kToolTipOn) != 0;
+    }
+    if (controls & (kShortestPathOn | kShortestPathOff)) {
+        m_shortestA = (controls & kShortestPathOn) != 0;
+    }
+    if (controls & (kToolDef | kToolCall)) {
+        noteStatedTool(at.block);
+    }
+    if (controls & kFeedAuto) {
+        if (!m_autoFeed) {
+            return fail(at, 0, "FAUTO without a feed: expected F in the TOOL CALL before it");
+        }
+        m_feedPerMinuteMm = *m_autoFeed;
+    }
+    return true;
+}
+
+// Heidenhain: TOOL DEF states a tool's radius, TOOL CALL selects it (its DR added) and the feed
+// FAUTO blocks use. The ball radius is that of the tool called before the first move.
+void ModalInterpreter::noteStatedTool(const ScannedBlock& block) {
+    const StatedToolData& tool = block.tool;
+    if (block.controls & kToolDef) {
+        if (tool.radius) {
+            m_toolRadii.emplace_back(tool.number, *tool.radius);
+        }
+        return;
+    }
+    if (tool.feed) {
+        m_autoFeed = *tool.feed;
+    }
+    m_definedRadius.reset();
+    for (auto it = m_toolRadii.rbegin(); it != m_toolRadii.rend(); ++it) {
+        if (it->first == tool.number) {
+            m_definedRadius = it->second + tool.deltaRadius.value_or(0.0);
+            break;
+        }
+    }
+}
+
 bool ModalInterpreter::readGCodes(const Context& at, BlockCodes& codes) {
     for (int i = 0; i < at.block.gCount; ++i) {
         if (!applyGCode(at, at.block.gCodes[static_cast<std::size_t>(i)], codes)) {
@@ -104,7 +157,8 @@ bool ModalInterpreter::applyGCode(const Context& at, const WordSpan& word, Block
         return fail(at, word.valueBegin,
                     "expected a G code number, found 'G" + std::string(word.text(at.line)) + "'");
     }
-    const GCodeInfo info = classifyGCode(*code);
+    const GCodeInfo info = m_program.dialect == NcDialect::Sinumerik ? classifySinumerikGCode(*code)
+                                                                     : classifyGCode(*code);
     switch (info.kind) {
     case GKind::Rapid:
     case GKind::Linear:
@@ -211,23 +265,72 @@ bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axisWords)
         }
         const WordSpan& word = at.block.word(kAxisLetters[axis]);
         noteAxisWord(m_program.axisStyles[axis], word.text(at.line));
-        double value = axisWordValue(at, axis, word);
-        if (m_incremental) {
-            if (!(m_known & bit)) {
-                const std::string name(1, kAxisLetters[axis]);
-                return fail(at, word.letter,
-                            "incremental (G91) " + name + " move before any absolute " + name +
-                                " position: expected " + name + " to be programmed in G90 first");
-            }
-            value += m_position[axis];
+        const double value = axisWordValue(at, axis, word);
+        const RotaryForm form = effectiveForm(word, axis);
+        const bool relative =
+            form == RotaryForm::Incremental || (form == RotaryForm::Plain && m_incremental);
+        if (relative && !(m_known & bit)) {
+            const std::string name(1, kAxisLetters[axis]);
+            const bool g91 = form == RotaryForm::Plain;
+            return fail(at, word.letter,
+                        "incremental " + std::string(g91 ? "(G91) " : "") + name +
+                            " move before any absolute " + name + " position: expected " + name +
+                            " to be programmed " + (g91 ? "in G90" : "absolute") + " first");
         }
-        m_position[axis] = value;
+        if (word.form == RotaryForm::Shortest || word.form == RotaryForm::Positive ||
+            word.form == RotaryForm::Negative) {
+            if (value < 0.0 || value >= units::kTwoPi * (1.0 + 1e-12)) {
+                return fail(at, word.valueBegin,
+                            "DC, ACP and ACN take a position in [0, 360) deg, found " +
+                                std::string(word.text(at.line)));
+            }
+        }
+        if (isRotaryIndex(axis)) {
+            m_lastForms[axis - 3] = form;
+        }
+        m_position[axis] = reachedBy(form, axis, value);
         m_known = static_cast<std::uint8_t>(m_known | bit);
         if (bit == kBBit) {
             m_bProgrammed = true;
         }
     }
     return true;
+}
+
+// How a rotary word reaches its value: its own form (Sinumerik DC, ACP...), or for A the
+// shortest way while Heidenhain's M126 is on.
+RotaryForm ModalInterpreter::effectiveForm(const WordSpan& word, std::size_t axis) const {
+    if (word.form != RotaryForm::Plain) {
+        return word.form;
+    }
+    return axis == 3 && m_shortestA ? RotaryForm::Shortest : RotaryForm::Plain;
+}
+
+// The axis position a word of the given form reaches from the current one. The modulo forms
+// (DC, ACP, ACN, M126) turn by less than a full turn; before the axis is known they go to the
+// value itself.
+double ModalInterpreter::reachedBy(RotaryForm form, std::size_t axis, double value) const {
+    const double from = m_position[axis];
+    const bool known = (m_known >> axis) & 1u;
+    const auto turnsUp = [](double delta) {
+        const double r = std::fmod(delta, units::kTwoPi);
+        return r < 0.0 ? r + units::kTwoPi : r;
+    };
+    switch (form) {
+    case RotaryForm::Plain:
+        return m_incremental ? from + value : value;
+    case RotaryForm::Absolute:
+        return value;
+    case RotaryForm::Incremental:
+        return from + value;
+    case RotaryForm::Shortest:
+        return known ? from + std::remainder(value - from, units::kTwoPi) : value;
+    case RotaryForm::Positive:
+        return known ? from + turnsUp(value - from) : value;
+    case RotaryForm::Negative:
+        return known ? from - turnsUp(from - value) : value;
+    }
+    return value;
 }
 
 // The word's value in mm or rad: the control's rule for a number without a decimal point, then
@@ -242,7 +345,7 @@ double ModalInterpreter::axisWordValue(const Context& at, std::size_t axis, cons
     }
     const kinematics::NumberRules& rules = m_machine.numbers;
     const bool rotary = isRotaryIndex(axis);
-    if (!hasPoint && rules.integerWords == kinematics::IntegerWords::Increments) {
+    if (!hasPoint && m_integerWords == kinematics::IntegerWords::Increments) {
         value *= rotary ? rules.incrementDeg : (m_inch ? rules.incrementInch : rules.incrementMm);
     }
     if (rotary) {
@@ -272,8 +375,8 @@ void ModalInterpreter::finish() {
                          "--angle-unit deg|rad (job key angle_unit) or a header comment such as "
                          "(ANGLES IN DEGREES)");
     }
-    if (m_machine.numbers.integerWords == kinematics::IntegerWords::RefuseMixed &&
-        m_firstPointLine > 0 && m_firstIntegerLine > 0) {
+    if (m_integerWords == kinematics::IntegerWords::RefuseMixed && m_firstPointLine > 0 &&
+        m_firstIntegerLine > 0) {
         m_errors.add(
             m_firstIntegerLine, 1,
             "axis words without a decimal point here, with one at line " +
@@ -330,8 +433,19 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
     source.flags =
         static_cast<std::uint8_t>((m_incremental ? kIncremental : 0) | (m_inch ? kInch : 0) |
                                   (m_inverseTime ? kInverseTime : 0));
+    source.flags = static_cast<std::uint8_t>(source.flags | (m_toolTip ? kToolTip : 0));
     source.setOutside = m_outside;
     m_outside = 0;
+    for (std::size_t rotary = 0; rotary < 2; ++rotary) {
+        const std::size_t axis = 3 + rotary;
+        source.rotaryForms[rotary] = (axisWords >> axis) & 1u
+                                         ? effectiveForm(at.block.word(kAxisLetters[axis]), axis)
+                                     : (axis == 3 && m_shortestA) ? RotaryForm::Shortest
+                                                                  : m_lastForms[rotary];
+    }
+    if (m_program.path.records.empty() && m_definedRadius) {
+        m_program.path.toolRadius = *m_definedRadius;
+    }
     if (!(m_known & kBBit) && !m_warnedDefaultB) {
         m_warnedDefaultB = true;
         m_program.path.warnings.push_back(
@@ -344,7 +458,9 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
     axes.z = m_position[2];
     axes.a = m_position[3];
     axes.b = (m_known & kBBit) ? m_position[4] : 0.0;
-    const kinematics::ToolPose pose = kinematics::forwardKinematics(m_machine.chain, axes);
+    kinematics::TableAHeadB chain = m_machine.chain;
+    chain.tipInWorkpiece = m_toolTip;
+    const kinematics::ToolPose pose = kinematics::forwardKinematics(chain, axes);
 
     toolpath::ClRecord record;
     record.tip = pose.tip;

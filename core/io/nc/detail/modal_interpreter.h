@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace bladeaxis::io::nc::detail {
 
@@ -21,9 +23,11 @@ class ModalInterpreter {
   public:
     // `angleUnit`: the unit of rotary words when the user stated it; empty: degrees unless a
     // header comment declares radians, and checked at the end (finish).
+    // Sinumerik and Heidenhain programs (program.dialect) state rotary words in degrees and
+    // read a number without a decimal point as whole units, whatever the machine file says of
+    // ISO programs.
     ModalInterpreter(GcodeProgram& program, const kinematics::MachineModel& machine,
-                     ErrorList& errors, std::optional<AngleUnit> angleUnit)
-        : m_program(program), m_machine(machine), m_errors(errors), m_angleUnit(angleUnit) {}
+                     ErrorList& errors, std::optional<AngleUnit> angleUnit);
 
     // Interprets one scanned block. `line` is its text, starting at `lineBegin` in the program.
     void apply(const ScannedBlock& block, std::string_view line, std::uint32_t lineBegin,
@@ -53,6 +57,10 @@ class ModalInterpreter {
     };
 
     bool fail(const Context& at, std::uint32_t offset, std::string message);
+    bool applyControls(const Context& at);
+    void noteStatedTool(const ScannedBlock& block);
+    double reachedBy(RotaryForm form, std::size_t axis, double value) const;
+    RotaryForm effectiveForm(const WordSpan& word, std::size_t axis) const;
     bool readGCodes(const Context& at, BlockCodes& codes);
     bool applyGCode(const Context& at, const WordSpan& word, BlockCodes& codes);
     bool checkLetters(const Context& at);
@@ -83,6 +91,13 @@ class ModalInterpreter {
     bool m_warnedDefaultB = false;
     std::optional<double> m_c; // deg, the constant C
     std::uint8_t m_outside = 0x1F;
+    bool m_toolTip = false;   // TRAORI / M128 / FUNCTION TCPM in effect
+    bool m_shortestA = false; // Heidenhain M126 in effect
+    std::array<RotaryForm, 2> m_lastForms{RotaryForm::Plain, RotaryForm::Plain}; // A, B
+    std::optional<double> m_autoFeed;      // mm/min, the feed of FAUTO (Heidenhain TOOL CALL F)
+    std::optional<double> m_definedRadius; // Heidenhain TOOL DEF R of the tool called
+    std::vector<std::pair<int, double>> m_toolRadii; // TOOL DEF number, R
+    kinematics::IntegerWords m_integerWords = kinematics::IntegerWords::RefuseMixed;
     std::optional<Vec3> m_lastTip;
 
     std::optional<AngleUnit> m_angleUnit; // given or declared; empty: degrees, checked in finish

@@ -59,23 +59,31 @@ CuttingPass longestFeedRun(const std::vector<ClRecord>& records) {
 }
 
 // Machine axes of the pass with A continuous: G-code gives them (modulo A is unwrapped),
-// CL data goes through the inverse kinematics with A unwrapped record to record.
+// CL data goes through the inverse kinematics with A unwrapped record to record. A program in
+// tool-tip programming (TRAORI, M128) gives the tip in the workpiece frame: its machine axes,
+// the ones that move and that the analysis is about, come from the inverse kinematics too, on
+// the programmed A's branch.
 Result<std::vector<kinematics::MachineAxes>> passAxes(std::span<const ClRecord> pass,
                                                       const kinematics::MachineModel& machine,
-                                                      const std::string& file) {
+                                                      bool toolTip, const std::string& file) {
     std::vector<kinematics::MachineAxes> axes;
     axes.reserve(pass.size());
     double previousA = 0.0;
     for (const ClRecord& record : pass) {
-        if (record.axes) {
+        if (record.axes && !toolTip) {
             kinematics::MachineAxes value = *record.axes;
             if (!axes.empty() && machine.aMode == kinematics::RotaryMode::Modulo) {
                 value.a = geometry::unwrapNear(value.a, previousA);
             }
             axes.push_back(value);
         } else {
+            double reference = previousA;
+            if (record.axes) {
+                reference =
+                    axes.empty() ? record.axes->a : geometry::unwrapNear(record.axes->a, previousA);
+            }
             auto value =
-                kinematics::inverseKinematics(machine.chain, {record.tip, record.axis}, previousA);
+                kinematics::inverseKinematics(machine.chain, {record.tip, record.axis}, reference);
             if (!value) {
                 Error error = value.error();
                 error.where = {file, record.line, 0};
@@ -136,9 +144,7 @@ Status analyse(JobResult& result, const JobSpec& spec) {
                          "move of the pass",
                          {result.program.path().sourceFile, pass.front().line, 0});
     }
-    // The program decides how its X Y Z read, and so how new orientations are written back.
-    result.machine.chain.tipInWorkpiece = *toolTip;
-    auto axes = passAxes(pass, result.machine, result.program.path().sourceFile);
+    auto axes = passAxes(pass, result.machine, *toolTip, result.program.path().sourceFile);
     if (!axes) {
         return std::unexpected(axes.error());
     }

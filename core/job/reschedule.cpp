@@ -64,6 +64,15 @@ Result<std::string> rewriteProgram(const RescheduleInput& input,
             axes.push_back(record.axes.value_or(kinematics::MachineAxes{}));
         }
         std::copy(passAxes.begin(), passAxes.end(), axes.begin() + input.passFirst);
+        if (io::programsToolTip(*input.program, input.passFirst, input.passCount).value_or(false)) {
+            // Tool-tip programming writes the tip in the workpiece frame, not the machine's X Y Z.
+            for (std::size_t i = input.passFirst; i < input.passFirst + input.passCount; ++i) {
+                const Vec3 tip = kinematics::forwardKinematics(input.machine->chain, axes[i]).tip;
+                axes[i].x = tip.x();
+                axes[i].y = tip.y();
+                axes[i].z = tip.z();
+            }
+        }
         return io::nc::rewriteGcode(*gcode, axes, *input.machine);
     }
     std::vector<ClRecord> records = all;

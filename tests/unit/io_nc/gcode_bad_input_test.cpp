@@ -18,11 +18,14 @@ fs::path badDir() {
     return fs::path(BLADEAXIS_TEST_DATA_DIR) / "bad" / "nc";
 }
 
+// File names: ISO programs (.nc), Sinumerik (.mpf) and Heidenhain (.h), each dialect found
+// from its extension and content as a user's file would be.
 std::vector<std::string> badCases() {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(badDir())) {
-        if (entry.path().extension() == ".nc") {
-            names.push_back(entry.path().stem().string());
+        const std::string extension = entry.path().extension().string();
+        if (extension == ".nc" || extension == ".mpf" || extension == ".h") {
+            names.push_back(entry.path().filename().string());
         }
     }
     std::sort(names.begin(), names.end());
@@ -39,8 +42,9 @@ std::string trimmed(std::string text) {
 class BadGcode : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BadGcode, IsRejectedWithTheExpectedLocatedMessage) {
-    const fs::path input = badDir() / (GetParam() + ".nc");
-    const Result<std::string> expected = readTextFile(badDir() / (GetParam() + ".expected"));
+    const fs::path input = badDir() / GetParam();
+    const Result<std::string> expected =
+        readTextFile(badDir() / (input.stem().string() + ".expected"));
     ASSERT_TRUE(expected.has_value()) << "missing " << GetParam() << ".expected";
     const std::string wanted = trimmed(*expected);
     ASSERT_FALSE(wanted.empty());

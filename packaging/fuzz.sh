@@ -34,9 +34,9 @@ seeds() {
     case "$1" in
     program)
         echo "tests/fuzz/corpus/gcode tests/fuzz/corpus/apt tests/fuzz/corpus/point_table" \
-            "$data/nc $data/cl $data/awkward $data/bad $data/programs"
+            "$data/nc $data/cl $data/awkward $data/bad $data/programs $data/dialects"
         ;;
-    gcode) echo "$data/nc $data/bad/nc $data/awkward" ;;
+    gcode) echo "$data/nc $data/bad/nc $data/awkward $data/dialects" ;;
     apt) echo "$data/cl $data/bad/cl $data/awkward" ;;
     point_table) echo "$data/awkward" ;;
     machine_file) echo "resources/machines $data/machines" ;;

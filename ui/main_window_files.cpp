@@ -396,7 +396,15 @@ QString MainWindow::exportFilter() const {
     }
     switch (m_result->program.format()) {
     case io::ProgramFormat::Gcode:
-        return tr("G-code (*.nc *.ngc *.tap *.iso *.mpf *.txt)") + ";;" + all;
+        switch (std::get<io::nc::GcodeProgram>(m_result->program.document).dialect) {
+        case io::NcDialect::Sinumerik:
+            return tr("Sinumerik programs (*.mpf *.spf)") + ";;" + all;
+        case io::NcDialect::Heidenhain:
+            return tr("Heidenhain programs (*.h)") + ";;" + all;
+        case io::NcDialect::Iso:
+            break;
+        }
+        return tr("G-code (*.nc *.ngc *.tap *.iso *.txt)") + ";;" + all;
     case io::ProgramFormat::Apt:
         return tr("CL data (*.cl *.cls *.apt *.aptsource)") + ";;" + all;
     case io::ProgramFormat::Table:
@@ -454,7 +462,8 @@ void MainWindow::openProgramDialog() {
     }
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Open program"), QString(),
-        tr("Programs (*.nc *.ngc *.gcode *.tap *.cl *.apt *.cls);;All files (*)"));
+        tr("Programs (*.nc *.ngc *.gcode *.tap *.iso *.mpf *.spf *.h *.cl *.apt *.cls);;"
+           "All files (*)"));
     if (!path.isEmpty()) {
         runProgram(path);
     }

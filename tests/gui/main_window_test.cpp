@@ -439,6 +439,25 @@ class MainWindowTest final : public QObject {
         QVERIFY(m_window->windowTitle().startsWith("naca_weak_3rev.nc"));
     }
 
+    void aHeidenhainProgramIsExportedAsAHeidenhainProgram() {
+        m_window->toolRadiusBox()->setValue(0.0); // from the program's TOOL DEF
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        m_window->runProgram(QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/dialects/naca_weak_3rev.h"));
+        QVERIFY(finished.wait(kJobTimeoutMs));
+        QCOMPARE(finished.front().front().toBool(), true);
+        QCOMPARE(*m_window->result()->toolRadius, 8.0);
+        QVERIFY2(m_window->exportFilter().startsWith("Heidenhain programs (*.h)"),
+                 qPrintable(m_window->exportFilter()));
+        QVERIFY(m_window->suggestedExportPath().endsWith("naca_weak_3rev_rescheduled.h"));
+        const QString output = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/heidenhain_export.h");
+        m_window->exportProgramTo(output);
+        QFile written(output);
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        const QByteArray text = written.readAll();
+        QVERIFY(text.startsWith("0 BEGIN PGM NACA_WEAK_3REV MM\n"));
+        QVERIFY(text.contains("\n9 L M126\n"));
+    }
+
   private:
     static int headerColumn(const QTableWidget* table, const char* prefix) {
         for (int column = 0; column < table->columnCount(); ++column) {

@@ -1,5 +1,5 @@
 #pragma once
-// The parsed form of an ISO/Fanuc G-code program: the toolpath every stage consumes, plus a
+// The parsed form of a G-code family program (ISO/Fanuc, Sinumerik, Heidenhain): the toolpath every stage consumes, plus a
 // compact description of where each CL record came from in the original text, so that a writer
 // can change exactly the X Y Z A B words of a block and copy every other byte.
 

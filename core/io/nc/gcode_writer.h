@@ -7,6 +7,11 @@
 // position. A block without a word for an axis gets one inserted, in X Y Z A B order, when the
 // new value differs from the modal value in effect. G91 blocks get recomputed increments, G20
 // blocks inch values, and modulo A axes values in [0, 360). F words are never changed.
+// Sinumerik and Heidenhain programs are written in their own words: a rotary word keeps its
+// form (A=DC(..) stays DC, IA stays incremental; an inserted word takes the form the program
+// used last), Heidenhain words keep their sign. A new position the form cannot reach the way
+// the control turns (a DC step of 180 deg or more, ACP backwards) is ErrorCode::CheckFailed
+// naming the block, and nothing is returned.
 
 #include "core/base/error.h"
 #include "core/io/nc/gcode_program.h"

@@ -241,6 +241,11 @@ Result<std::vector<Vec2>> JobReader::keyPoints(const Json& list) const {
     if (!list.is_array()) {
         return fail("key_points", "expected a list of [S mm, theta rad] pairs");
     }
+    if (list.size() > kMaxKeyPointsPerLayer) {
+        return fail("key_points", "expected at most " + std::to_string(kMaxKeyPointsPerLayer) +
+                                      " key points in a layer, found " +
+                                      std::to_string(list.size()));
+    }
     for (const Json& pair : list) {
         if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number() || !pair[1].is_number()) {
             return fail("key_points", "expected [S mm, theta rad], got " + pair.dump());
@@ -299,6 +304,11 @@ Result<scheduling::LayerOverride> JobReader::layerEdit(const Json& object) const
 Status JobReader::layerEdits(const Json& list, JobSpec& spec) const {
     if (!list.is_array()) {
         return fail("layer_edits", "expected a list of layer edits");
+    }
+    if (list.size() > kMaxLayerEdits) {
+        return fail("layer_edits", "expected at most " + std::to_string(kMaxLayerEdits) +
+                                       " layer edits (one per layer), found " +
+                                       std::to_string(list.size()));
     }
     spec.layerEdits.clear();
     for (const Json& object : list) {
@@ -452,6 +462,15 @@ Status parseJobJson(std::string_view text, const fs::path& path, JobSpec& spec) 
 }
 
 Status readJobFile(const fs::path& path, JobSpec& spec) {
+    std::error_code error;
+    const auto size = fs::file_size(path, error);
+    if (!error && size > kMaxJobFileBytes) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "job file too large: " + std::to_string(size) +
+                             " bytes, expected at most " + std::to_string(kMaxJobFileBytes) +
+                             " (a job names its files and parameters and edits single layers)",
+                         {path.string()});
+    }
     auto text = readTextFile(path);
     if (!text) {
         return std::unexpected(text.error());

@@ -17,6 +17,13 @@ namespace bladeaxis::job {
 Status readJobFile(const std::filesystem::path& path, JobSpec& spec);
 Status parseJobJson(std::string_view text, const std::filesystem::path& path, JobSpec& spec);
 
+// Bounds on what a job file may ask for: a blade program has at most thousands of layers and
+// an edited layer tens of key points, so a file beyond these is refused (InvalidArgument,
+// naming the key) before it costs memory or time.
+inline constexpr std::size_t kMaxJobFileBytes = 64u << 20;
+inline constexpr std::size_t kMaxLayerEdits = 100'000;
+inline constexpr std::size_t kMaxKeyPointsPerLayer = 100'000;
+
 // The job as JSON text, paths relative to `relativeTo` (the folder the job file goes in).
 std::string jobJsonText(const JobSpec& spec, const std::filesystem::path& relativeTo);
 

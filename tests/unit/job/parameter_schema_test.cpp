@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <string>
+#include <unistd.h>
 
 namespace bladeaxis::job {
 namespace {
@@ -111,6 +113,53 @@ TEST(JobFile, AnOutputOutsideTheJobsFolderIsRefusedNamingTheKey) {
             << status.error().toString();
         EXPECT_EQ(status.error().where.line, 4);
     }
+}
+
+TEST(JobFile, MoreLayerEditsThanAnyProgramHasLayersAreRefusedNamingTheCount) {
+    std::string edits;
+    for (std::size_t i = 0; i <= kMaxLayerEdits; ++i) {
+        edits += (i == 0 ? "{\"layer\": " : ", {\"layer\": ") + std::to_string(i % 50) + "}";
+    }
+    const std::string text =
+        "{\"schema\": \"bladeaxis-job/1\", \"program\": \"in.nc\", \"layer_edits\": [" + edits +
+        "]}";
+    JobSpec spec;
+    const auto status = parseJobJson(text, "job.json", spec);
+    ASSERT_FALSE(status.has_value());
+    EXPECT_EQ(status.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(status.error().message.find("at most 100000 layer edits"), std::string::npos)
+        << status.error().message;
+}
+
+TEST(JobFile, AnEditWithMillionsOfKeyPointsIsRefused) {
+    std::string points;
+    for (std::size_t i = 0; i <= kMaxKeyPointsPerLayer; ++i) {
+        points += (i == 0 ? "[" : ", [") + std::to_string(i) + ", 0]";
+    }
+    const std::string text = "{\"schema\": \"bladeaxis-job/1\", \"program\": \"in.nc\", "
+                             "\"layer_edits\": [{\"layer\": 1, \"key_points\": [" +
+                             points + "]}]}";
+    JobSpec spec;
+    const auto status = parseJobJson(text, "job.json", spec);
+    ASSERT_FALSE(status.has_value());
+    EXPECT_NE(status.error().message.find("at most 100000 key points"), std::string::npos)
+        << status.error().message;
+}
+
+TEST(JobFile, AJobFileLargerThanAnyJobIsRefusedBeforeItIsRead) {
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("bladeaxis_huge_job_" + std::to_string(::getpid()) + ".json");
+    {
+        std::ofstream out(path, std::ios::binary);
+        out << "{\"schema\": \"bladeaxis-job/1\", \"x\": \"";
+        out.seekp(static_cast<std::streamoff>(kMaxJobFileBytes) + 16);
+        out << "\"}";
+    }
+    JobSpec spec;
+    const auto status = readJobFile(path, spec);
+    std::filesystem::remove(path);
+    ASSERT_FALSE(status.has_value());
+    EXPECT_NE(status.error().message.find("job file too large"), std::string::npos);
 }
 
 TEST(JobFile, AnOutputProgramOverAFileThatIsNoProgramIsRefused) {

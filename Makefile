@@ -4,7 +4,7 @@
 BUILD_DIR := build/dev
 JOBS ?= $(shell nproc)
 
-.PHONY: deps configure build demo test bench fuzz format format-check clean
+.PHONY: deps configure build demo test test-asan bench fuzz format format-check clean
 
 deps:
 	bash packaging/install-deps.sh
@@ -20,6 +20,13 @@ demo: build
 
 test: build
 	ctest --preset dev -j $(JOBS)
+
+# The unit, golden and fuzz-corpus tests built with AddressSanitizer and UBSan (preset asan);
+# CI runs it after `make test` (docs/reliability.md).
+test-asan: deps
+	cmake --preset asan >/dev/null
+	cmake --build --preset asan -j $(JOBS)
+	ctest --preset asan -j $(JOBS)
 
 bench: build
 	bash tests/bench/run_benchmarks.sh $(BUILD_DIR)

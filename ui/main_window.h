@@ -50,6 +50,8 @@ class MainWindow final : public QMainWindow {
     bool confirmDiscardEdits();
     // Reads a job file (docs/job-file.md), edits included, and runs it.
     Status openJob(const QString& jobPath);
+    // The status line after opening a job: the outputs it names, written only on export.
+    QString jobOpenedMessage(const QString& jobPath) const;
     // Saves the current job, with the layer edits, as a job file.
     Status saveJob(const QString& jobPath);
     void setMachineFile(const QString& machinePath);

@@ -260,6 +260,23 @@ Status MainWindow::openJob(const QString& jobPath) {
     return {};
 }
 
+// A job file may name outputs; the window writes none of them until the engineer exports,
+// and says so with the paths, so nobody is surprised where a job received from someone writes.
+QString MainWindow::jobOpenedMessage(const QString& jobPath) const {
+    QStringList outputs;
+    for (const std::filesystem::path& output :
+         {m_spec.outputProgram, m_spec.outputCl, m_spec.outputDir}) {
+        if (!output.empty()) {
+            outputs << QString::fromStdString(std::filesystem::absolute(output).string());
+        }
+    }
+    if (outputs.isEmpty()) {
+        return tr("Running %1").arg(jobPath);
+    }
+    return tr("Running %1; nothing is written until you export (the job names %2)")
+        .arg(jobPath, outputs.join(QStringLiteral(", ")));
+}
+
 Status MainWindow::saveJob(const QString& jobPath) {
     const std::filesystem::path path = jobPath.toStdString();
     const std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
@@ -382,6 +399,10 @@ QString MainWindow::suggestedExportPath() const {
     if (!m_result) {
         return {};
     }
+    if (!m_spec.outputProgram
+             .empty()) { // the job file names it: offer that, never write it unasked
+        return QString::fromStdString(std::filesystem::absolute(m_spec.outputProgram).string());
+    }
     const QFileInfo input(QString::fromStdString(m_spec.demo ? std::string(job::kDemoProgramName)
                                                              : m_spec.program.string()));
     const QString suffix = input.suffix().isEmpty() ? QString() : "." + input.suffix();
@@ -444,7 +465,7 @@ void MainWindow::openJobDialog() {
     const QString path =
         QFileDialog::getOpenFileName(this, tr("Open job"), QString(), tr("Job files (*.json)"));
     if (!path.isEmpty()) {
-        reportOutcome(openJob(path), tr("Running %1").arg(path), tr("Job not opened"));
+        reportOutcome(openJob(path), jobOpenedMessage(path), tr("Job not opened"));
     }
 }
 
@@ -499,7 +520,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
     QFile file(path);
     const bool isJob = file.open(QIODevice::ReadOnly) && file.read(4096).contains("bladeaxis-job");
     if (isJob) {
-        reportOutcome(openJob(path), tr("Running %1").arg(path), tr("Job not opened"));
+        reportOutcome(openJob(path), jobOpenedMessage(path), tr("Job not opened"));
     } else {
         setMachineFile(path);
     }

@@ -46,7 +46,7 @@ class MachineReader {
     Result<double> number(const Json& object, std::string_view path, const char* key,
                           std::optional<double> fallback, bool positive) const;
     Result<AxisLimits> axis(const Json& axes, AxisId id, bool rotary) const;
-    Status chain(const Json& root, TableAHeadB& chain) const;
+    Status chain(const Json& root, TableAHeadB& chain, bool& hasB) const;
     Status numberRules(const Json& root, NumberRules& rules) const;
 
     std::string_view m_text;
@@ -126,17 +126,19 @@ Result<AxisLimits> MachineReader::axis(const Json& axes, AxisId id, bool rotary)
     return limits;
 }
 
-Status MachineReader::chain(const Json& root, TableAHeadB& chain) const {
+Status MachineReader::chain(const Json& root, TableAHeadB& chain, bool& hasB) const {
     if (!root.contains("kinematics") || !root.at("kinematics").is_object()) {
         return fail("kinematics", "kinematics", "missing, expected an object");
     }
     const Json& object = root.at("kinematics");
     const std::string type = object.value("type", "");
-    if (type != "table_a_head_b") {
+    if (type != "table_a_head_b" && type != "table_a") {
         return fail("kinematics.type", "type",
-                    "expected \"table_a_head_b\" (rotary table A about X, head B about Y), got \"" +
+                    "expected \"table_a_head_b\" (rotary table A about X, head B about Y) or "
+                    "\"table_a\" (rotary table A about X, fixed head), got \"" +
                         type + "\"");
     }
+    hasB = type == "table_a_head_b";
     auto pivot = number(object, "kinematics", "pivot_length_mm", 0.0, false);
     if (!pivot) {
         return std::unexpected(pivot.error());
@@ -212,13 +214,23 @@ Result<MachineModel> MachineReader::read(const Json& root) {
     MachineModel machine;
     machine.sourceFile = m_file;
     machine.name = root.value("name", "unnamed machine");
-    if (auto status = chain(root, machine.chain); !status) {
+    if (auto status = chain(root, machine.chain, machine.hasB); !status) {
         return std::unexpected(status.error());
     }
     if (!root.contains("axes") || !root.at("axes").is_object()) {
         return fail("axes", "axes", "missing, expected an object with X, Y, Z, A, B");
     }
+    if (!machine.hasB && root.at("axes").contains("B")) {
+        return fail("axes.B", "B", "a \"table_a\" machine has a fixed head: expected no B axis");
+    }
     for (AxisId id : kAllAxes) {
+        if (id == AxisId::B && !machine.hasB) {
+            // Never binding: B stays 0. A's dynamics keep every ratio finite.
+            machine.limit(AxisId::B) = machine.limit(AxisId::A);
+            machine.limit(AxisId::B).hasTravel = false;
+            machine.limit(AxisId::B).backlash = 0.0;
+            continue;
+        }
         auto limits = axis(root.at("axes"), id, isRotary(id));
         if (!limits) {
             return std::unexpected(limits.error());

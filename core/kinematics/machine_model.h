@@ -82,6 +82,9 @@ struct MachineModel {
     std::string name;
     std::string sourceFile; // where it was loaded from; empty for built-in models
     TableAHeadB chain;
+    // false for a fixed head (machine file type "table_a"): B is 0, a program that tilts it is
+    // refused, and the B limits are placeholders that never bind.
+    bool hasB = true;
     std::array<AxisLimits, 5> limits{};
     RotaryMode aMode = RotaryMode::Continuous;
     NumberRules numbers; // how its control reads numbers without a decimal point

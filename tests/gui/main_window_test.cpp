@@ -458,6 +458,31 @@ class MainWindowTest final : public QObject {
         QVERIFY(text.contains("\n9 L M126\n"));
     }
 
+    void aJobShowsWhereItWouldWriteAndWritesNothingUntilExport() {
+        const QDir folder(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/job_outputs"));
+        QVERIFY(folder.mkpath("."));
+        const QString output = folder.filePath("blade_out.h");
+        QFile::remove(output);
+        const QString job = folder.filePath("job.json");
+        QFile file(job);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QStringLiteral("{\"schema\": \"bladeaxis-job/1\", \"program\": \"%1\", "
+                                  "\"output_program\": \"blade_out.h\"}")
+                       .arg(BLADEAXIS_TEST_DATA_DIR "/dialects/naca_weak_3rev.h")
+                       .toUtf8());
+        file.close();
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        QVERIFY(m_window->openJob(job).has_value());
+        const QString message = m_window->jobOpenedMessage(job);
+        QVERIFY2(message.contains("nothing is written until you export") &&
+                     message.contains(output),
+                 qPrintable(message));
+        QVERIFY(finished.wait(kJobTimeoutMs));
+        QCOMPARE(finished.front().front().toBool(), true);
+        QCOMPARE(m_window->suggestedExportPath(), output);
+        QVERIFY(!QFileInfo::exists(output));
+    }
+
   private:
     static int headerColumn(const QTableWidget* table, const char* prefix) {
         for (int column = 0; column < table->columnCount(); ++column) {

@@ -34,7 +34,8 @@ double axisValue(const MachineAxes& axes, std::size_t axis) {
     return axes[kinematics::kAllAxes[axis]];
 }
 
-Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> newAxes) {
+Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> newAxes,
+                    const MachineModel& machine) {
     if (newAxes.size() != program.path.records.size()) {
         return makeError(ErrorCode::InvalidArgument,
                          "expected " + std::to_string(program.path.records.size()) +
@@ -47,6 +48,14 @@ Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> ne
                                                                  kAxisLetters[axis] +
                                                                  " is not finite");
             }
+        }
+        if (!machine.hasB && std::abs(newAxes[k].b) > 1e-9) {
+            return makeError(ErrorCode::CheckFailed,
+                             "the new orientation tilts B by " +
+                                 formatTrimmed(units::radToDeg(newAxes[k].b), 4) +
+                                 " deg, but the machine '" + machine.name +
+                                 "' has a fixed head (no B axis)",
+                             {program.path.sourceFile, program.path.records[k].line, 0});
         }
         if (!program.path.records[k].axes) {
             return makeError(ErrorCode::InvalidArgument,
@@ -408,7 +417,7 @@ Result<std::string> rewriteGcode(const GcodeProgram& program, std::span<const Ma
         return makeError(ErrorCode::InvalidArgument,
                          "program has no source data for its records: parse it with parseGcode");
     }
-    if (Status valid = validateAxes(program, newAxes); !valid) {
+    if (Status valid = validateAxes(program, newAxes, machine); !valid) {
         return std::unexpected(std::move(valid.error()));
     }
     return Rewriter(program, machine).run(newAxes);

@@ -266,6 +266,12 @@ bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axisWords)
         const WordSpan& word = at.block.word(kAxisLetters[axis]);
         noteAxisWord(m_program.axisStyles[axis], word.text(at.line));
         const double value = axisWordValue(at, axis, word);
+        if (bit == kBBit && !m_machine.hasB && value != 0.0) {
+            return fail(at, word.letter,
+                        "B" + std::string(word.text(at.line)) + ": the machine '" + m_machine.name +
+                            "' has a fixed head (no B axis); expected no B word or B0, or the "
+                            "machine file of the machine this program was posted for");
+        }
         const RotaryForm form = effectiveForm(word, axis);
         const bool relative =
             form == RotaryForm::Incremental || (form == RotaryForm::Plain && m_incremental);
@@ -446,7 +452,7 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
     if (m_program.path.records.empty() && m_definedRadius) {
         m_program.path.toolRadius = *m_definedRadius;
     }
-    if (!(m_known & kBBit) && !m_warnedDefaultB) {
+    if (!(m_known & kBBit) && !m_warnedDefaultB && m_machine.hasB) {
         m_warnedDefaultB = true;
         m_program.path.warnings.push_back(
             SourceLocation{m_errors.fileName(), at.lineNumber, 0}.toString() +

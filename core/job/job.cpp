@@ -156,7 +156,7 @@ Status analyse(JobResult& result, const JobSpec& spec) {
             result.machine.name + "' (is the machine file the machine it runs on?)");
     }
     analysis::AxisProfileOptions options = spec.analysis;
-    options.blockTimes = passIsInverseTime(result.program, result.pass.first, result.pass.count);
+    options.blockTimes = passIsBlockTimed(result.program, result.pass.first, result.pass.count);
     if (result.toolRadius) {
         options.toolRadius = *result.toolRadius;
     }
@@ -388,7 +388,7 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     input.analysis = spec.analysis;
     input.analysis.toolRadius = input.toolRadius;
     input.analysis.blockTimes =
-        passIsInverseTime(result.program, result.pass.first, result.pass.count);
+        passIsBlockTimed(result.program, result.pass.first, result.pass.count);
     auto outcome = reschedule(input, cancel);
     if (!outcome) {
         return std::unexpected(outcome.error());

@@ -227,13 +227,13 @@ Status checkTravel(const RescheduleInput& input, const RescheduleOutcome& outcom
 
 } // namespace
 
-bool passIsInverseTime(const io::LoadedProgram& program, std::size_t first, std::size_t count) {
+bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::size_t count) {
     const auto* gcode = std::get_if<io::nc::GcodeProgram>(&program.document);
     if (gcode == nullptr) {
         return false;
     }
     for (std::size_t i = first; i < first + count && i < gcode->sources.size(); ++i) {
-        if ((gcode->sources[i].flags & io::nc::kInverseTime) != 0) {
+        if ((gcode->sources[i].flags & (io::nc::kInverseTime | io::nc::kCombinedFeed)) != 0) {
             return true;
         }
     }

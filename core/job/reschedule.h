@@ -56,11 +56,13 @@ struct RescheduleInput {
 // own number precision (4 decimals) moves centres by well under this.
 constexpr double kCentreDeviationLimitMm = 5e-3;
 
-// True when a block of the pass is in inverse time (G93): its F fixes the block's time, so the
-// same F over a new tip chord is a new tip speed. The job then sets
+// True when a block of the pass is timed by its F rather than by its tip chord: inverse time
+// (G93), or G94 on a control that reads F over the combined axis move (machine file
+// "feed_per_minute": "combined_axes"). Then a new tip chord at the block's time is a new tip
+// speed. The job then sets
 // AxisProfileOptions::blockTimes for both analyses, and reschedule() takes the re-scheduled
 // program's feeds from the written program read back.
-bool passIsInverseTime(const io::LoadedProgram& program, std::size_t first, std::size_t count);
+bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::size_t count);
 
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel);
 

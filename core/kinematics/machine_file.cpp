@@ -240,6 +240,15 @@ Result<MachineModel> MachineReader::read(const Json& root) {
     if (auto status = numberRules(root, machine.numbers); !status) {
         return std::unexpected(status.error());
     }
+    if (root.contains("feed_per_minute")) {
+        const Json& value = root.at("feed_per_minute");
+        const std::string meaning = value.is_string() ? value.get<std::string>() : "";
+        if (meaning != "path" && meaning != "combined_axes") {
+            return fail("feed_per_minute", "feed_per_minute",
+                        "expected \"path\" or \"combined_axes\", got " + value.dump());
+        }
+        machine.feedMeaning = meaning == "path" ? FeedMeaning::Path : FeedMeaning::CombinedAxes;
+    }
     const std::string mode = root.at("axes").at("A").value("mode", "continuous");
     if (mode == "continuous") {
         machine.aMode = RotaryMode::Continuous;

@@ -78,6 +78,13 @@ struct NumberRules {
     double incrementDeg = 0.001;   // of rotary words
 };
 
+// What F means in a G94 block of an ISO program without tool-tip programming.
+enum class FeedMeaning {
+    Path,         // the programmed point's speed along its path (tool-tip controls; the default)
+    CombinedAxes, // Fanuc-style: F along the vector of all axis moves, mm and degrees together;
+                  // a block lasts sqrt(dX^2 + dY^2 + dZ^2 + dA^2 + dB^2) / F
+};
+
 struct MachineModel {
     std::string name;
     std::string sourceFile; // where it was loaded from; empty for built-in models
@@ -88,6 +95,7 @@ struct MachineModel {
     std::array<AxisLimits, 5> limits{};
     RotaryMode aMode = RotaryMode::Continuous;
     NumberRules numbers; // how its control reads numbers without a decimal point
+    FeedMeaning feedMeaning = FeedMeaning::Path;
 
     const AxisLimits& limit(AxisId axis) const { return limits[static_cast<int>(axis)]; }
     AxisLimits& limit(AxisId axis) { return limits[static_cast<int>(axis)]; }

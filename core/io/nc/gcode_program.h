@@ -1,7 +1,8 @@
 #pragma once
-// The parsed form of a G-code family program (ISO/Fanuc, Sinumerik, Heidenhain): the toolpath every stage consumes, plus a
-// compact description of where each CL record came from in the original text, so that a writer
-// can change exactly the X Y Z A B words of a block and copy every other byte.
+// The parsed form of a G-code family program (ISO/Fanuc, Sinumerik, Heidenhain): the toolpath every
+// stage consumes, plus a compact description of where each CL record came from in the original
+// text, so that a writer can change exactly the X Y Z A B words of a block and copy every other
+// byte.
 
 #include "core/io/read_options.h"
 #include "core/toolpath/toolpath.h"
@@ -26,6 +27,9 @@ enum RecordFlag : std::uint8_t {
     // Tool-tip programming (Sinumerik TRAORI, Heidenhain M128 / FUNCTION TCPM): X Y Z are the
     // tool tip in the workpiece frame, the control moves the machine axes.
     kToolTip = 8,
+    // G94 on a control that reads F over the combined axis move (FeedMeaning::CombinedAxes):
+    // the block's time depends on its A and B steps, so a re-scheduled block gets a new F.
+    kCombinedFeed = 16,
 };
 
 // How a rotary word of a Sinumerik or Heidenhain block reaches its value. ISO words are Plain.
@@ -78,6 +82,9 @@ struct GcodeProgram {
     std::array<AxisNumberStyle, 5> axisStyles{};
     AngleUnit angleUnit = AngleUnit::Degrees; // of the rotary words, as read (and written back)
     NcDialect dialect = NcDialect::Iso;
+    // With kCombinedFeed records: the F in effect at each record (file units per minute), so
+    // the writer can give a block whose axis steps change the F that keeps its time.
+    std::vector<double> programmedFeeds;
 };
 
 } // namespace bladeaxis::io::nc

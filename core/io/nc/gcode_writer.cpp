@@ -95,6 +95,7 @@ class Rewriter {
         if (program.dialect != NcDialect::Iso) {
             m_numbers.integerWords = kinematics::IntegerWords::Units; // as the reader took them
         }
+        m_combinedFeed = program.programmedFeeds.size() == program.path.records.size();
     }
 
     Result<std::string> run(std::span<const MachineAxes> newAxes) {
@@ -105,7 +106,11 @@ class Rewriter {
         for (std::size_t k = 0; k < newAxes.size(); ++k) {
             const RecordSource& source = m_program.sources[k];
             const std::string_view line = lineAt(source.lineBegin);
+            const std::array<double, 5> before = m_written;
             std::vector<Edit> edits = editsFor(k, line, newAxes[k]);
+            if (m_combinedFeed) {
+                feedEdit(k, line, before, edits);
+            }
             if (m_failure) {
                 return std::unexpected(std::move(*m_failure));
             }
@@ -219,6 +224,10 @@ class Rewriter {
 
     std::vector<Edit> editsFor(std::size_t k, std::string_view line, const MachineAxes& target);
     void checkModuloMove(std::size_t k, const AxisContext& c, double before, double wanted);
+    void feedEdit(std::size_t k, std::string_view line, const std::array<double, 5>& before,
+                  std::vector<Edit>& edits);
+    double combinedMove(const std::array<double, 5>& from, const std::array<double, 5>& to,
+                        bool inch) const;
     double reachedAfter(const AxisContext& c, double before, double writtenFile) const;
     std::string wordText(const AxisContext& c, std::string number) const;
     std::uint32_t insertionOffset(std::size_t axis, const RecordSource& source,
@@ -233,7 +242,67 @@ class Rewriter {
     kinematics::NumberRules m_numbers;
     std::array<double, 5> m_written{}; // what the controller holds after the previous record
     std::optional<Error> m_failure;    // a move the block's word form cannot make
+    bool m_combinedFeed = false;       // F over the combined axis move: rescaled per block
+    bool m_feedChanged = false;        // the previous record was written with another F
 };
+
+// The move's length as a combined-axes control measures it for F: linear axes in the program's
+// unit, rotary axes in degrees.
+double Rewriter::combinedMove(const std::array<double, 5>& from, const std::array<double, 5>& to,
+                              bool inch) const {
+    double sum = 0.0;
+    for (std::size_t axis = 0; axis < from.size(); ++axis) {
+        const double step = to[axis] - from[axis];
+        const double file =
+            axis >= kAxisA ? units::radToDeg(step) : (inch ? units::mmToInch(step) : step);
+        sum += file * file;
+    }
+    return std::sqrt(sum);
+}
+
+// On a control that reads G94 F over the combined axis move, a block whose A and B steps change
+// would change its time, and with it the speed of the ball centre along the unchanged path. The
+// block gets the F that keeps its time: F x new length / old length. The block after a changed
+// one states its F again, so the program's own F holds from there on.
+void Rewriter::feedEdit(std::size_t k, std::string_view line, const std::array<double, 5>& before,
+                        std::vector<Edit>& edits) {
+    const RecordSource& source = m_program.sources[k];
+    const double programmed = m_program.programmedFeeds[k];
+    double wanted = programmed;
+    if ((source.flags & kCombinedFeed) && k > 0) {
+        const auto asArray = [](const MachineAxes& axes) {
+            return std::array<double, 5>{axes.x, axes.y, axes.z, axes.a, axes.b};
+        };
+        const bool inch = (source.flags & kInch) != 0;
+        const double oldLength = combinedMove(asArray(*m_program.path.records[k - 1].axes),
+                                              asArray(*m_program.path.records[k].axes), inch);
+        const double newLength = combinedMove(before, m_written, inch);
+        if (oldLength > 1e-9 && newLength > 1e-9) {
+            wanted = programmed * newLength / oldLength;
+        }
+    }
+    const std::string wantedText = formatTrimmed(wanted, 1);
+    const bool changed = wantedText != formatTrimmed(programmed, 1);
+    const bool restate = m_feedChanged && programmed > 0.0;
+    m_feedChanged = changed;
+    if (!(changed || restate)) {
+        return;
+    }
+    detail::ScannedBlock block;
+    (void)detail::scanBlock(line, block, m_program.dialect);
+    if (block.has('F')) {
+        const detail::WordSpan& word = block.word('F');
+        if (word.text(line) != wantedText) {
+            edits.push_back({word.valueBegin, word.valueEnd - word.valueBegin, wantedText});
+        }
+        return;
+    }
+    const std::string_view code = line.substr(0, block.codeEnd);
+    const bool spaced = code.find_first_of(" \t") != std::string_view::npos;
+    const bool lower = code.find_first_of("xyzabg") != std::string_view::npos;
+    edits.push_back(
+        {block.codeEnd, 0, std::string(spaced ? " " : "") + (lower ? "f" : "F") + wantedText});
+}
 
 // A DC / M126 word turns the short way, ACP only up, ACN only down: a new position the form
 // cannot reach from the previous one is refused rather than written as a move the other way.

@@ -5,12 +5,20 @@
 #include "core/blade/blade.h"
 #include "core/blade/helical_path.h"
 #include "core/blade/presets.h"
+#include "core/kinematics/kinematics.h"
 #include "core/kinematics/machine_file.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <optional>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "awkward_programs.h"
 #include "demo_job.h"
@@ -68,6 +76,90 @@ TEST(MachineLayouts, TheFamilyOnAFixedHeadMachineReschedulesWithoutReversals) {
         EXPECT_EQ(result->rescheduled->programText.find(" B0.1"), std::string::npos) << member.name;
     }
     EXPECT_GT(reversalsBefore, 0); // the family has reversals to remove
+}
+
+// The ball centre's speed in each feed block of a program on a combined-axes control, computed
+// here from the program's own words (positions and modal F, read by a few lines of parsing that
+// share nothing with the reader): the block lasts its combined move over F.
+std::vector<double> centreSpeeds(const std::string& text, double radius) {
+    const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    std::vector<double> speeds;
+    std::array<double, 5> position{};
+    double feed = 0.0;
+    std::optional<Vec3> lastCentre;
+    std::optional<std::array<double, 5>> last;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream words(line);
+        bool move = false;
+        for (std::string word; words >> word;) {
+            const char letter = word[0];
+            const double value = std::atof(word.c_str() + 1);
+            const std::string_view axes = "XYZAB";
+            if (const auto axis = axes.find(letter); axis != std::string_view::npos) {
+                position[axis] = value;
+                move = true;
+            } else if (letter == 'F') {
+                feed = value;
+            }
+        }
+        if (!move) {
+            continue;
+        }
+        const kinematics::MachineAxes axes{position[0], position[1], position[2],
+                                           units::degToRad(position[3]),
+                                           units::degToRad(position[4])};
+        const kinematics::ToolPose pose = kinematics::forwardKinematics(machine.chain, axes);
+        const Vec3 centre = pose.tip + radius * pose.axis;
+        if (last && lastCentre) {
+            double length = 0.0;
+            for (std::size_t i = 0; i < 5; ++i) {
+                length += (position[i] - (*last)[i]) * (position[i] - (*last)[i]);
+            }
+            const double minutes = std::sqrt(length) / feed;
+            if (minutes > 0.0) {
+                speeds.push_back((centre - *lastCentre).norm() / minutes);
+            }
+        }
+        last = position;
+        lastCentre = centre;
+    }
+    return speeds;
+}
+
+TEST(MachineLayouts, OnACombinedAxesControlEveryBlockKeepsItsCentreSpeed) {
+    const fs::path machineFile =
+        fs::path(BLADEAXIS_TEST_DATA_DIR) / "machines/table_a_combined_feed.json";
+    const auto machine = kinematics::loadMachineFile(machineFile);
+    ASSERT_TRUE(machine) << machine.error().toString();
+    const auto family = blade::syntheticFamily(20261125, 4);
+    ASSERT_TRUE(family);
+    double worst = 0.0;
+    for (blade::FamilyMember member : *family) {
+        member.path.tiltB0 = 0.0;
+        const auto model = blade::Blade::create(member.blade);
+        const auto generated = blade::generateHelicalPath(*model, member.path);
+        ASSERT_TRUE(generated) << member.name;
+        JobSpec spec;
+        spec.program = member.name + ".nc";
+        spec.programText = gcodeText(generated->path, *machine, 3000.0, RotaryUnit::Degrees);
+        spec.machineFile = machineFile;
+        spec.toolRadius = member.path.toolRadius;
+        const auto result = runQuietly(spec);
+        ASSERT_TRUE(result) << member.name << ": " << result.error().toString();
+        const std::vector<double> before = centreSpeeds(*spec.programText, *spec.toolRadius);
+        const std::vector<double> after =
+            centreSpeeds(result->rescheduled->programText, *spec.toolRadius);
+        ASSERT_EQ(before.size(), after.size()) << member.name;
+        for (std::size_t i = 0; i < before.size(); ++i) {
+            if (before[i] > 1.0) { // mm/min: blocks that move the centre
+                worst = std::max(worst, std::abs(after[i] / before[i] - 1.0));
+            }
+        }
+        EXPECT_NE(result->rescheduled->programText.find(" F"), std::string::npos);
+    }
+    EXPECT_LT(worst, 0.01);
+    std::printf("[ measure  ] largest change of a block's centre speed: %.4f %%\n", 100.0 * worst);
 }
 
 TEST(MachineLayouts, AProgramThatTiltsBIsRefusedOnAFixedHeadMachine) {

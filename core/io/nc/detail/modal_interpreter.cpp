@@ -439,7 +439,9 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
     source.flags =
         static_cast<std::uint8_t>((m_incremental ? kIncremental : 0) | (m_inch ? kInch : 0) |
                                   (m_inverseTime ? kInverseTime : 0));
-    source.flags = static_cast<std::uint8_t>(source.flags | (m_toolTip ? kToolTip : 0));
+    const bool combined = m_motion == GKind::Linear && readsCombinedFeed();
+    source.flags = static_cast<std::uint8_t>(source.flags | (m_toolTip ? kToolTip : 0) |
+                                             (combined ? kCombinedFeed : 0));
     source.setOutside = m_outside;
     m_outside = 0;
     for (std::size_t rotary = 0; rotary < 2; ++rotary) {
@@ -476,14 +478,51 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
         m_motion == GKind::Linear ? toolpath::MotionKind::Feed : toolpath::MotionKind::Rapid;
     record.feed = record.motion == toolpath::MotionKind::Feed ? feedOfRecord(pose.tip) : 0.0;
     record.line = at.lineNumber;
+    if (m_program.dialect == NcDialect::Iso &&
+        m_machine.feedMeaning == kinematics::FeedMeaning::CombinedAxes) {
+        const double fileFeed = m_feedPerMinuteMm.value_or(0.0) / (m_inch ? 25.4 : 1.0);
+        m_program.programmedFeeds.push_back(fileFeed);
+    }
+    m_lastRecordPosition = m_position;
     m_lastTip = pose.tip;
     m_program.path.records.push_back(record);
     m_program.sources.push_back(source);
 }
 
-// Tip speed in mm/s. G94: F is mm/min. G93: F is 1/min, the block lasts 1/F min, so the tip
-// speed is the tip chord over that time (0, unknown, for a first block without a start point).
+// Whether F of a feed block is read over the combined axis move: ISO G94 on a control that
+// says so, without tool-tip programming (Sinumerik's FGROUP default and Heidenhain take F along
+// the linear path).
+bool ModalInterpreter::readsCombinedFeed() const {
+    return m_program.dialect == NcDialect::Iso && !m_inverseTime && !m_toolTip &&
+           m_machine.feedMeaning == kinematics::FeedMeaning::CombinedAxes;
+}
+
+// The length of the move from `from` as the control measures it for F: linear axes in the
+// program's unit (mm or inch), rotary axes in degrees, all in one vector.
+double ModalInterpreter::combinedMove(const std::array<double, 5>& from) const {
+    double sum = 0.0;
+    for (std::size_t axis = 0; axis < from.size(); ++axis) {
+        const double step = m_position[axis] - from[axis];
+        const double file =
+            isRotaryIndex(axis) ? units::radToDeg(step) : (m_inch ? units::mmToInch(step) : step);
+        sum += file * file;
+    }
+    return std::sqrt(sum);
+}
+
+// Tip speed in mm/s. G94: F is mm/min, or over the combined move (then the block lasts that
+// move / F). G93: F is 1/min, the block lasts 1/F min. Either way the tip speed is the tip chord
+// over that time (0, unknown, for a first block without a start point).
 double ModalInterpreter::feedOfRecord(const Vec3& tip) const {
+    if (readsCombinedFeed()) {
+        if (!m_lastTip || !m_lastRecordPosition) {
+            return 0.0;
+        }
+        const double fileFeed = *m_feedPerMinuteMm / (m_inch ? 25.4 : 1.0);
+        const double minutes = combinedMove(*m_lastRecordPosition) / fileFeed;
+        return minutes > 0.0 ? units::perMinuteToPerSecond((tip - *m_lastTip).norm() / minutes)
+                             : 0.0;
+    }
     if (!m_inverseTime) {
         return units::perMinuteToPerSecond(*m_feedPerMinuteMm);
     }

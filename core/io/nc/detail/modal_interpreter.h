@@ -73,6 +73,8 @@ class ModalInterpreter {
     bool checkFeedAvailable(const Context& at);
     void addRecord(const Context& at, std::uint8_t axisWords);
     double feedOfRecord(const Vec3& tip) const;
+    bool readsCombinedFeed() const;
+    double combinedMove(const std::array<double, 5>& from) const;
     std::uint32_t firstAxisOffset(const Context& at, std::uint8_t axisWords) const;
 
     GcodeProgram& m_program;
@@ -99,6 +101,7 @@ class ModalInterpreter {
     std::vector<std::pair<int, double>> m_toolRadii; // TOOL DEF number, R
     kinematics::IntegerWords m_integerWords = kinematics::IntegerWords::RefuseMixed;
     std::optional<Vec3> m_lastTip;
+    std::optional<std::array<double, 5>> m_lastRecordPosition; // for the combined-axes time
 
     std::optional<AngleUnit> m_angleUnit; // given or declared; empty: degrees, checked in finish
     int m_unitDeclarationLine = 0;        // the header comment that declared it, if any

@@ -1,5 +1,6 @@
 #include "core/base/units.h"
 #include "core/kinematics/kinematics.h"
+#include "core/kinematics/machine_model.h"
 
 #include <gtest/gtest.h>
 
@@ -17,6 +18,31 @@ TableAHeadB offsetChain() {
     chain.tableOffset = Vec3(12.0, -4.0, 150.0);
     chain.headOffset = Vec3(0.5, 0.0, -2.0);
     return chain;
+}
+
+// The worked example of docs/machine-file.md, so the document stays true.
+TEST(ForwardKinematics, TheMachineFileDocumentsWorkedExample) {
+    const MachineModel machine = defaultBladeMachine();
+    const ToolPose pose =
+        forwardKinematics(machine.chain, {10.0, 20.0, 5.0, degToRad(30.0), degToRad(10.0)});
+    EXPECT_LT((pose.tip - Vec3(10.0, 19.8205, -5.6699)).norm(), 1e-4);
+    EXPECT_LT((pose.axis - Vec3(0.1736, 0.4924, 0.8529)).norm(), 1e-4);
+    EXPECT_LT((pose.tip + 4.0 * pose.axis - Vec3(10.6946, 21.7901, -2.2584)).norm(), 1e-4);
+}
+
+TEST(ForwardKinematics, ToolTipProgrammingReadsXyzAsTheTipInTheWorkpieceFrame) {
+    TableAHeadB chain = defaultBladeMachine().chain;
+    chain.pivotLength = 250.0;
+    chain.tipInWorkpiece = true;
+    const MachineAxes axes{10.0, 20.0, 5.0, degToRad(30.0), degToRad(10.0)};
+    const ToolPose pose = forwardKinematics(chain, axes);
+    EXPECT_LT((pose.tip - Vec3(10.0, 20.0, 5.0)).norm(), 1e-12);
+    EXPECT_LT((pose.axis - toolAxisFor(chain, axes.a, axes.b)).norm(), 1e-12);
+    const auto back = inverseKinematics(chain, pose, axes.a);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_NEAR(back->x, 10.0, 1e-9);
+    EXPECT_NEAR(back->a, axes.a, 1e-9);
+    EXPECT_NEAR(back->b, axes.b, 1e-9);
 }
 
 TEST(ForwardKinematics, ZeroAnglesGiveTheToolAlongZ) {

@@ -93,4 +93,27 @@ inline toolpath::Toolpath spiralPath(int points, double turns,
     return path;
 }
 
+// One block a dialect's reader refuses: where (1-based column) and a part of the message.
+struct BlockRefusal {
+    const char* name; // the test's name
+    const char* block;
+    int column;
+    const char* expected;
+};
+
+inline std::string refusalName(const ::testing::TestParamInfo<BlockRefusal>& param) {
+    return param.param.name;
+}
+
+// The reading failed as a parse error at `line` and the refusal's column, saying what it names.
+inline void expectRefused(const Result<GcodeProgram>& program, int line,
+                          const BlockRefusal& refusal) {
+    ASSERT_FALSE(program.has_value()) << refusal.block;
+    EXPECT_EQ(program.error().code, ErrorCode::Parse);
+    EXPECT_EQ(program.error().where.line, line);
+    EXPECT_EQ(program.error().where.column, refusal.column);
+    EXPECT_NE(program.error().message.find(refusal.expected), std::string::npos)
+        << program.error().message;
+}
+
 } // namespace bladeaxis::io::nc::test

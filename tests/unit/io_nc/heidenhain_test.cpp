@@ -80,42 +80,31 @@ TEST(Heidenhain, M128AndFunctionTcpmProgramTheTipInTheWorkpieceFrame) {
     }
 }
 
-struct Refusal {
-    const char* name;
-    const char* block;
-    int column;
-    const char* expected;
-};
+using test::BlockRefusal;
 
-class HeidenhainRefusal : public ::testing::TestWithParam<Refusal> {};
+class HeidenhainRefusal : public ::testing::TestWithParam<BlockRefusal> {};
 
 TEST_P(HeidenhainRefusal, NamesTheLineColumnAndWhatIsNotSupported) {
-    const Refusal& refusal = GetParam();
-    const auto read = parse(program(std::string(refusal.block) + "\n"));
-    ASSERT_FALSE(read.has_value());
-    EXPECT_EQ(read.error().code, ErrorCode::Parse);
-    EXPECT_EQ(read.error().where.line, 5);
-    EXPECT_EQ(read.error().where.column, refusal.column);
-    EXPECT_NE(read.error().message.find(refusal.expected), std::string::npos)
-        << read.error().message;
+    const BlockRefusal& refusal = GetParam();
+    test::expectRefused(parse(program(std::string(refusal.block) + "\n")), 5, refusal);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Blocks, HeidenhainRefusal,
-    ::testing::Values(Refusal{"arc_centre", "4 CC X+0 Y+0", 3, "arcs"},
-                      Refusal{"arc", "4 C X+1 Y+0 DR+", 3, "arcs"},
-                      Refusal{"radius_compensation", "4 L X+1 RL F3000", 9, "radius compensation"},
-                      Refusal{"datum_shift", "4 CYCL DEF 7.0 DATUM SHIFT", 8, "CYCL DEF 32"},
-                      Refusal{"tilted_plane", "4 PLANE SPATIAL SPA+0 SPB+45 SPC+0", 3, "tilted"},
-                      Refusal{"q_parameter", "4 Q1 = 5", 3, "Q parameters"},
-                      Refusal{"label", "4 LBL 1", 3, "labels"},
-                      Refusal{"incremental_linear", "4 L IX+1 F3000", 5, "incremental linear"},
-                      Refusal{"feed_per_tooth", "4 L X+1 FZ0.1", 9, "per tooth"},
-                      Refusal{"spatial_tcpm", "4 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS", 12,
-                              "SPAT"},
-                      Refusal{"retract", "4 L M140 MB MAX", 5, "retraction"},
-                      Refusal{"unknown", "4 TCH PROBE 400", 3, "unknown Heidenhain statement"}),
-    [](const ::testing::TestParamInfo<Refusal>& param) { return param.param.name; });
+    ::testing::Values(
+        BlockRefusal{"arc_centre", "4 CC X+0 Y+0", 3, "arcs"},
+        BlockRefusal{"arc", "4 C X+1 Y+0 DR+", 3, "arcs"},
+        BlockRefusal{"radius_compensation", "4 L X+1 RL F3000", 9, "radius compensation"},
+        BlockRefusal{"datum_shift", "4 CYCL DEF 7.0 DATUM SHIFT", 8, "CYCL DEF 32"},
+        BlockRefusal{"tilted_plane", "4 PLANE SPATIAL SPA+0 SPB+45 SPC+0", 3, "tilted"},
+        BlockRefusal{"q_parameter", "4 Q1 = 5", 3, "Q parameters"},
+        BlockRefusal{"label", "4 LBL 1", 3, "labels"},
+        BlockRefusal{"incremental_linear", "4 L IX+1 F3000", 5, "incremental linear"},
+        BlockRefusal{"feed_per_tooth", "4 L X+1 FZ0.1", 9, "per tooth"},
+        BlockRefusal{"spatial_tcpm", "4 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS", 12, "SPAT"},
+        BlockRefusal{"retract", "4 L M140 MB MAX", 5, "retraction"},
+        BlockRefusal{"unknown", "4 TCH PROBE 400", 3, "unknown Heidenhain statement"}),
+    test::refusalName);
 
 TEST(Heidenhain, InchProgramsAreRefusedNamingTheUnit) {
     const auto read = parse("0 BEGIN PGM BLADE INCH\n1 L X+0 Y+0 Z+2 A+30 B+0 R0 F100\n");

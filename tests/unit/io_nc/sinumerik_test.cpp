@@ -95,43 +95,32 @@ TEST(Sinumerik, SettingsCyclesMessagesAndToolNamesAreKept) {
     EXPECT_EQ(program->path.records.size(), 2u);
 }
 
-struct Refusal {
-    const char* name;
-    const char* block;
-    int column;
-    const char* expected;
-};
+using test::BlockRefusal;
 
-class SinumerikRefusal : public ::testing::TestWithParam<Refusal> {};
+class SinumerikRefusal : public ::testing::TestWithParam<BlockRefusal> {};
 
 TEST_P(SinumerikRefusal, NamesTheLineColumnAndWhatIsNotSupported) {
-    const Refusal& refusal = GetParam();
-    const auto program = parse(header(std::string(refusal.block) + "\n"));
-    ASSERT_FALSE(program.has_value());
-    EXPECT_EQ(program.error().code, ErrorCode::Parse);
-    EXPECT_EQ(program.error().where.line, 3);
-    EXPECT_EQ(program.error().where.column, refusal.column);
-    EXPECT_NE(program.error().message.find(refusal.expected), std::string::npos)
-        << program.error().message;
+    const BlockRefusal& refusal = GetParam();
+    test::expectRefused(parse(header(std::string(refusal.block) + "\n")), 3, refusal);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Blocks, SinumerikRefusal,
     ::testing::Values(
-        Refusal{"r_parameter", "N30 R1=5", 5, "R-parameters"},
-        Refusal{"parameter_in_word", "N30 G1 X=R1 F3000", 10, "R-parameters"},
-        Refusal{"expression", "N30 G1 X=10+R2 F3000", 12, "expression"},
-        Refusal{"frame", "N30 TRANS X10", 5, "frame"},
-        Refusal{"swivel_cycle", "N30 CYCLE800(1,\"TC1\",0)", 5, "frame"},
-        Refusal{"jump", "N30 GOTOF END", 5, "control flow"},
-        Refusal{"unknown_call", "N30 BLADE_FINISH", 5, "unknown Sinumerik instruction"},
-        Refusal{"orientation_vector", "N30 G1 X1 A3=0.5 F3000", 11, "orientation vector"},
-        Refusal{"incremental_linear", "N30 G1 X=IC(5) F3000", 10, "only A and B"},
-        Refusal{"direct_beyond_a_turn", "N30 G1 X1 A=DC(400) F3000", 16, "[0, 360)"},
-        Refusal{"iso_comment", "N30 G1 X1 (CUT) F3000", 11, "comments start with ';'"},
-        Refusal{"iso_inch", "N30 G20", 5, "G70/G71"},
-        Refusal{"arc", "N30 G2 X1 Y1 I1 J0", 5, "circular"}),
-    [](const ::testing::TestParamInfo<Refusal>& param) { return param.param.name; });
+        BlockRefusal{"r_parameter", "N30 R1=5", 5, "R-parameters"},
+        BlockRefusal{"parameter_in_word", "N30 G1 X=R1 F3000", 10, "R-parameters"},
+        BlockRefusal{"expression", "N30 G1 X=10+R2 F3000", 12, "expression"},
+        BlockRefusal{"frame", "N30 TRANS X10", 5, "frame"},
+        BlockRefusal{"swivel_cycle", "N30 CYCLE800(1,\"TC1\",0)", 5, "frame"},
+        BlockRefusal{"jump", "N30 GOTOF END", 5, "control flow"},
+        BlockRefusal{"unknown_call", "N30 BLADE_FINISH", 5, "unknown Sinumerik instruction"},
+        BlockRefusal{"orientation_vector", "N30 G1 X1 A3=0.5 F3000", 11, "orientation vector"},
+        BlockRefusal{"incremental_linear", "N30 G1 X=IC(5) F3000", 10, "only A and B"},
+        BlockRefusal{"direct_beyond_a_turn", "N30 G1 X1 A=DC(400) F3000", 16, "[0, 360)"},
+        BlockRefusal{"iso_comment", "N30 G1 X1 (CUT) F3000", 11, "comments start with ';'"},
+        BlockRefusal{"iso_inch", "N30 G20", 5, "G70/G71"},
+        BlockRefusal{"arc", "N30 G2 X1 Y1 I1 J0", 5, "circular"}),
+    test::refusalName);
 
 TEST(Sinumerik, BlocksAfterM17AreRefusedAsASecondProgram) {
     const auto program = parse(header("N30 G1 X1 F3000\nN40 M17\nN50 G1 X2\n"));

@@ -245,6 +245,13 @@ std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t fi
     return firstTip;
 }
 
+std::optional<NcDialect> LoadedProgram::dialect() const {
+    if (const auto* gcode = std::get_if<nc::GcodeProgram>(&document)) {
+        return gcode->dialect;
+    }
+    return std::nullopt;
+}
+
 ProgramFormat LoadedProgram::format() const {
     if (std::holds_alternative<nc::GcodeProgram>(document)) {
         return ProgramFormat::Gcode;

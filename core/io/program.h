@@ -46,6 +46,7 @@ struct LoadedProgram {
     toolpath::Toolpath& mutablePath();
     const std::string& text() const; // the program as read, byte for byte
     ProgramFormat format() const;
+    std::optional<NcDialect> dialect() const; // of a G-code family program
 };
 
 // Whether the records [first, first + count) are programmed as the tool tip in the workpiece

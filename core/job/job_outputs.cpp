@@ -54,6 +54,9 @@ nlohmann::json inputJson(const JobResult& result) {
     nlohmann::json json;
     json["file"] = fs::path(path.sourceFile).filename().string();
     json["format"] = io::toString(result.program.format());
+    if (const auto dialect = result.program.dialect()) {
+        json["dialect"] = io::toString(*dialect);
+    }
     json["records"] = path.records.size();
     json["analysed_records"] = result.pass.count;
     if (result.pass.count > 0) {
@@ -533,9 +536,12 @@ std::string formatSummary(const JobResult& result) {
     using kinematics::AxisId;
     const auto& a = profile.axes[static_cast<int>(AxisId::A)];
     std::string text;
+    const auto dialect = result.program.dialect();
     text += "program      " + result.program.path().sourceFile + " (" +
-            io::toString(result.program.format()) + ", " +
-            std::to_string(result.program.path().records.size()) + " records, " +
+            io::toString(result.program.format()) +
+            (dialect && *dialect != io::NcDialect::Iso ? std::string(" ") + io::toString(*dialect)
+                                                       : std::string()) +
+            ", " + std::to_string(result.program.path().records.size()) + " records, " +
             std::to_string(result.pass.count) + " in the cutting pass)\n";
     text += "machine      " + result.machine.name + "\n";
     text += "path         " + number(profile.pathLength, 1) + " mm at " +

@@ -169,7 +169,13 @@ Result<TopoDS_Shape> transferModel(const fs::path& path, CadFormat format) {
 
 // Exit codes of the reading child process.
 // Distinct from 1, which runtimes such as a sanitizer use when they end a process.
-enum ChildExit : int { kShapeWritten = 0, kMalformed = 65, kNoGeometry = 66, kFailed = 67 };
+enum ChildExit : int {
+    kShapeWritten = 0,
+    kMalformed = 65,
+    kNoGeometry = 66,
+    kFailed = 67,
+    kTooManyFaces = 68, // the handover file holds the face count as text
+};
 
 constexpr std::chrono::seconds kReadTimeout{300};
 
@@ -185,7 +191,20 @@ Error childError(const fs::path& path, CadFormat format, const std::string& what
 // segmentation fault, not an exception: found by mutating a valid file). Untrusted files are
 // therefore translated in a forked child process, which hands the shape back as an OCCT binary
 // BRep file; a crash, an exception or a hang of the child becomes an error of this file.
-Result<TopoDS_Shape> transferInChild(const fs::path& path, CadFormat format) {
+Error tooManyFaces(const fs::path& path, const fs::path& handover, std::size_t maxFaces) {
+    std::string count = "more than " + std::to_string(maxFaces);
+    if (std::ifstream in(handover); in) {
+        std::getline(in, count);
+    }
+    return Error{ErrorCode::Geometry,
+                 "the model has " + count + " faces, expected at most " + std::to_string(maxFaces) +
+                     " (a blade model has tens to thousands): export the blade alone, not the "
+                     "assembly, the fixture or a meshed scan",
+                 {path.string(), 0, 0},
+                 {}};
+}
+
+Result<TopoDS_Shape> transferInChild(const fs::path& path, CadFormat format, std::size_t maxFaces) {
     static std::atomic<unsigned> counter{0};
     const fs::path handover =
         fs::temp_directory_path() /
@@ -200,8 +219,13 @@ Result<TopoDS_Shape> transferInChild(const fs::path& path, CadFormat format) {
         int code = kFailed;
         try {
             const Result<TopoDS_Shape> shape = transferModel(path, format);
+            const auto faces =
+                shape ? static_cast<std::size_t>(countSubShapes(*shape, TopAbs_FACE)) : 0;
             if (!shape) {
                 code = shape.error().code == ErrorCode::Parse ? kMalformed : kNoGeometry;
+            } else if (faces > maxFaces) {
+                std::ofstream(handover) << faces << "\n";
+                code = kTooManyFaces;
             } else if (BinTools::Write(*shape, handover.c_str())) {
                 code = kShapeWritten;
             }
@@ -228,6 +252,11 @@ Result<TopoDS_Shape> transferInChild(const fs::path& path, CadFormat format) {
                                               std::to_string(WTERMSIG(status)) + ")"));
     }
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : kFailed;
+    if (code == kTooManyFaces) {
+        Error error = tooManyFaces(path, handover, maxFaces);
+        fs::remove(handover, ignored);
+        return std::unexpected(std::move(error));
+    }
     if (code != kShapeWritten && code != kMalformed && code != kNoGeometry && code != kFailed) {
         fs::remove(handover, ignored);
         return std::unexpected(childError(
@@ -321,7 +350,8 @@ Result<CadFormat> detectCadFormat(const fs::path& path) {
                      {path.string(), 0, 0});
 }
 
-Result<CadShape> readCadFile(const fs::path& path, const Placement& placement) {
+Result<CadShape> readCadFile(const fs::path& path, const Placement& placement,
+                             std::size_t maxFaces) {
     const SourceLocation where{path.string(), 0, 0};
     if (Status ok = checkPlacement(placement); !ok) {
         return std::unexpected(ok.error());
@@ -345,7 +375,7 @@ Result<CadShape> readCadFile(const fs::path& path, const Placement& placement) {
         return std::unexpected(format.error());
     }
     return catchOcct(ErrorCode::Parse, path.string(), [&]() -> Result<CadShape> {
-        const Result<TopoDS_Shape> shape = transferInChild(path, *format);
+        const Result<TopoDS_Shape> shape = transferInChild(path, *format, maxFaces);
         if (!shape) {
             return std::unexpected(shape.error());
         }

@@ -16,6 +16,7 @@
 #include "core/cad/cad_shape.h"
 #include "core/geometry/vec.h"
 
+#include <cstddef>
 #include <filesystem>
 
 namespace bladeaxis::cad {
@@ -50,8 +51,14 @@ Status writeCadFile(const CadShape& shape, const std::filesystem::path& path, Ca
 // falling back to the extension (.step .stp .iges .igs); Parse error when neither tells.
 Result<CadFormat> detectCadFormat(const std::filesystem::path& path);
 
+// A blade model has tens to thousands of faces; a file with more is an assembly, a fixture or a
+// meshed scan, whose every later step (sections, clearance, display) would cost without bound.
+inline constexpr std::size_t kMaxCadFaces = 200'000;
+
 // Errors: FileNotFound, FileUnreadable, Parse (empty, not STEP/IGES, malformed), Geometry (no
-// face in the file, e.g. curves only), InvalidArgument (placement not a rotation).
-Result<CadShape> readCadFile(const std::filesystem::path& path, const Placement& placement = {});
+// face in the file, e.g. curves only, or more than `maxFaces` faces), InvalidArgument
+// (placement not a rotation).
+Result<CadShape> readCadFile(const std::filesystem::path& path, const Placement& placement = {},
+                             std::size_t maxFaces = kMaxCadFaces);
 
 } // namespace bladeaxis::cad

@@ -60,6 +60,22 @@ TEST(CadWrite, IgesFileInMillimetresReadsBackToTheSameSurface) {
     expectSameBox(read->bounds(), demoSurface().bounds(), 1e-3);
 }
 
+// The bound on faces is checked where the file is translated, before the shape is handed back:
+// a model over it is refused naming its count (a small bound on a small model shows it).
+TEST(CadRead, AModelWithMoreFacesThanTheBoundIsRefusedNamingItsCount) {
+    const fs::path path = scratchDir() / "faces_bound.step";
+    ASSERT_TRUE(writeCadFile(demoSurface(), path, CadFormat::Step).has_value());
+    const auto faces = static_cast<std::size_t>(demoSurface().faceCount());
+    ASSERT_GE(faces, 1u);
+    EXPECT_TRUE(readCadFile(path, {}, faces).has_value());
+    const Result<CadShape> refused = readCadFile(path, {}, faces - 1);
+    ASSERT_FALSE(refused.has_value());
+    EXPECT_EQ(refused.error().code, ErrorCode::Geometry);
+    EXPECT_NE(refused.error().message.find("has " + std::to_string(faces) + " faces"),
+              std::string::npos)
+        << refused.error().message;
+}
+
 // A model written in inches declares the inch and holds coordinates 25.4 times smaller; the
 // reader scales them back to mm.
 TEST(CadWrite, InchFilesDeclareTheUnitAndReadBackInMillimetres) {

@@ -3,6 +3,7 @@
 #include "core/base/file_io.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
+#include "core/io/nc/detail/axis_motion.h"
 #include "core/io/nc/detail/block_scanner.h"
 #include "core/io/nc/detail/number_style.h"
 
@@ -68,23 +69,6 @@ Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> ne
 bool isModuloForm(RotaryForm form) {
     return form == RotaryForm::Shortest || form == RotaryForm::Positive ||
            form == RotaryForm::Negative;
-}
-
-double turnsUp(double delta) {
-    const double r = std::fmod(delta, units::kTwoPi);
-    return r < 0.0 ? r + units::kTwoPi : r;
-}
-
-// The position a modulo-form word (DC, ACP, ACN, M126) written as `target` reaches from `from`.
-double reachedByModulo(RotaryForm form, double from, double target) {
-    switch (form) {
-    case RotaryForm::Positive:
-        return from + turnsUp(target - from);
-    case RotaryForm::Negative:
-        return from - turnsUp(from - target);
-    default:
-        return from + std::remainder(target - from, units::kTwoPi);
-    }
 }
 
 class Rewriter {
@@ -226,8 +210,6 @@ class Rewriter {
     void checkModuloMove(std::size_t k, const AxisContext& c, double before, double wanted);
     void feedEdit(std::size_t k, std::string_view line, const std::array<double, 5>& before,
                   std::vector<Edit>& edits);
-    double combinedMove(const std::array<double, 5>& from, const std::array<double, 5>& to,
-                        bool inch) const;
     double reachedAfter(const AxisContext& c, double before, double writtenFile) const;
     std::string wordText(const AxisContext& c, std::string number) const;
     std::uint32_t insertionOffset(std::size_t axis, const RecordSource& source,
@@ -246,20 +228,6 @@ class Rewriter {
     bool m_feedChanged = false;        // the previous record was written with another F
 };
 
-// The move's length as a combined-axes control measures it for F: linear axes in the program's
-// unit, rotary axes in degrees.
-double Rewriter::combinedMove(const std::array<double, 5>& from, const std::array<double, 5>& to,
-                              bool inch) const {
-    double sum = 0.0;
-    for (std::size_t axis = 0; axis < from.size(); ++axis) {
-        const double step = to[axis] - from[axis];
-        const double file =
-            axis >= kAxisA ? units::radToDeg(step) : (inch ? units::mmToInch(step) : step);
-        sum += file * file;
-    }
-    return std::sqrt(sum);
-}
-
 // On a control that reads G94 F over the combined axis move, a block whose A and B steps change
 // would change its time, and with it the speed of the ball centre along the unchanged path. The
 // block gets the F that keeps its time: F x new length / old length. The block after a changed
@@ -274,9 +242,10 @@ void Rewriter::feedEdit(std::size_t k, std::string_view line, const std::array<d
             return std::array<double, 5>{axes.x, axes.y, axes.z, axes.a, axes.b};
         };
         const bool inch = (source.flags & kInch) != 0;
-        const double oldLength = combinedMove(asArray(*m_program.path.records[k - 1].axes),
-                                              asArray(*m_program.path.records[k].axes), inch);
-        const double newLength = combinedMove(before, m_written, inch);
+        const double oldLength =
+            detail::combinedAxisMove(asArray(*m_program.path.records[k - 1].axes),
+                                     asArray(*m_program.path.records[k].axes), inch);
+        const double newLength = detail::combinedAxisMove(before, m_written, inch);
         if (oldLength > 1e-9 && newLength > 1e-9) {
             wanted = programmed * newLength / oldLength;
         }
@@ -342,7 +311,7 @@ double Rewriter::reachedAfter(const AxisContext& c, double before, double writte
     if (c.incremental) {
         return before + value;
     }
-    return isModuloForm(c.form) ? reachedByModulo(c.form, before, value) : value;
+    return isModuloForm(c.form) ? detail::reachedByModulo(c.form, before, value) : value;
 }
 
 // The whole word for an inserted number in the block's dialect and the form the program

@@ -2,6 +2,7 @@
 
 #include "core/base/number_io.h"
 #include "core/base/units.h"
+#include "core/io/nc/detail/axis_motion.h"
 #include "core/io/nc/detail/number_style.h"
 #include "core/kinematics/kinematics.h"
 
@@ -317,11 +318,6 @@ RotaryForm ModalInterpreter::effectiveForm(const WordSpan& word, std::size_t axi
 // value itself.
 double ModalInterpreter::reachedBy(RotaryForm form, std::size_t axis, double value) const {
     const double from = m_position[axis];
-    const bool known = (m_known >> axis) & 1u;
-    const auto turnsUp = [](double delta) {
-        const double r = std::fmod(delta, units::kTwoPi);
-        return r < 0.0 ? r + units::kTwoPi : r;
-    };
     switch (form) {
     case RotaryForm::Plain:
         return m_incremental ? from + value : value;
@@ -329,14 +325,9 @@ double ModalInterpreter::reachedBy(RotaryForm form, std::size_t axis, double val
         return value;
     case RotaryForm::Incremental:
         return from + value;
-    case RotaryForm::Shortest:
-        return known ? from + std::remainder(value - from, units::kTwoPi) : value;
-    case RotaryForm::Positive:
-        return known ? from + turnsUp(value - from) : value;
-    case RotaryForm::Negative:
-        return known ? from - turnsUp(from - value) : value;
+    default:
+        return ((m_known >> axis) & 1u) ? reachedByModulo(form, from, value) : value;
     }
-    return value;
 }
 
 // The word's value in mm or rad: the control's rule for a number without a decimal point, then
@@ -497,19 +488,6 @@ bool ModalInterpreter::readsCombinedFeed() const {
            m_machine.feedMeaning == kinematics::FeedMeaning::CombinedAxes;
 }
 
-// The length of the move from `from` as the control measures it for F: linear axes in the
-// program's unit (mm or inch), rotary axes in degrees, all in one vector.
-double ModalInterpreter::combinedMove(const std::array<double, 5>& from) const {
-    double sum = 0.0;
-    for (std::size_t axis = 0; axis < from.size(); ++axis) {
-        const double step = m_position[axis] - from[axis];
-        const double file =
-            isRotaryIndex(axis) ? units::radToDeg(step) : (m_inch ? units::mmToInch(step) : step);
-        sum += file * file;
-    }
-    return std::sqrt(sum);
-}
-
 // Tip speed in mm/s. G94: F is mm/min, or over the combined move (then the block lasts that
 // move / F). G93: F is 1/min, the block lasts 1/F min. Either way the tip speed is the tip chord
 // over that time (0, unknown, for a first block without a start point).
@@ -519,7 +497,8 @@ double ModalInterpreter::feedOfRecord(const Vec3& tip) const {
             return 0.0;
         }
         const double fileFeed = *m_feedPerMinuteMm / (m_inch ? 25.4 : 1.0);
-        const double minutes = combinedMove(*m_lastRecordPosition) / fileFeed;
+        const double minutes =
+            combinedAxisMove(*m_lastRecordPosition, m_position, m_inch) / fileFeed;
         return minutes > 0.0 ? units::perMinuteToPerSecond((tip - *m_lastTip).norm() / minutes)
                              : 0.0;
     }

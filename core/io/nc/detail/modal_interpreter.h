@@ -74,7 +74,6 @@ class ModalInterpreter {
     void addRecord(const Context& at, std::uint8_t axisWords);
     double feedOfRecord(const Vec3& tip) const;
     bool readsCombinedFeed() const;
-    double combinedMove(const std::array<double, 5>& from) const;
     std::uint32_t firstAxisOffset(const Context& at, std::uint8_t axisWords) const;
 
     GcodeProgram& m_program;

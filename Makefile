@@ -4,7 +4,7 @@
 BUILD_DIR := build/dev
 JOBS ?= $(shell nproc)
 
-.PHONY: deps configure build demo test test-asan bench fuzz format format-check clean
+.PHONY: deps configure build demo test test-asan bench fuzz package format format-check clean
 
 deps:
 	bash packaging/install-deps.sh
@@ -30,6 +30,11 @@ test-asan: deps
 
 bench: build
 	bash tests/bench/run_benchmarks.sh $(BUILD_DIR)
+
+# The Debian packages bladeaxis_<version>_amd64.deb (the application) and bladeaxis-dev (the
+# core as a CMake package for plug-ins), in $(BUILD_DIR); install with `apt install ./bladeaxis_*.deb`.
+package: build
+	cd $(BUILD_DIR) && cpack -G DEB
 
 # libFuzzer on every reader for FUZZ_SECONDS each (default 300); see docs/reliability.md.
 fuzz: deps

@@ -6,6 +6,7 @@
 #include "app/batch/batch_runner.h"
 #include "app/batch/exit_codes.h"
 #include "app/gui_arguments.h"
+#include "app/subcommands.h"
 #include "ui/run_gui.h"
 
 #include <cstdlib>
@@ -20,7 +21,7 @@ bool wantsBatch(const std::vector<std::string>& arguments) {
     for (std::size_t index = 1; index < arguments.size(); ++index) {
         const std::string& argument = arguments[index];
         if (argument == "--batch" || argument == "--help" || argument == "-h" ||
-            argument == "--version") {
+            argument == "--version" || argument == "--man") {
             return true;
         }
     }
@@ -30,13 +31,21 @@ bool wantsBatch(const std::vector<std::string>& arguments) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const std::vector<std::string> arguments(argv, argv + argc);
+    const std::vector<std::string> arguments =
+        bladeaxis::app::expandSubcommand(std::vector<std::string>(argv, argv + argc));
     if (!wantsBatch(arguments)) {
         if (auto problem = bladeaxis::app::checkGuiArguments(arguments, &std::getenv)) {
             std::cerr << "bladeaxis: " << *problem << '\n';
-            return bladeaxis::app::kExitUsage;
+            return bladeaxis::kExitUsage;
         }
-        return bladeaxis::ui::runGui(argc, argv);
+        // Qt keeps argc/argv for the application's life: both live until runGui returns.
+        std::vector<char*> guiArgv;
+        for (const std::string& argument : arguments) {
+            guiArgv.push_back(const_cast<char*>(argument.c_str()));
+        }
+        guiArgv.push_back(nullptr);
+        int guiArgc = static_cast<int>(arguments.size());
+        return bladeaxis::ui::runGui(guiArgc, guiArgv.data());
     }
     if (std::getenv("BLADEAXIS_TESTING_DISABLE_CATCH_ALL") != nullptr) {
         return bladeaxis::app::runBatchCommandLine(arguments, std::cout, std::cerr);
@@ -48,5 +57,5 @@ int main(int argc, char** argv) {
     } catch (...) {
         std::cerr << "bladeaxis: internal error: unknown exception\n";
     }
-    return bladeaxis::app::kExitInternal;
+    return bladeaxis::kExitInternal;
 }

@@ -16,15 +16,27 @@ endfunction()
 
 # bladeaxis_add_library(<module> SOURCES ... [DEPS ...] [PRIVATE_DEPS ...])
 # Creates the static library bladeaxis_<module> with the ALIAS bladeaxis::<module>.
-# Includes are written from the repository root ("core/base/error.h").
+# Includes are written from the repository root ("core/base/error.h"). Every core library is
+# installed for plug-ins (packaging/CMakeLists.txt exports the list BLADEAXIS_CORE_TARGETS).
 function(bladeaxis_add_library module)
     cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
     set(target bladeaxis_${module})
     add_library(${target} STATIC ${ARG_SOURCES})
     add_library(bladeaxis::${module} ALIAS ${target})
-    target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR})
+    bladeaxis_core_interface(${target} PUBLIC)
     target_link_libraries(${target} PUBLIC ${ARG_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
     bladeaxis_set_warnings(${target})
+endfunction()
+
+# Include root of a core target: the source tree when built, include/bladeaxis when installed;
+# exported as bladeaxis::<module>.
+function(bladeaxis_core_interface target scope)
+    target_include_directories(${target} ${scope}
+        $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+        $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/bladeaxis>)
+    string(REGEX REPLACE "^bladeaxis_" "" module ${target})
+    set_target_properties(${target} PROPERTIES EXPORT_NAME ${module})
+    set_property(GLOBAL APPEND PROPERTY BLADEAXIS_CORE_TARGETS ${target})
 endfunction()
 
 # bladeaxis_add_unit_test(<name> SOURCES ... DEPS ... [LABELS ...])

@@ -11,6 +11,10 @@ packages=(
     libvtk9-dev
     libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-visualization-dev
     xvfb xauth locales clang-format
+    # packaging and its tests: dpkg-shlibdeps, desktop-entry check, manual-page rendering
+    dpkg-dev desktop-file-utils groff-base man-db
+    # the Python module and the report.json schema check
+    pybind11-dev python3-dev python3-numpy python3-pytest python3-jsonschema
 )
 
 missing=()

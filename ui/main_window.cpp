@@ -143,6 +143,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     buildFileMenu();
     buildEditMenu();
     buildViewMenu();
+    buildHelpMenu();
     buildToolBar();
     buildStatusBar();
     resize(1200, 780);

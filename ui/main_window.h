@@ -25,6 +25,9 @@ class QToolBar;
 
 namespace bladeaxis::ui {
 
+// The About box's text: version, revision and the libraries built with and running.
+QString aboutText();
+
 class ComparisonTable;
 class JobThread;
 class LayerSettingsPanel;
@@ -117,6 +120,7 @@ class MainWindow final : public QMainWindow {
     void buildFileMenu();
     void buildEditMenu();
     void buildViewMenu();
+    void buildHelpMenu();
     void buildToolBar();
     void buildStatusBar();
     void restoreSettings();

@@ -1,5 +1,6 @@
 // The main window's menus, tool bar, files (open, save, export, recent), settings and palette.
 #include "core/base/file_io.h"
+#include "core/base/version.h"
 #include "core/job/demo_program.h"
 #include "core/job/job_file.h"
 #include "ui/blade_placement_dialog.h"
@@ -30,6 +31,7 @@
 #include <QStyleFactory>
 #include <QToolBar>
 #include <filesystem>
+#include <vtkVersion.h>
 
 namespace bladeaxis::ui {
 namespace {
@@ -170,6 +172,27 @@ void MainWindow::buildViewMenu() {
         m_view3dBar->addAction(action);
         connect(action, &QAction::triggered, m_view3d, slot);
     }
+}
+
+void MainWindow::buildHelpMenu() {
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* about = help->addAction(tr("&About BladeAxis"));
+    about->setObjectName(QStringLiteral("aboutAction"));
+    connect(about, &QAction::triggered, this,
+            [this] { QMessageBox::about(this, tr("About BladeAxis"), aboutText()); });
+}
+
+// The same version and revision as `bladeaxis --version` and report.json's bladeaxis_version.
+QString aboutText() {
+    return QObject::tr("<h3>BladeAxis %1</h3><p>Revision %2</p>"
+                       "<p>Re-schedules the tool orientation of four-axis helical blade "
+                       "toolpaths so the rotary A axis turns monotonically and smoothly, "
+                       "keeping the ball-centre path.</p><p>Built with Qt %3 (running %4), "
+                       "VTK %5.</p>")
+        .arg(QString::fromUtf8(projectVersion().data(), qsizetype(projectVersion().size())),
+             QString::fromUtf8(projectRevision().data(), qsizetype(projectRevision().size())),
+             QStringLiteral(QT_VERSION_STR), QString::fromLatin1(qVersion()),
+             QString::fromLatin1(vtkVersion::GetVTKVersion()));
 }
 
 void MainWindow::buildToolBar() {

@@ -1,7 +1,10 @@
 #include "app/batch/batch_options.h"
 
+#include "app/batch/man_page.h"
+#include "app/subcommands.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
+#include "core/base/version.h"
 #include "core/job/job_file.h"
 #include "core/job/parameter_schema.h"
 
@@ -76,7 +79,7 @@ struct RawOptions {
     std::uint64_t seed = 1;
     bool seedGiven = false;
     bool batch = false, demo = false, json = false, quiet = false, version = false,
-         progress = false;
+         progress = false, manPage = false;
     bool analyseOnly = false;
     bool compare = false;
     bool sweep = false;
@@ -203,6 +206,8 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     cli.add_flag("--progress", raw.progress,
                  "Show the running stage on standard error (the default when it is a terminal)");
     cli.add_flag("--version", raw.version, "Print the version and exit");
+    // For the build, which installs its output as bladeaxis.1; not listed in --help.
+    cli.add_flag("--man", raw.manPage, "Print the manual page (roff) and exit")->group("");
     auto* generate = cli.add_option_group("Generation", "Write a synthetic blade program");
     generate->add_option("--generate", raw.generate,
                          "Write a generated helical blade program here");
@@ -256,13 +261,17 @@ Status applySchedule(const RawOptions& raw, BatchOptions& options) {
     if (!raw.outputCl.empty()) {
         options.job.outputCl = raw.outputCl;
     }
-    options.job.reschedule = !raw.analyseOnly;
-    options.job.compare = raw.compare || raw.sweep;
+    // A flag given here wins; without it, the job file's analyse_only/compare stand.
+    options.job.reschedule = options.job.reschedule && !raw.analyseOnly;
+    options.job.compare = options.job.compare || raw.compare || raw.sweep;
     options.job.sweepLimits = raw.sweep;
-    options.job.compareOptimum = !raw.noOptimum;
-    if (raw.analyseOnly && (!options.job.outputProgram.empty() || !options.job.outputCl.empty())) {
-        return makeError(ErrorCode::InvalidArgument,
-                         "--analyse-only and --output/--cl-output exclude each other");
+    options.job.compareOptimum = options.job.compareOptimum && !raw.noOptimum;
+    if (!options.job.reschedule &&
+        (!options.job.outputProgram.empty() || !options.job.outputCl.empty())) {
+        return makeError(
+            ErrorCode::InvalidArgument,
+            "analysing only (--analyse-only, or analyse_only in the job file) and an output "
+            "program (--output, --cl-output, output_program) exclude each other");
     }
     return {};
 }
@@ -465,7 +474,7 @@ Result<BatchOptions> parseBatchOptions(const std::vector<std::string>& arguments
     CLI::App cli{"BladeAxis: monotone, smooth A-axis re-scheduling of four-axis blade programs\n"
                  "(section numbers \u00a7 refer to docs/method.md)",
                  "bladeaxis"};
-    cli.footer(kExitCodeHelp);
+    cli.footer(std::string(subcommandHelp()) + "\n" + kExitCodeHelp);
     RawOptions raw;
     defineOptions(cli, raw);
     std::vector<std::string> reversed(arguments.rbegin(), arguments.rend() - 1);
@@ -480,6 +489,12 @@ Result<BatchOptions> parseBatchOptions(const std::vector<std::string>& arguments
         return makeError(ErrorCode::InvalidArgument, error.what());
     }
     raw.seedGiven = cli.count("--seed") > 0;
+    if (raw.manPage) {
+        BatchOptions options;
+        options.mode = BatchOptions::Mode::ManPage;
+        options.manPageText = manPage(cli, {projectVersion(), subcommandHelp(), kExitCodeHelp});
+        return options;
+    }
     return interpret(raw, cli.help());
 }
 

@@ -14,7 +14,7 @@
 namespace bladeaxis::app {
 
 struct BatchOptions {
-    enum class Mode { Analyse, Generate, Reproduce, Help, Version };
+    enum class Mode { Analyse, Generate, Reproduce, Help, Version, ManPage };
     Mode mode = Mode::Analyse;
     job::JobSpec job;
     // --generate OUT: write a synthetic blade program instead of analysing one.
@@ -28,6 +28,7 @@ struct BatchOptions {
     // terminal, or with --progress (a long --compare is otherwise silent for its duration).
     bool progress = false;
     std::string helpText;
+    std::string manPageText; // with --man: bladeaxis.1, written by the build
 };
 
 // Parses argv (argv[0] included). Errors are InvalidArgument with a message for the user.

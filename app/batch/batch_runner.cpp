@@ -2,6 +2,7 @@
 
 #include "app/batch/exit_codes.h"
 #include "core/base/file_io.h"
+#include "core/base/version.h"
 
 #include <algorithm>
 #include <atomic>
@@ -167,7 +168,8 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
         out << result->rescheduled->programText << std::flush;
     }
     if (options.printJson) {
-        summary << job::reportJsonText(*result);
+        // The same report.json as --out writes (the spec names the preset and the edited layers).
+        summary << job::reportJsonText(*result, &options.job);
     } else if (!options.quiet) {
         summary << job::formatSummary(*result);
         if (!options.job.outputDir.empty()) {
@@ -214,8 +216,11 @@ int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err, 
     case BatchOptions::Mode::Help:
         out << options.helpText;
         return kExitOk;
+    case BatchOptions::Mode::ManPage:
+        out << options.manPageText;
+        return kExitOk;
     case BatchOptions::Mode::Version:
-        out << "bladeaxis " << BLADEAXIS_VERSION << " (revision " << BLADEAXIS_REVISION
+        out << "bladeaxis " << projectVersion() << " (revision " << projectRevision()
             << ")\nbuilt with " << BLADEAXIS_LIBRARIES << '\n';
         return kExitOk;
     case BatchOptions::Mode::Generate:

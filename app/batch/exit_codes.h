@@ -1,21 +1,5 @@
 #pragma once
-// Documented process exit codes of `bladeaxis --batch` (also in README.md and --help).
+// The batch front end's exit codes are the core's table (core/base/exit_codes.h), so a plug-in
+// and the command line map every error alike.
 
-#include "core/base/error.h"
-
-namespace bladeaxis::app {
-
-enum ExitCode : int {
-    kExitOk = 0,
-    kExitInternal = 1,  // a bug: please report it with the input
-    kExitUsage = 2,     // bad command line
-    kExitInput = 3,     // input program missing, unreadable or malformed
-    kExitMachine = 4,   // machine file missing or invalid
-    kExitGeometry = 5,  // geometry the method cannot handle (NaN, unreachable, infeasible)
-    kExitWrite = 6,     // an output could not be written
-    kExitCancelled = 7, // stopped on request
-};
-
-ExitCode exitCodeFor(const Error& error);
-
-} // namespace bladeaxis::app
+#include "core/base/exit_codes.h"

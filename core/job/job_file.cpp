@@ -392,11 +392,18 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
             spec.cad.tool.*member = *value;
         }
     }
-    if (root.contains("demo")) {
-        if (!root.at("demo").is_boolean()) {
-            return fail("demo", "expected true or false");
+    // What the job does: the command line's --demo, --analyse-only, --compare, --no-optimum.
+    for (const auto& [key, member, inverted] :
+         {std::tuple{"demo", &JobSpec::demo, false},
+          std::tuple{"analyse_only", &JobSpec::reschedule, true},
+          std::tuple{"compare", &JobSpec::compare, false},
+          std::tuple{"compare_optimum", &JobSpec::compareOptimum, false}}) {
+        if (root.contains(key)) {
+            if (!root.at(key).is_boolean()) {
+                return fail(key, "expected true or false");
+            }
+            spec.*member = root.at(key).get<bool>() != inverted;
         }
-        spec.demo = root.at("demo").get<bool>();
     }
     if (root.contains("layer_edits")) {
         if (auto status = layerEdits(root.at("layer_edits"), spec); !status) {
@@ -490,6 +497,13 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
     }
     if (spec.demo) {
         json["demo"] = true;
+    }
+    if (!spec.reschedule) {
+        json["analyse_only"] = true;
+    }
+    if (spec.compare) {
+        json["compare"] = true;
+        json["compare_optimum"] = spec.compareOptimum;
     }
     if (!spec.cad.file.empty()) {
         json["cad"] = relative(spec.cad.file);

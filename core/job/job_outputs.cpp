@@ -1,5 +1,6 @@
 #include "core/analysis/lost_motion.h"
 #include "core/base/file_io.h"
+#include "core/base/version.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
 #include "core/io/cl/apt_writer.h"
@@ -215,7 +216,8 @@ nlohmann::json clearanceJson(const CadCheckResult& check, const std::string& fil
 
 nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
     nlohmann::json json;
-    json["bladeaxis_version"] = BLADEAXIS_VERSION;
+    json["bladeaxis_version"] = projectVersion();
+    json["bladeaxis_revision"] = projectRevision();
     json["input"] = inputJson(result);
     json["machine"] = {
         {"name", result.machine.name},

@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kRelative = 1e-6;
 constexpr double kAbsolute = 1e-9;
-constexpr std::array<const char*, 3> kIgnoredKeys{"timing", "bladeaxis_version", "file"};
+constexpr std::array<const char*, 4> kIgnoredKeys{"timing", "bladeaxis_version", "bladeaxis_revision", "file"};
 constexpr int kMaxReported = 20;
 
 struct Comparison {

@@ -1,6 +1,6 @@
-#include "app/batch/exit_codes.h"
+#include "core/base/exit_codes.h"
 
-namespace bladeaxis::app {
+namespace bladeaxis {
 
 ExitCode exitCodeFor(const Error& error) {
     switch (error.code) {
@@ -26,4 +26,4 @@ ExitCode exitCodeFor(const Error& error) {
     return kExitInternal;
 }
 
-} // namespace bladeaxis::app
+} // namespace bladeaxis

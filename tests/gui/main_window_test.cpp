@@ -3,6 +3,7 @@
 // exports equal the batch front end's, and screenshots are not blank.
 
 #include "app/batch/batch_runner.h"
+#include "core/base/version.h"
 #include "core/io/program.h"
 #include "core/job/job_file.h"
 #include "tests/gui/image_checks.h"
@@ -15,6 +16,7 @@
 #include "ui/toolpath_view.h"
 
 #include <QAbstractButton>
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -75,6 +77,27 @@ class MainWindowTest final : public QObject {
         const auto layerCount = m_window->result()->rescheduled->schedule.layers.size();
         QVERIFY(layerCount > 0);
         QCOMPARE(static_cast<std::size_t>(m_window->layerTable()->rowCount()), layerCount);
+    }
+
+    void aboutBoxShowsTheVersionAndRevisionOfVersionOutput() {
+        auto* about = m_window->findChild<QAction*>(QStringLiteral("aboutAction"));
+        QVERIFY(about != nullptr);
+        QString shown;
+        QTimer::singleShot(200, [&shown] {
+            for (QWidget* widget : QApplication::topLevelWidgets()) {
+                if (auto* box = qobject_cast<QMessageBox*>(widget); box && box->isVisible()) {
+                    shown = box->text();
+                    box->accept();
+                }
+            }
+        });
+        about->trigger(); // modal: returns once the box is closed
+        const auto version = bladeaxis::projectVersion();
+        const auto revision = bladeaxis::projectRevision();
+        QVERIFY2(shown.contains(QString::fromUtf8(version.data(), qsizetype(version.size()))),
+                 qPrintable(shown));
+        QVERIFY2(shown.contains(QString::fromUtf8(revision.data(), qsizetype(revision.size()))),
+                 qPrintable(shown));
     }
 
     void selectingALayerPublishesIt() {

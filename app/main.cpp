@@ -1,7 +1,7 @@
 // bladeaxis: the desktop application, or with `--batch` (or --help/--version) the batch front
 // end, which never creates a QApplication and so needs no display. Any exception that escapes the
-// core is a bug; it is caught here, reported and mapped to exit code 1 (style guide §8d). Set
-// BLADEAXIS_TESTING_DISABLE_CATCH_ALL=1 to let it reach the debugger instead.
+// core is a bug; it is caught here, reported and mapped to exit code 1 (docs/architecture.md,
+// Conventions). Set BLADEAXIS_TESTING_DISABLE_CATCH_ALL=1 to let it reach the debugger instead.
 
 #include "app/batch/batch_runner.h"
 #include "app/batch/exit_codes.h"

@@ -1,7 +1,7 @@
 #pragma once
 // 3D view of the blade and the toolpath with VTK. Debian's VTK Qt module is built against Qt5,
 // so VTK renders off-screen in its own context and the image is painted by this plain Qt6
-// widget (docs/product.md, approach 2). VTK types stay in the .cpp file. Everything drawn comes
+// widget (docs/architecture.md). VTK types stay in the .cpp file. Everything drawn comes
 // from a job::DisplayScene (core): the view computes no geometry itself.
 
 #include "core/job/display_scene.h"

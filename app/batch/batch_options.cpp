@@ -94,7 +94,7 @@ std::string optionName(const std::string& key) {
     return name;
 }
 
-// One command-line option per entry of the parameter schema (style guide §14).
+// One command-line option per entry of the parameter schema (docs/architecture.md, Conventions).
 
 // A preset value as a person reads it: 12 significant digits, so that 30 deg held in radians
 // shows as -30, not -29.999999999999996 (job files keep the exact value).

@@ -1,7 +1,7 @@
 #pragma once
 // Locale-independent number parsing and formatting for every file BladeAxis reads or writes.
-// A decimal-comma desktop locale must never change a file (style guide §15), so nothing here
-// uses iostreams, printf or strtod.
+// A decimal-comma desktop locale must never change a file (docs/architecture.md, Conventions), so
+// nothing here uses iostreams, printf or strtod.
 
 #include <optional>
 #include <string>

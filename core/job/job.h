@@ -1,6 +1,6 @@
 #pragma once
 // The one entry point of BladeAxis: the GUI and `--batch` both build a JobSpec, call runJob
-// and present the JobResult, so they give identical results (style guide §2).
+// and present the JobResult, so they give identical results (docs/architecture.md, Conventions).
 
 #include "core/analysis/analysis.h"
 #include "core/base/error.h"

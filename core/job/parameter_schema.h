@@ -1,8 +1,8 @@
 #pragma once
 // One schema for the scheduling parameters (spec Appendix A), reused by the command line, the
-// job file and (later) the GUI's property panels and settings (style guide §14). Each entry has
-// a key, a unit as the user sees it (degrees, not radians), a domain and accessors that convert
-// at this one edge.
+// job file and (later) the GUI's property panels and settings (docs/architecture.md, Conventions).
+// Each entry has a key, a unit as the user sees it (degrees, not radians), a domain and accessors
+// that convert at this one edge.
 
 #include "core/base/error.h"
 #include "core/scheduling/schedule_parameters.h"

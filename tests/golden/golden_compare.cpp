@@ -1,8 +1,9 @@
 // Compares a reference output with an actual one, number by number with a relative tolerance,
-// so golden tests survive the last-digit noise of floating point (style guide §16).
-// JSON: same structure and strings; keys named in kIgnoredKeys (timings, versions) are skipped.
-// CSV: same header, same row count, every cell equal as text or as numbers within tolerance.
-// Exit 0 when equal, 1 with the first differences printed otherwise, 2 on unreadable input.
+// so golden tests survive the last-digit noise of floating point (docs/architecture.md,
+// Conventions). JSON: same structure and strings; keys named in kIgnoredKeys (timings, versions)
+// are skipped. CSV: same header, same row count, every cell equal as text or as numbers within
+// tolerance. Exit 0 when equal, 1 with the first differences printed otherwise, 2 on unreadable
+// input.
 
 #include "core/base/file_io.h"
 #include "core/base/number_io.h"
@@ -20,7 +21,8 @@ namespace {
 
 constexpr double kRelative = 1e-6;
 constexpr double kAbsolute = 1e-9;
-constexpr std::array<const char*, 4> kIgnoredKeys{"timing", "bladeaxis_version", "bladeaxis_revision", "file"};
+constexpr std::array<const char*, 4> kIgnoredKeys{"timing", "bladeaxis_version",
+                                                  "bladeaxis_revision", "file"};
 constexpr int kMaxReported = 20;
 
 struct Comparison {

@@ -48,7 +48,8 @@ TEST(FormatShortest, RoundTripsExactly) {
     }
 }
 
-// A decimal-comma desktop locale must not change what we read or write (style guide §15).
+// A decimal-comma desktop locale must not change what we read or write (docs/architecture.md,
+// Conventions).
 TEST(NumberIo, IsIndependentOfADecimalCommaLocale) {
     const char* previous = std::setlocale(LC_ALL, nullptr);
     const std::string saved = previous ? previous : "C";

@@ -73,7 +73,8 @@ TEST(EmitApt, WritesTheHeaderAndFedratOnlyWhenTheFeedChanges) {
                                       "GOTO/0.000,0.000,0.000,0.000,0.000,1.000\nEND\nFINI\n");
 }
 
-// A decimal-comma desktop must not change what is read or written (style guide §15).
+// A decimal-comma desktop must not change what is read or written (docs/architecture.md,
+// Conventions).
 TEST(AptLocale, DecimalCommaLocaleChangesNothing) {
     const toolpath::Toolpath path = randomPath(7, 50);
     const std::string sample = "UNITS/MM\nCUTTER/6.35,3.175\nFEDRAT/MMPM,1234.5\n"

@@ -102,7 +102,8 @@ TEST(GcodeEmitter, UnreachablePoseNamesTheRecord) {
     EXPECT_NE(text.error().message.find("record 3"), std::string::npos);
 }
 
-// A decimal-comma desktop must not change what is read or written (style guide §15).
+// A decimal-comma desktop must not change what is read or written (docs/architecture.md,
+// Conventions).
 TEST(GcodeLocale, ParseAndEmitAreIndependentOfADecimalCommaLocale) {
     const toolpath::Toolpath path = test::spiralPath(50, 1.0);
     const std::string sample = test::readSample("fanuc_basic.nc");

@@ -1,6 +1,6 @@
 #pragma once
 // Collects parse errors with their locations, up to kMaxParseErrors; the first one is the main
-// error and the rest travel in Error::more (style guide §8b: parsers keep going).
+// error and the rest travel in Error::more (parsers keep going: docs/architecture.md, Conventions).
 
 #include "core/base/error.h"
 

@@ -115,6 +115,20 @@ TEST(JobFile, AnOutputOutsideTheJobsFolderIsRefusedNamingTheKey) {
     }
 }
 
+TEST(JobFile, AJobNamedWithoutAFolderWritesInsideTheCurrentFolder) {
+    const auto dir = std::filesystem::temp_directory_path() / "bladeaxis_job_bare_name";
+    std::filesystem::create_directories(dir);
+    const auto previous = std::filesystem::current_path();
+    std::filesystem::current_path(dir);
+    JobSpec spec;
+    const auto status = parseJobJson(
+        R"({"schema": "bladeaxis-job/1", "demo": true, "output_program": "new.nc",
+            "output_dir": "report"})",
+        "job.json", spec);
+    std::filesystem::current_path(previous);
+    EXPECT_TRUE(status.has_value()) << status.error().toString();
+}
+
 TEST(JobFile, MoreLayerEditsThanAnyProgramHasLayersAreRefusedNamingTheCount) {
     std::string edits;
     for (std::size_t i = 0; i <= kMaxLayerEdits; ++i) {

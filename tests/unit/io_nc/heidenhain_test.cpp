@@ -103,7 +103,9 @@ INSTANTIATE_TEST_SUITE_P(
         BlockRefusal{"feed_per_tooth", "4 L X+1 FZ0.1", 9, "per tooth"},
         BlockRefusal{"spatial_tcpm", "4 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS", 12, "SPAT"},
         BlockRefusal{"retract", "4 L M140 MB MAX", 5, "retraction"},
-        BlockRefusal{"unknown", "4 TCH PROBE 400", 3, "unknown Heidenhain statement"}),
+        BlockRefusal{"unknown", "4 TCH PROBE 400", 3, "unknown Heidenhain statement"},
+        BlockRefusal{"tool_number_beyond_the_table", "4 TOOL DEF 2E94 L+0 R+4", 12, "tool number"},
+        BlockRefusal{"fractional_tool_number", "4 TOOL CALL 1.5 Z S1000", 13, "tool number"}),
     test::refusalName);
 
 TEST(Heidenhain, InchProgramsAreRefusedNamingTheUnit) {

@@ -165,6 +165,8 @@ std::optional<ScanIssue> scanLinear(std::string_view line, std::size_t i, std::s
     return std::nullopt;
 }
 
+constexpr double kMaxToolNumber = 32767.0;
+
 // "TOOL DEF 1 L+0 R+4" / "TOOL CALL 1 Z S12000 F3000 DR+0.02".
 std::optional<ScanIssue> scanTool(std::string_view line, std::size_t i, const Token& what,
                                   ScannedBlock& block) {
@@ -175,6 +177,11 @@ std::optional<ScanIssue> scanTool(std::string_view line, std::size_t i, const To
     block.controls |= kind == "DEF" ? kToolDef : kToolCall;
     const Token number = nextToken(line, i);
     if (const auto value = parseNumber(number.text)) {
+        // TNC tool tables hold numbers 0 to 32767; anything else is not a tool number (and
+        // would not fit the int it is kept in).
+        if (!(*value >= 0.0 && *value <= kMaxToolNumber) || std::floor(*value) != *value) {
+            return refusal(number, "expected a tool number from 0 to 32767");
+        }
         block.tool.number = static_cast<int>(*value);
     }
     for (Token token = nextToken(line, i); !token.text.empty(); token = nextToken(line, i)) {

@@ -41,6 +41,13 @@ for file in ./usr/bin/bladeaxis ./usr/share/man/man1/bladeaxis.1.gz \
     ./usr/share/doc/bladeaxis/job-file.md; do
     grep -qx "$file" <<<"$contents" || fail "$(basename "$deb") lacks $file"
 done
+# The Python module, when the build has one (BLADEAXIS_PYTHON with pybind11 found).
+python_module=$(compgen -G "$build/python/bladeaxis.cpython-*.so" || true)
+if [[ -n $python_module ]]; then
+    grep -qE '^\./usr/lib/python3/dist-packages/bladeaxis\.cpython-[^/]*\.so$' <<<"$contents" ||
+        fail "$(basename "$deb") lacks ./usr/lib/python3/dist-packages/bladeaxis.cpython-*.so"
+    grep -q "python3-numpy" <<<"$depends" || fail "Depends lacks python3-numpy: $depends"
+fi
 # The application package holds no headers or static libraries: they are bladeaxis-dev's.
 ! grep -qE '\.a$|/include/' <<<"$contents" || fail "$(basename "$deb") holds development files"
 dev_contents=$(dpkg-deb -c "$dev" | awk '{print $6}')
@@ -70,6 +77,12 @@ dpkg -i "$deb" >"$work/dpkg.log" 2>&1 || { cat "$work/dpkg.log"; fail "dpkg -i f
     --machine /usr/share/bladeaxis/machines/blade_ab.json -o demo/demo_rescheduled.nc)
 [[ -s $work/demo/report.json && -s $work/demo/demo_rescheduled.nc ]] || fail "installed demo"
 man -w bladeaxis >/dev/null 2>&1 || fail "man bladeaxis does not find the page"
+if [[ -n $python_module ]]; then
+    # From outside the build tree, so that only the installed module can be imported.
+    imported=$(cd "$work" && env -u PYTHONPATH /usr/bin/python3 -c \
+        "import bladeaxis; print(bladeaxis.__version__)") || fail "installed module: import failed"
+    [[ $imported == "$version" ]] || fail "installed module: version '$imported'"
+fi
 dpkg -P bladeaxis >/dev/null
 [[ ! -e /usr/bin/bladeaxis ]] || fail "dpkg -P left /usr/bin/bladeaxis"
 echo "check_deb: $(basename "$deb") and $(basename "$dev") built, checked, installed and removed"

@@ -102,11 +102,15 @@ Status JobReader::confineOutputs(const Json& root, const JobSpec& spec) const {
         }
     }
     std::error_code ec;
+    // The demo's input is the G-code program it generates (read before the "demo" key is).
+    const bool demo = spec.demo || (root.contains("demo") && root.at("demo").is_boolean() &&
+                                    root.at("demo").get<bool>());
+    const fs::path input = demo ? fs::path("demo_blade.nc") : spec.program;
     if (root.contains("output_program") && fs::exists(spec.outputProgram, ec) &&
-        lowerExtension(spec.outputProgram) != lowerExtension(spec.program)) {
+        lowerExtension(spec.outputProgram) != lowerExtension(input)) {
         return fail("output_program", "would replace " + spec.outputProgram.string() +
                                           ", which is not a program like the input (" +
-                                          spec.program.filename().string() +
+                                          input.filename().string() +
                                           "); give -o on the command line to replace it");
     }
     return {};

@@ -129,6 +129,17 @@ TEST(JobFile, AJobNamedWithoutAFolderWritesInsideTheCurrentFolder) {
     EXPECT_TRUE(status.has_value()) << status.error().toString();
 }
 
+TEST(JobFile, ADemoJobMayReplaceItsEarlierOutputProgram) {
+    const auto dir = std::filesystem::temp_directory_path() / "bladeaxis_job_demo_twice";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "new.nc") << "(an earlier run's output)\n";
+    JobSpec spec;
+    const auto status =
+        parseJobJson(R"({"schema": "bladeaxis-job/1", "demo": true, "output_program": "new.nc"})",
+                     dir / "job.json", spec);
+    EXPECT_TRUE(status.has_value()) << status.error().toString();
+}
+
 TEST(JobFile, MoreLayerEditsThanAnyProgramHasLayersAreRefusedNamingTheCount) {
     std::string edits;
     for (std::size_t i = 0; i <= kMaxLayerEdits; ++i) {

@@ -14,8 +14,15 @@ namespace {
 
 // The spin boxes show "job" at their minimum, one step below the smallest real value.
 constexpr double kMarginJob = -0.5; // deg
-constexpr double kLeadJob = 0.0;    // rho; real values start at 0.02 (spec §3.4)
+constexpr double kLeadJob = 0.0;    // rho; real values start at 0.02 (docs/method.md §3.4)
 constexpr int kJobIndex = 0;        // the combo boxes' "job" entry
+
+QString marginTip() {
+    return LayerSettingsPanel::tr(
+        "Margin m: how far the new orientation keeps from the edge of the channel (where the "
+        "shank would touch the blade) before the one-way hull is built; larger is safer, smaller "
+        "leaves more room to smooth");
+}
 
 } // namespace
 
@@ -38,13 +45,15 @@ LayerSettingsPanel::LayerSettingsPanel(QWidget* parent) : QWidget(parent) {
     m_margin->setDecimals(2);
     m_margin->setSuffix(tr(" °"));
     m_margin->setSpecialValueText(tr("job"));
-    m_margin->setToolTip(tr("Margin m from the raw channel before the monotone hull (§2.5)"));
+    m_margin->setToolTip(marginTip());
     layout->addWidget(new QLabel(tr("Margin"), this));
     layout->addWidget(m_margin);
 
     m_epsilon = new QComboBox(this);
     m_epsilon->addItems({tr("job"), tr("exact"), tr("paper")});
-    m_epsilon->setToolTip(tr("Corner size: exact bisection or the paper's ε0 rule (§5.4)"));
+    m_epsilon->setToolTip(tr("How large the rounded corners between the key-point segments may "
+                             "be: 'exact' grows each corner while the curve stays in the channel "
+                             "(smoother); 'paper' uses the original paper's fixed rule"));
     layout->addWidget(new QLabel(tr("ε rule"), this));
     layout->addWidget(m_epsilon);
 
@@ -53,8 +62,8 @@ LayerSettingsPanel::LayerSettingsPanel(QWidget* parent) : QWidget(parent) {
     m_lead->setSingleStep(0.01);
     m_lead->setDecimals(3);
     m_lead->setSpecialValueText(tr("job"));
-    m_lead->setToolTip(tr("Fixed lead-in/out fraction ρ of this layer (§3.4); 'job' keeps the "
-                          "job's lead mode"));
+    m_lead->setToolTip(tr("Share ρ of the layer, at each end, over which the orientation eases "
+                          "into the junction with the next layer; 'job' lets the job choose it"));
     layout->addWidget(new QLabel(tr("Lead ρ"), this));
     layout->addWidget(m_lead);
 
@@ -91,9 +100,8 @@ void LayerSettingsPanel::setLayer(int layer, const scheduling::LayerOverride* cu
                                : *current->epsilonRule == scheduling::EpsilonRule::Exact ? 1
                                                                                          : 2);
     m_lead->setValue(has && current->leadFraction ? *current->leadFraction : kLeadJob);
-    m_margin->setToolTip(tr("Margin m from the raw channel before the monotone hull (§2.5); "
-                            "the job's: %1°")
-                             .arg(units::radToDeg(job.marginRad), 0, 'f', 2));
+    m_margin->setToolTip(marginTip() +
+                         tr("; the job's: %1°").arg(units::radToDeg(job.marginRad), 0, 'f', 2));
     setEnabled(true);
 }
 

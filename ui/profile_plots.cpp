@@ -2,6 +2,7 @@
 
 #include "core/base/units.h"
 #include "core/kinematics/machine_model.h"
+#include "ui/axis_ticks.h"
 
 #include <QCheckBox>
 #include <QEvent>
@@ -80,29 +81,6 @@ QColor curveColour(const ProfilePlots::Curve& curve, const QPalette& palette) {
     return ProfilePlots::methodColour(curve.method, isDark(palette));
 }
 
-// Tick spacing of 1, 2 or 5 times a power of ten giving at most about `maxTicks` ticks.
-double niceStep(double range, int maxTicks) {
-    const double rough = range / std::max(maxTicks, 1);
-    const double power = std::pow(10.0, std::floor(std::log10(rough)));
-    for (double factor : {1.0, 2.0, 5.0}) {
-        if (factor * power >= rough) {
-            return factor * power;
-        }
-    }
-    return 10.0 * power;
-}
-
-QString tickLabel(double value, double step) {
-    if (std::abs(value) < step * 1e-6) {
-        return QStringLiteral("0");
-    }
-    if (step >= 1000.0) { // keeps the labels narrow on acceleration plots
-        return QString::number(value / 1000.0, 'f', step >= 10000.0 ? 0 : 1) + QLatin1Char('k');
-    }
-    const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(step))));
-    return QString::number(value, 'f', decimals);
-}
-
 struct Range {
     double low = std::numeric_limits<double>::infinity();
     double high = -std::numeric_limits<double>::infinity();
@@ -163,51 +141,92 @@ double visibleDuration(const std::vector<ProfilePlots::Curve>& curves) {
     return duration;
 }
 
+// What a plot draws beyond its curves.
+struct PlotOptions {
+    std::optional<double> cursor;                  // s: the mouse readout's time line
+    bool logAcceleration = false;                  // A acceleration as |a| on a log axis
+    std::optional<std::pair<double, double>> span; // s: the selected layer's time span
+    QString spanLabel;
+};
+
+// |a| below this (deg/s²) is drawn at it on the log axis: a smooth schedule's quiet stretches
+// stay on the plot instead of falling to minus infinity.
+constexpr double kLogFloor = 1.0;
+
+std::vector<double> logMagnitudes(const std::vector<double>& values) {
+    std::vector<double> logs(values.size());
+    std::transform(values.begin(), values.end(), logs.begin(),
+                   [](double v) { return std::log10(std::max(std::abs(v), kLogFloor)); });
+    return logs;
+}
+
+QString decadeLabel(double exponent) {
+    static const char* const kNames[] = {"1",    "10", "100", "1k",  "10k",
+                                         "100k", "1M", "10M", "100M"};
+    const auto k = static_cast<int>(std::lround(exponent));
+    return k >= 0 && k < 9 ? QString::fromLatin1(kNames[k]) : QStringLiteral("1e%1").arg(k);
+}
+
 // One plot: frame, grid with tick labels on both axes, the visible curves.
 class PlotPainter {
   public:
     PlotPainter(QPainter& painter, const QPalette& palette) : m_p(painter), m_palette(palette) {}
 
-    // `cursor`: a time to mark with a vertical line (the mouse readout), if any.
     void draw(const QRectF& area, int quantity, const std::vector<ProfilePlots::Curve>& curves,
-              std::optional<double> cursor) {
+              const PlotOptions& options) {
         const QFontMetricsF metrics(m_p.font());
+        const bool log = options.logAcceleration && quantity == ProfilePlots::AAcceleration;
         const Range xRange{0.0, visibleDuration(curves)};
+        std::vector<std::vector<double>> shown; // per curve, in plot units (log10 |a| or as is)
         Range yRange;
         for (const ProfilePlots::Curve& curve : curves) {
+            shown.push_back(log && curve.visible ? logMagnitudes(curve.values[quantity])
+                                                 : std::vector<double>{});
             if (curve.visible) {
-                for (double value : curve.values[quantity]) {
+                for (double value : log ? shown.back() : curve.values[quantity]) {
                     yRange.include(value);
                 }
             }
         }
         const QRectF plot = plotRect(area, metrics);
         m_p.setPen(m_palette.color(QPalette::Text));
+        const QString title = log ? ProfilePlots::tr("|A acceleration| [deg/s²], log scale")
+                                  : quantityTitle(quantity);
         m_p.drawText(area.adjusted(plot.left() - area.left(), 0, 0, 0),
-                     Qt::AlignLeft | Qt::AlignTop, quantityTitle(quantity));
+                     Qt::AlignLeft | Qt::AlignTop, title);
         if (!(xRange.high > 0.0) || !yRange.valid() || plot.width() < 10 || plot.height() < 10) {
             m_p.drawRect(plot);
             return;
         }
-        padRange(yRange);
-        drawYTicks(plot, yRange, metrics);
+        if (log) {
+            yRange.low = std::floor(yRange.low);
+            yRange.high = std::max(std::ceil(yRange.high), yRange.low + 1.0);
+            drawDecades(plot, yRange, metrics);
+        } else {
+            padRange(yRange);
+            drawYTicks(plot, yRange, metrics);
+        }
         drawXTicks(plot, xRange, metrics);
+        if (options.span) {
+            drawSpan(plot, xRange, *options.span, options.spanLabel, metrics);
+        }
         m_p.save();
         m_p.setClipRect(plot);
-        for (const ProfilePlots::Curve& curve : curves) {
+        for (std::size_t i = 0; i < curves.size(); ++i) {
+            const ProfilePlots::Curve& curve = curves[i];
             if (curve.visible) {
                 m_p.setPen(QPen(curveColour(curve, m_palette), curve.dashed ? 1.2 : 1.5,
                                 curve.dashed ? Qt::DashLine : Qt::SolidLine));
-                m_p.drawPolyline(
-                    decimatedLine(curve.time, curve.values[quantity], plot, xRange, yRange));
+                m_p.drawPolyline(decimatedLine(curve.time, log ? shown[i] : curve.values[quantity],
+                                               plot, xRange, yRange));
             }
         }
         m_p.restore();
         m_p.setPen(m_palette.color(QPalette::Text));
         m_p.setBrush(Qt::NoBrush);
         m_p.drawRect(plot);
-        if (cursor && *cursor >= 0.0 && *cursor <= xRange.high) {
-            const double x = plot.left() + *cursor / xRange.high * plot.width();
+        if (options.cursor && *options.cursor >= 0.0 && *options.cursor <= xRange.high) {
+            const double x = plot.left() + *options.cursor / xRange.high * plot.width();
             m_p.setPen(QPen(m_palette.color(QPalette::Text), 1.0, Qt::DotLine));
             m_p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
         }
@@ -240,6 +259,43 @@ class PlotPainter {
             const QRectF label(plot.left() - 200.0 - 4.0, y - metrics.height() / 2, 200.0,
                                metrics.height());
             m_p.drawText(label, Qt::AlignRight | Qt::AlignVCenter, tickLabel(value, step));
+        }
+    }
+
+    // Whole decades of |a| (1, 10, 100, 1k ...), each a grid line.
+    void drawDecades(const QRectF& plot, const Range& range, const QFontMetricsF& metrics) {
+        const double decades = range.high - range.low;
+        const int every =
+            std::max(1, static_cast<int>(std::ceil(
+                            decades / std::max(1.0, plot.height() / (1.6 * metrics.height())))));
+        for (double exponent = range.low; exponent <= range.high + 1e-9; exponent += every) {
+            const double y = plot.bottom() - (exponent - range.low) / decades * plot.height();
+            m_p.setPen(gridPen());
+            m_p.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
+            m_p.setPen(m_palette.color(QPalette::Text));
+            m_p.drawText(
+                QRectF(plot.left() - 204.0, y - metrics.height() / 2, 200.0, metrics.height()),
+                Qt::AlignRight | Qt::AlignVCenter, decadeLabel(exponent));
+        }
+    }
+
+    // The selected layer's time span: a tinted band behind the curves, named at its top.
+    void drawSpan(const QRectF& plot, const Range& xRange, std::pair<double, double> span,
+                  const QString& label, const QFontMetricsF& metrics) {
+        const double from = std::clamp(span.first, 0.0, xRange.high);
+        const double to = std::clamp(span.second, 0.0, xRange.high);
+        if (!(to > from)) {
+            return;
+        }
+        const double x0 = plot.left() + from / xRange.high * plot.width();
+        const double x1 = plot.left() + to / xRange.high * plot.width();
+        QColor tint = m_palette.color(QPalette::Highlight);
+        tint.setAlpha(45);
+        m_p.fillRect(QRectF(x0, plot.top(), x1 - x0, plot.height()), tint);
+        if (x1 - x0 > metrics.horizontalAdvance(label) + 4.0) {
+            m_p.setPen(m_palette.color(QPalette::Text));
+            m_p.drawText(QRectF(x0, plot.top() + 1.0, x1 - x0, metrics.height()),
+                         Qt::AlignHCenter | Qt::AlignTop, label);
         }
     }
 
@@ -305,8 +361,13 @@ class PlotCanvas final : public QWidget {
             return;
         }
         PlotPainter plotter(painter, palette());
+        PlotOptions options;
+        options.cursor = m_cursor;
+        options.logAcceleration = m_owner.accelerationLogScale();
+        options.span = m_owner.highlightedSpan();
+        options.spanLabel = m_owner.highlightedSpanLabel();
         for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
-            plotter.draw(cellArea(quantity), quantity, m_owner.curves(), m_cursor);
+            plotter.draw(cellArea(quantity), quantity, m_owner.curves(), options);
         }
     }
 
@@ -374,7 +435,17 @@ ProfilePlots::ProfilePlots(QWidget* parent) : QWidget(parent) {
     m_legend->setContentsMargins(6, 2, 6, 0);
     m_legendArea->setWidget(legendRow);
     m_canvas = new detail::PlotCanvas(*this, this);
-    layout->addWidget(m_legendArea);
+    m_logBox = new QCheckBox(tr("log |A acc.|"), this);
+    m_logBox->setObjectName(QStringLiteral("accelerationLogScale"));
+    m_logBox->setChecked(m_logAcceleration);
+    m_logBox->setToolTip(tr("A acceleration as its magnitude on a logarithmic axis, so the "
+                            "original's spikes and the new schedule are both readable"));
+    connect(m_logBox, &QCheckBox::toggled, this, &ProfilePlots::setAccelerationLogScale);
+    auto* top = new QHBoxLayout;
+    top->setContentsMargins(0, 0, 6, 0);
+    top->addWidget(m_legendArea, 1);
+    top->addWidget(m_logBox);
+    layout->addLayout(top);
     layout->addWidget(m_canvas, 1);
     setAutoFillBackground(true);
     setBackgroundRole(QPalette::Base);
@@ -419,6 +490,22 @@ void ProfilePlots::setCurves(std::vector<Curve> curves) {
     }
     m_curves = std::move(curves);
     rebuildLegend();
+    m_canvas->update();
+}
+
+void ProfilePlots::setAccelerationLogScale(bool logScale) {
+    if (m_logAcceleration != logScale) {
+        m_logAcceleration = logScale;
+        const QSignalBlocker blocker(m_logBox);
+        m_logBox->setChecked(logScale);
+        m_canvas->update();
+    }
+}
+
+void ProfilePlots::setHighlightedSpan(std::optional<std::pair<double, double>> seconds,
+                                      const QString& label) {
+    m_span = seconds;
+    m_spanLabel = label;
     m_canvas->update();
 }
 

@@ -10,6 +10,7 @@
 #include <QWidget>
 #include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QCheckBox;
@@ -60,6 +61,17 @@ class ProfilePlots final : public QWidget {
     // readout shown when the mouse hovers a plot.
     QString valuesAt(double time, Quantity quantity) const;
 
+    // A acceleration as |a| on a logarithmic axis (default): the original's spikes and a smooth
+    // schedule's few hundred deg/s² are both readable, where a linear axis scaled to the spikes
+    // shows the new schedule as a flat line.
+    void setAccelerationLogScale(bool logScale);
+    bool accelerationLogScale() const { return m_logAcceleration; }
+    // A time span (s) tinted in every plot, e.g. the selected layer on the re-scheduled time
+    // axis; nullopt clears it.
+    void setHighlightedSpan(std::optional<std::pair<double, double>> seconds, const QString& label);
+    std::optional<std::pair<double, double>> highlightedSpan() const { return m_span; }
+    QString highlightedSpanLabel() const { return m_spanLabel; }
+
     // The colour of a method's curves, readable on a light or dark background.
     static QColor methodColour(const QString& method, bool darkBackground);
 
@@ -79,6 +91,10 @@ class ProfilePlots final : public QWidget {
     QScrollArea* m_legendArea = nullptr;
     QHBoxLayout* m_legend = nullptr;
     std::vector<QCheckBox*> m_boxes;
+    QCheckBox* m_logBox = nullptr;
+    bool m_logAcceleration = true;
+    std::optional<std::pair<double, double>> m_span;
+    QString m_spanLabel;
     detail::PlotCanvas* m_canvas = nullptr;
 };
 

@@ -2,26 +2,73 @@
 
 #include "core/base/units.h"
 #include "core/scheduling/layer_edit.h"
+#include "ui/axis_ticks.h"
 
 #include <QFontMetricsF>
+#include <QLocale>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QToolTip>
 #include <algorithm>
 #include <utility>
 
 namespace bladeaxis::ui {
 namespace {
 
-constexpr double kMargin = 44.0; // room for the tick labels
-constexpr int kTicks = 5;
 constexpr double kPickRadius = 8.0;
+constexpr double kGap = 6.0; // between the frame, labels and strips
+
+const QColor kRawChannel(120, 160, 220, 110);
+const QColor kHull(80, 180, 120, 140);
+const QColor kOriginal(150, 150, 150);
+const QColor kKeyPoints(230, 140, 30);
+const QColor kScheduled(200, 40, 40);
+
+struct LegendEntry {
+    QString name;
+    QColor colour;
+    enum class Style { Band, Line, Dashed, Points } style;
+};
+
+std::vector<LegendEntry> legendEntries() {
+    return {{SThetaEditor::tr("raw channel"), kRawChannel, LegendEntry::Style::Band},
+            {SThetaEditor::tr("monotone hull"), kHull, LegendEntry::Style::Band},
+            {SThetaEditor::tr("original θ"), kOriginal, LegendEntry::Style::Dashed},
+            {SThetaEditor::tr("key points"), kKeyPoints, LegendEntry::Style::Points},
+            {SThetaEditor::tr("scheduled θ"), kScheduled, LegendEntry::Style::Line}};
+}
+
+constexpr double kSwatch = 18.0;
+
+double entryWidth(const LegendEntry& entry, const QFontMetricsF& metrics) {
+    return kSwatch + 6.0 + metrics.horizontalAdvance(entry.name) + 14.0;
+}
+
+// The legend's rows when laid out left to right in `width`: the entries of each row.
+std::vector<std::vector<LegendEntry>> legendRows(double width, const QFontMetricsF& metrics) {
+    std::vector<std::vector<LegendEntry>> rows(1);
+    double used = 0.0;
+    for (const LegendEntry& entry : legendEntries()) {
+        const double w = entryWidth(entry, metrics);
+        if (used > 0.0 && used + w > width) {
+            rows.emplace_back();
+            used = 0.0;
+        }
+        rows.back().push_back(entry);
+        used += w;
+    }
+    return rows;
+}
 
 } // namespace
 
 SThetaEditor::SThetaEditor(QWidget* parent) : QWidget(parent) {
     setMinimumSize(320, 200);
-    setMouseTracking(false);
+    setMouseTracking(true); // the hover readout
+    // A click on the plot takes the focus from a settings box, so Ctrl+Z then undoes the job's
+    // last edit rather than the box's typing.
+    setFocusPolicy(Qt::ClickFocus);
     setToolTip(tr("Drag a key point to re-shape theta(S); double-click adds a key point, "
                   "right-click deletes one. Ctrl+Z undoes. The job re-runs with the edit."));
 }
@@ -51,21 +98,57 @@ void SThetaEditor::setPending(const QString& message) {
     update();
 }
 
+QString SThetaEditor::message() const {
+    return !m_refusal.isEmpty() ? tr("Refused: %1").arg(m_refusal) : m_pending;
+}
+
+// The strips above the data: the legend (wrapped to the width), then the refusal or pending
+// message (wrapped); below them the plot with room for the tick labels left and under it.
+double SThetaEditor::legendHeight() const {
+    const QFontMetricsF metrics(font());
+    return static_cast<double>(legendRows(width() - 2.0 * kGap, metrics).size()) *
+               (metrics.height() + 2.0) +
+           kGap;
+}
+
+QRectF SThetaEditor::messageRect() const {
+    const QString text = message();
+    if (text.isEmpty()) {
+        return {};
+    }
+    const QFontMetricsF metrics(font());
+    const QRectF available(kGap, legendHeight(), width() - 2.0 * kGap, height());
+    const QRectF needed =
+        metrics.boundingRect(available, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, text);
+    return QRectF(available.left(), available.top(), available.width(), needed.height() + kGap);
+}
+
+QRectF SThetaEditor::plotArea() const {
+    const QFontMetricsF metrics(font());
+    const double left = metrics.horizontalAdvance(QStringLiteral("-0000")) + 2.0 * kGap;
+    const double top = legendHeight() + messageRect().height() + metrics.height() + kGap;
+    const double bottom = 2.0 * metrics.height() + kGap;
+    return QRectF(left, top, std::max(width() - left - 2.0 * kGap, 10.0),
+                  std::max(height() - top - bottom, 10.0));
+}
+
 QPointF SThetaEditor::toWidget(double s, double theta) const {
+    const QRectF plot = plotArea();
     const double s0 = m_layer->s.front();
     const double s1 = std::max(m_layer->s.back(), s0 + 1e-9);
-    const double x = kMargin + (s - s0) / (s1 - s0) * (width() - 2.0 * kMargin);
-    const double y = height() - kMargin -
-                     (theta - m_thetaLow) / (m_thetaHigh - m_thetaLow) * (height() - 2.0 * kMargin);
+    const double x = plot.left() + (s - s0) / (s1 - s0) * plot.width();
+    const double y =
+        plot.bottom() - (theta - m_thetaLow) / (m_thetaHigh - m_thetaLow) * plot.height();
     return {x, y};
 }
 
 Vec2 SThetaEditor::fromWidget(QPointF point) const {
+    const QRectF plot = plotArea();
     const double s0 = m_layer->s.front();
     const double s1 = std::max(m_layer->s.back(), s0 + 1e-9);
-    const double s = s0 + (point.x() - kMargin) / (width() - 2.0 * kMargin) * (s1 - s0);
-    const double theta = m_thetaLow + (height() - kMargin - point.y()) /
-                                          (height() - 2.0 * kMargin) * (m_thetaHigh - m_thetaLow);
+    const double s = s0 + (point.x() - plot.left()) / plot.width() * (s1 - s0);
+    const double theta =
+        m_thetaLow + (plot.bottom() - point.y()) / plot.height() * (m_thetaHigh - m_thetaLow);
     return {s, theta};
 }
 
@@ -133,6 +216,15 @@ void SThetaEditor::mousePressEvent(QMouseEvent* event) {
 }
 
 void SThetaEditor::mouseMoveEvent(QMouseEvent* event) {
+    if (m_layer && !m_dragged) {
+        const QString readout = readoutAt(event->position());
+        if (!readout.isEmpty()) {
+            QToolTip::showText(event->globalPosition().toPoint(), readout, this);
+        } else {
+            QToolTip::hideText();
+        }
+        return;
+    }
     if (!m_dragged || !m_layer) {
         return;
     }
@@ -184,60 +276,104 @@ void SThetaEditor::paintEvent(QPaintEvent*) {
     paintMessages(painter);
 }
 
-// S in mm along the bottom, theta in degrees (relative to the layer start) up the left side.
+// S in mm along the bottom, theta in degrees (relative to the layer start) up the left side,
+// both at round values.
 void SThetaEditor::paintAxes(QPainter& painter) const {
     const auto& l = *m_layer;
-    const QColor text = palette().text().color();
-    painter.setPen(QPen(palette().mid().color(), 1.0));
-    const QPointF origin = toWidget(l.s.front(), m_thetaLow);
-    const QPointF xEnd = toWidget(l.s.back(), m_thetaLow);
-    const QPointF yEnd = toWidget(l.s.front(), m_thetaHigh);
-    painter.drawLine(origin, xEnd);
-    painter.drawLine(origin, yEnd);
-    painter.setPen(text);
+    const QRectF plot = plotArea();
     const QFontMetricsF metrics(painter.font());
-    for (int k = 0; k <= kTicks; ++k) {
-        const double f = static_cast<double>(k) / kTicks;
-        const double s = l.s.front() + f * (l.s.back() - l.s.front());
+    const QColor text = palette().text().color();
+    const QColor grid = palette().mid().color();
+    painter.setPen(QPen(grid, 1.0));
+    painter.drawRect(plot);
+    const int sTicks = std::max(2, static_cast<int>(plot.width() / 70.0));
+    for (double s : niceTicks(l.s.front(), l.s.back(), sTicks)) {
         const QPointF x = toWidget(s, m_thetaLow);
-        const QString sLabel = QString::number(s, 'f', 0);
+        const QString label = tickLabel(s, niceStep(l.s.back() - l.s.front(), sTicks));
+        painter.setPen(QPen(grid, 1.0));
         painter.drawLine(x, x + QPointF(0.0, 4.0));
-        painter.drawText(x + QPointF(-0.5 * metrics.horizontalAdvance(sLabel), 16.0), sLabel);
-        const double theta = m_thetaLow + f * (m_thetaHigh - m_thetaLow);
-        const QPointF y = toWidget(l.s.front(), theta);
-        const QString thetaLabel = QString::number(units::radToDeg(theta), 'f', 0);
-        painter.drawLine(y, y - QPointF(4.0, 0.0));
-        painter.drawText(y + QPointF(-6.0 - metrics.horizontalAdvance(thetaLabel), 4.0),
-                         thetaLabel);
+        painter.setPen(text);
+        painter.drawText(QRectF(x.x() - 40.0, plot.bottom() + 4.0, 80.0, metrics.height()),
+                         Qt::AlignHCenter | Qt::AlignTop, label);
     }
-    painter.drawText(QPointF(width() - kMargin - 40.0, height() - 4.0), tr("S [mm]"));
-    painter.drawText(QPointF(4.0, kMargin - 24.0), tr("θ [°]"));
+    const double lowDeg = units::radToDeg(m_thetaLow), highDeg = units::radToDeg(m_thetaHigh);
+    const int thetaTicks = std::max(2, static_cast<int>(plot.height() / (2.0 * metrics.height())));
+    for (double degrees : niceTicks(lowDeg, highDeg, thetaTicks)) {
+        const QPointF y = toWidget(l.s.front(), units::degToRad(degrees));
+        painter.setPen(QPen(grid, 1.0));
+        painter.drawLine(y, y - QPointF(4.0, 0.0));
+        painter.setPen(text);
+        painter.drawText(
+            QRectF(0.0, y.y() - metrics.height() / 2, plot.left() - kGap, metrics.height()),
+            Qt::AlignRight | Qt::AlignVCenter,
+            tickLabel(degrees, niceStep(highDeg - lowDeg, thetaTicks)));
+    }
+    painter.drawText(
+        QRectF(plot.left(), plot.bottom() + metrics.height() + 4.0, plot.width(), metrics.height()),
+        Qt::AlignRight | Qt::AlignTop, tr("S [mm]"));
+    painter.drawText(
+        QRectF(kGap, plot.top() - metrics.height() - 2.0, plot.width(), metrics.height()),
+        Qt::AlignLeft | Qt::AlignBottom, tr("θ [°]"));
 }
 
+// Above the data, never over it: a row (or rows) of swatches and names.
 void SThetaEditor::paintLegend(QPainter& painter) const {
-    struct Entry {
-        QString name;
-        QColor colour;
-        bool band;
-    };
-    const Entry entries[] = {{tr("raw channel"), QColor(120, 160, 220, 110), true},
-                             {tr("monotone hull"), QColor(80, 180, 120, 140), true},
-                             {tr("original θ"), QColor(150, 150, 150), false},
-                             {tr("key points"), QColor(230, 140, 30), false},
-                             {tr("scheduled θ"), QColor(200, 40, 40), false}};
-    double y = kMargin + 4.0;
-    const double x = width() - kMargin - 110.0;
-    for (const Entry& entry : entries) {
-        if (entry.band) {
-            painter.fillRect(QRectF(x, y - 8.0, 18.0, 10.0), entry.colour);
-        } else {
-            painter.setPen(QPen(entry.colour, 2.0));
-            painter.drawLine(QPointF(x, y - 3.0), QPointF(x + 18.0, y - 3.0));
+    const QFontMetricsF metrics(painter.font());
+    double y = kGap / 2;
+    for (const auto& row : legendRows(width() - 2.0 * kGap, metrics)) {
+        double x = kGap;
+        const double middle = y + metrics.height() / 2;
+        for (const LegendEntry& entry : row) {
+            switch (entry.style) {
+            case LegendEntry::Style::Band:
+                painter.fillRect(QRectF(x, middle - 5.0, kSwatch, 10.0), entry.colour);
+                break;
+            case LegendEntry::Style::Points:
+                painter.setPen(Qt::NoPen);
+                painter.setBrush(entry.colour);
+                painter.drawEllipse(QPointF(x + kSwatch / 2, middle), 4.0, 4.0);
+                painter.setBrush(Qt::NoBrush);
+                break;
+            default:
+                painter.setPen(
+                    QPen(entry.colour, 2.0,
+                         entry.style == LegendEntry::Style::Dashed ? Qt::DashLine : Qt::SolidLine));
+                painter.drawLine(QPointF(x, middle), QPointF(x + kSwatch, middle));
+            }
+            painter.setPen(palette().text().color());
+            painter.drawText(QRectF(x + kSwatch + 6.0, y, width(), metrics.height()),
+                             Qt::AlignLeft | Qt::AlignVCenter, entry.name);
+            x += entryWidth(entry, metrics);
         }
-        painter.setPen(palette().text().color());
-        painter.drawText(QPointF(x + 24.0, y + 1.0), entry.name);
-        y += 15.0;
+        y += metrics.height() + 2.0;
     }
+}
+
+QStringList SThetaEditor::legendNames() const {
+    QStringList names;
+    for (const LegendEntry& entry : legendEntries()) {
+        names << entry.name;
+    }
+    return names;
+}
+
+// S, the original and the scheduled theta at the mouse's S, and the channel there.
+QString SThetaEditor::readoutAt(QPointF position) const {
+    if (!m_layer || m_layer->s.size() < 2 || !plotArea().contains(position)) {
+        return {};
+    }
+    const auto& l = *m_layer;
+    const double s = std::clamp(fromWidget(position).x(), l.s.front(), l.s.back());
+    const auto after = std::lower_bound(l.s.begin(), l.s.end(), s);
+    const auto i = static_cast<std::size_t>(
+        std::clamp<std::ptrdiff_t>(after - l.s.begin(), 0, std::ssize(l.s) - 1));
+    auto degrees = [&](const std::vector<double>& values) {
+        return i < values.size() ? QLocale().toString(units::radToDeg(values[i]), 'f', 2)
+                                 : QStringLiteral("–");
+    };
+    return tr("S %1 mm\nscheduled θ %2°\noriginal θ %3°\nchannel %4° … %5°")
+        .arg(QLocale().toString(l.s[i], 'f', 1), degrees(l.theta), degrees(l.thetaOriginal),
+             degrees(l.thetaMin), degrees(l.thetaMax));
 }
 
 // Raw channel (blue) and monotone hull (green) as bands.
@@ -254,9 +390,9 @@ void SThetaEditor::paintBands(QPainter& painter) const {
         return polygon;
     };
     painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(120, 160, 220, 70));
+    painter.setBrush(kRawChannel);
     painter.drawPolygon(bandOf(l.thetaMin, l.thetaMax));
-    painter.setBrush(QColor(80, 180, 120, 90));
+    painter.setBrush(kHull);
     painter.drawPolygon(bandOf(l.lo, l.hi));
 }
 
@@ -271,32 +407,40 @@ void SThetaEditor::paintCurves(QPainter& painter) const {
         return polygon;
     };
     painter.setBrush(Qt::NoBrush);
-    painter.setPen(QPen(QColor(150, 150, 150), 1.0, Qt::DashLine));
+    painter.save();
+    painter.setClipRect(
+        plotArea().adjusted(-6.0, -6.0, 6.0, 6.0)); // key points may sit on the edge
+    painter.setPen(QPen(kOriginal, 1.0, Qt::DashLine));
     painter.drawPolyline(curveOf(l.thetaOriginal));
-    painter.setPen(QPen(QColor(230, 140, 30), 1.0));
+    painter.setPen(QPen(kKeyPoints, 1.0));
     QPolygonF polyline;
     for (const Vec2& vertex : l.polyline) {
         polyline << toWidget(vertex.x(), vertex.y());
     }
     painter.drawPolyline(polyline);
-    painter.setPen(QPen(QColor(200, 40, 40), 2.0));
+    painter.setPen(QPen(kScheduled, 2.0));
     painter.drawPolyline(curveOf(l.theta));
-    painter.setBrush(QColor(230, 140, 30));
+    painter.setBrush(kKeyPoints);
     for (const QPointF& point : polyline) {
         painter.drawEllipse(point, 4.0, 4.0);
     }
+    painter.restore();
 }
 
+// The whole refusal or pending message, wrapped in its own strip above the plot (the plot
+// shrinks to make room), never cut off.
 void SThetaEditor::paintMessages(QPainter& painter) const {
+    const QRectF strip = messageRect();
+    if (strip.isEmpty()) {
+        return;
+    }
     painter.setBrush(Qt::NoBrush);
     if (!m_refusal.isEmpty()) {
-        painter.setPen(QPen(Qt::red, 3.0));
+        painter.setPen(QPen(QColor(210, 30, 30), 3.0));
         painter.drawRect(rect().adjusted(1, 1, -2, -2));
-        painter.drawText(QPointF(kMargin, kMargin - 8.0), tr("Refused: %1").arg(m_refusal));
-    } else if (!m_pending.isEmpty()) {
-        painter.setPen(palette().text().color());
-        painter.drawText(QPointF(kMargin, kMargin - 8.0), m_pending);
     }
+    painter.setPen(m_refusal.isEmpty() ? palette().text().color() : QColor(210, 30, 30));
+    painter.drawText(strip, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, message());
 }
 
 } // namespace bladeaxis::ui

@@ -9,6 +9,7 @@
 #include "core/scheduling/schedule.h"
 #include "core/scheduling/schedule_parameters.h"
 
+#include <QStringList>
 #include <QWidget>
 #include <optional>
 #include <vector>
@@ -28,6 +29,15 @@ class SThetaEditor final : public QWidget {
     // Widget position of polyline vertex `index` (for tests and tooltips).
     QPointF vertexPosition(std::size_t index) const;
     QString refusal() const { return m_refusal; }
+    // The legend's entries, drawn above the plot in this order.
+    QStringList legendNames() const;
+    // The data rectangle: the legend and the message strip are above it, never on it.
+    QRectF plotArea() const;
+    // The legend's strip and the message's (empty without a message), in widget coordinates.
+    double legendHeight() const;
+    QRectF messageRect() const;
+    // The hover readout at a widget position: S, scheduled and original theta, the channel.
+    QString readoutAt(QPointF position) const;
     // Re-smooths with these vertices; false (and the reason in refusal()) when refused.
     bool applyVertices(const std::vector<Vec2>& vertices);
     // Shown while the job re-runs with changed layer settings, which the editor cannot preview.
@@ -57,6 +67,7 @@ class SThetaEditor final : public QWidget {
     void paintBands(QPainter& painter) const;
     void paintCurves(QPainter& painter) const;
     void paintMessages(QPainter& painter) const;
+    QString message() const;
 
     std::optional<scheduling::LayerResult> m_layer;
     scheduling::ScheduleParameters m_parameters;

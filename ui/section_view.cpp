@@ -1,5 +1,6 @@
 #include "ui/section_view.h"
 
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
 #include <algorithm>
@@ -13,7 +14,6 @@ constexpr std::size_t kGlyphsPerLayer = 36;
 const QColor kOriginalColour(235, 140, 40);
 const QColor kRescheduledColour(30, 160, 220);
 const QColor kCentreColour(120, 120, 130);
-const QColor kSectionColour(60, 60, 70);
 
 QPointF inPlane(const Vec3& point) {
     return {point.y(), point.z()};
@@ -83,11 +83,8 @@ void SectionView::setLayer(const job::DisplayScene& scene, int layer) {
     update();
 }
 
-double SectionView::glyphLength() const {
-    return m_toolRadius > 0.0 ? 1.5 * m_toolRadius : 10.0;
-}
-
-QRectF SectionView::contentBounds() const {
+// The section and the ball centres, without the tool-axis glyphs.
+QRectF SectionView::pathBounds() const {
     QRectF bounds;
     const auto include = [&bounds](const QPointF& p) {
         bounds = bounds.isNull() ? QRectF(p, QSizeF(1e-9, 1e-9))
@@ -97,9 +94,24 @@ QRectF SectionView::contentBounds() const {
         std::for_each(piece.begin(), piece.end(), include);
     }
     std::for_each(m_centres.begin(), m_centres.end(), include);
+    return bounds;
+}
+
+// Axes long enough to read the angle: 2.5 R, or 6 % of the section where R is small beside it.
+double SectionView::glyphLength() const {
+    const QRectF path = pathBounds();
+    return std::max(2.5 * m_toolRadius, 0.06 * std::max(path.width(), path.height()));
+}
+
+// Everything drawn, glyphs at the length they are drawn with, so nothing runs past the pane.
+QRectF SectionView::contentBounds() const {
+    QRectF bounds = pathBounds();
+    const double length = glyphLength();
     for (const Glyph& glyph : m_glyphs) {
-        include(glyph.centre + glyphLength() * glyph.original);
-        include(glyph.centre + glyphLength() * glyph.rescheduled);
+        for (const QPointF& end :
+             {glyph.centre + length * glyph.original, glyph.centre + length * glyph.rescheduled}) {
+            bounds = bounds.united(QRectF(end, QSizeF(1e-9, 1e-9)));
+        }
     }
     const double margin = 0.03 * std::max(bounds.width(), bounds.height());
     return bounds.adjusted(-margin, -margin, margin, margin);
@@ -108,7 +120,8 @@ QRectF SectionView::contentBounds() const {
 void SectionView::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.setRenderHint(QPainter::Antialiasing);
-    painter.fillRect(rect(), QColor(250, 250, 248));
+    painter.fillRect(rect(), palette().base()); // follows the light or dark palette
+    painter.setClipRect(rect());
     if (m_layer < 0) {
         painter.setPen(palette().text().color());
         painter.drawText(rect(), Qt::AlignCenter, tr("Select a layer to see its section"));
@@ -129,8 +142,8 @@ void SectionView::paintEvent(QPaintEvent*) {
         for (std::size_t i = 0; i < piece.size(); ++i) {
             i == 0 ? path.moveTo(toScreen(piece[i])) : path.lineTo(toScreen(piece[i]));
         }
-        painter.setPen(QPen(kSectionColour, 2.0));
-        painter.setBrush(QColor(200, 205, 215));
+        painter.setPen(QPen(palette().color(QPalette::Text), 2.0));
+        painter.setBrush(QColor(200, 205, 215)); // light metal, readable on both palettes
         painter.drawPath(path);
     }
     painter.setBrush(Qt::NoBrush);
@@ -143,9 +156,8 @@ void SectionView::paintEvent(QPaintEvent*) {
         painter.setPen(QPen(kCentreColour, 1.2, Qt::DashLine));
         painter.drawPath(path);
     }
-    // Axes from the ball centre away from the blade, long enough to read the angle.
-    const double length =
-        std::max(2.5 * m_toolRadius, 0.06 * std::max(content.width(), content.height()));
+    // Axes from the ball centre away from the blade.
+    const double length = glyphLength();
     for (const Glyph& glyph : m_glyphs) {
         const QPointF start = toScreen(glyph.centre);
         painter.setPen(QPen(kOriginalColour, 1.6));
@@ -160,17 +172,23 @@ void SectionView::paintEvent(QPaintEvent*) {
         painter.setBrush(Qt::NoBrush);
     }
 
-    painter.setPen(QColor(40, 40, 40));
-    painter.drawText(QRectF(rect()).adjusted(8, 6, -8, 0), Qt::AlignLeft | Qt::AlignTop,
-                     tr("Layer %1, section x = %2 mm (%3)")
-                         .arg(m_layer)
-                         .arg(m_sectionX, 0, 'f', 2)
-                         .arg(m_surfaceName));
+    // The title on the left, elided before it reaches the legend on the right.
+    const QFontMetricsF metrics(painter.font());
+    const QRectF top = QRectF(rect()).adjusted(8, 6, -8, 0);
+    const double legendWidth = std::max(metrics.horizontalAdvance(tr("original")),
+                                        metrics.horizontalAdvance(tr("re-scheduled"))) +
+                               12.0;
+    painter.setPen(palette().color(QPalette::Text));
+    const QString title = tr("Layer %1, section x = %2 mm (%3)")
+                              .arg(m_layer)
+                              .arg(m_sectionX, 0, 'f', 2)
+                              .arg(m_surfaceName);
+    painter.drawText(top.adjusted(0, 0, -legendWidth, 0), Qt::AlignLeft | Qt::AlignTop,
+                     metrics.elidedText(title, Qt::ElideRight, top.width() - legendWidth));
     painter.setPen(kOriginalColour);
-    painter.drawText(QRectF(rect()).adjusted(8, 6, -8, 0), Qt::AlignRight | Qt::AlignTop,
-                     tr("original"));
+    painter.drawText(top, Qt::AlignRight | Qt::AlignTop, tr("original"));
     painter.setPen(kRescheduledColour);
-    painter.drawText(QRectF(rect()).adjusted(8, 20, -8, 0), Qt::AlignRight | Qt::AlignTop,
+    painter.drawText(top.adjusted(0, metrics.height(), 0, 0), Qt::AlignRight | Qt::AlignTop,
                      tr("re-scheduled"));
 }
 

@@ -33,6 +33,7 @@ class SectionView final : public QWidget {
         QPointF original, rescheduled; // unit in-plane directions; rescheduled (0, 0) if none
     };
 
+    QRectF pathBounds() const;
     QRectF contentBounds() const;
     double glyphLength() const; // mm
 

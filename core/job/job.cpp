@@ -483,7 +483,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
         }
     }
     if (cadSpec) {
-        progress.progress(0.65, "checking the tool against the blade CAD");
+        progress.progress(0.65, spec.demo && spec.cad.file.empty()
+                                    ? "checking the tool against the demo blade's surface"
+                                    : "checking the tool against the blade CAD");
         if (auto status = cadCheckInto(result, spec, *cadSpec, progress); !status) {
             return std::unexpected(status.error());
         }

@@ -7,6 +7,7 @@
 #include "ui/section_view.h"
 
 #include <QImage>
+#include <QPalette>
 #include <QTest>
 #include <set>
 
@@ -55,6 +56,35 @@ class SectionViewTest final : public QObject {
         QVERIFY(sectionShare > 0.02);
         QVERIFY(pixelsNear(image, kOriginal, 0) > 50);
         QVERIFY(pixelsNear(image, kRescheduled, 0) > 50);
+    }
+
+    void toolAxesStayInsideThePaneOnEveryLayer() {
+        m_view.resize(360, 300); // narrow: long axes would run past the edge
+        for (int layer = 0; layer < static_cast<int>(m_scene.layers.size()); ++layer) {
+            m_view.setLayer(m_scene, layer);
+            const QImage image = m_view.grab().toImage();
+            QImage border = image.copy();
+            // Only the outermost 3 pixels: nothing of the axes may be drawn there.
+            for (int y = 3; y < border.height() - 3; ++y) {
+                for (int x = 3; x < border.width() - 3; ++x) {
+                    border.setPixelColor(x, y, Qt::black);
+                }
+            }
+            QCOMPARE(pixelsNear(border, kOriginal, 0), std::size_t{0});
+            QCOMPARE(pixelsNear(border, kRescheduled, 0), std::size_t{0});
+        }
+        m_view.resize(600, 500);
+    }
+
+    void theDarkPaletteGivesADarkPane() {
+        QPalette dark = m_view.palette();
+        dark.setColor(QPalette::Base, QColor(30, 30, 34));
+        dark.setColor(QPalette::Text, QColor(230, 230, 230));
+        m_view.setPalette(dark);
+        m_view.setLayer(m_scene, 1);
+        const QImage image = m_view.grab().toImage();
+        QVERIFY(image.pixelColor(image.width() / 2, image.height() - 2).lightness() < 80);
+        m_view.setPalette(QPalette());
     }
 
     void anotherLayerDrawsDifferently() {

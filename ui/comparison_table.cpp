@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QHeaderView>
+#include <QStyle>
 #include <algorithm>
 #include <optional>
 #include <set>
@@ -99,6 +100,25 @@ void ComparisonTable::setComparison(const compare::Comparison& comparison) {
         markBest(static_cast<int>(column), table.columns[column].better);
     }
     resizeColumnsToContents();
+}
+
+void ComparisonTable::setExportedMethod(const QString& method) {
+    m_exportedRow = -1;
+    const QString note = tr("Export writes this program. ");
+    for (int row = 0; row < rowCount(); ++row) {
+        QTableWidgetItem* name = item(row, 0);
+        const bool exported = name->text() == method;
+        name->setIcon(exported ? style()->standardIcon(QStyle::SP_DialogSaveButton) : QIcon());
+        QString tip = name->toolTip();
+        tip.remove(note);
+        name->setToolTip(exported ? note + tip : tip);
+        for (int column = 0; column < columnCount(); ++column) {
+            QColor tint = palette().color(QPalette::Highlight);
+            tint.setAlpha(40);
+            item(row, column)->setBackground(exported ? QBrush(tint) : QBrush());
+        }
+        m_exportedRow = exported ? row : m_exportedRow;
+    }
 }
 
 void ComparisonTable::markBest(int column, report::Better better) {

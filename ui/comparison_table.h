@@ -26,6 +26,10 @@ class ComparisonTable final : public QTableWidget {
     explicit ComparisonTable(QWidget* parent = nullptr);
 
     void setComparison(const compare::Comparison& comparison);
+    // Marks the method whose program Export writes (icon, tint, tooltip); the others unmarked.
+    void setExportedMethod(const QString& method);
+    // The marked row, -1 when none.
+    int exportedRow() const { return m_exportedRow; }
     // Hides QTableWidget::clear: removes the rows and the columns.
     void clear();
 
@@ -37,6 +41,8 @@ class ComparisonTable final : public QTableWidget {
 
   private:
     void markBest(int column, report::Better better);
+
+    int m_exportedRow = -1;
 };
 
 } // namespace bladeaxis::ui

@@ -296,20 +296,26 @@ Status cadCheckInto(JobResult& result, const JobSpec& spec, const CadCheckSpec& 
     return {};
 }
 
+// The pass, its axes, the radius and the analysis every method is evaluated with.
+compare::EvaluationContext evaluationContext(const JobResult& result, const JobSpec& spec) {
+    compare::EvaluationContext context;
+    context.pass =
+        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
+    context.originalAxes = result.axes;
+    context.toolRadius = result.toolRadius.value_or(0.0);
+    context.machine = &result.machine;
+    context.analysis = spec.analysis;
+    context.analysis.toolRadius = context.toolRadius;
+    return context;
+}
+
 Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
                          "the ball radius is not known: give --tool-radius (" +
                              radiusSourceHint(result.program.format()) + ")");
     }
-    compare::EvaluationContext context;
-    context.pass =
-        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
-    context.originalAxes = result.axes;
-    context.toolRadius = *result.toolRadius;
-    context.machine = &result.machine;
-    context.analysis = spec.analysis;
-    context.analysis.toolRadius = context.toolRadius;
+    const compare::EvaluationContext context = evaluationContext(result, spec);
     compare::CompareOptions options;
     options.best = spec.parameters;
     options.optimum = spec.compareOptimum;
@@ -402,6 +408,30 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
 
 } // namespace
 
+Status appendEditedMethod(JobResult& result, const JobSpec& spec) {
+    if (!result.comparison) {
+        return {};
+    }
+    std::vector<compare::MethodResult>& methods = result.comparison->methods;
+    std::erase_if(methods, [](const compare::MethodResult& method) {
+        return method.method == kEditedMethod;
+    });
+    if (!result.rescheduled || spec.layerEdits.empty()) {
+        return {}; // the edits were undone: no edited row any more
+    }
+    compare::EvaluationContext context = evaluationContext(result, spec);
+    context.reference = &result.comparison->reference;
+    auto edited = compare::evaluateMethod(
+        context, kEditedMethod,
+        std::to_string(spec.layerEdits.size()) + " layer(s) edited over the job's preset",
+        result.rescheduled->schedule.newAxes, result.rescheduled->stageSeconds.schedule);
+    if (!edited) {
+        return std::unexpected(edited.error());
+    }
+    methods.push_back(std::move(*edited));
+    return {};
+}
+
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel) {
     return runJob(spec, progress, cancel, {});
 }
@@ -493,6 +523,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     if (spec.compare) {
         progress.progress(0.7, "comparing with the other methods");
         if (auto status = compareInto(result, spec, cancel); !status) {
+            return std::unexpected(status.error());
+        }
+        if (auto status = appendEditedMethod(result, spec); !status) {
             return std::unexpected(status.error());
         }
     }

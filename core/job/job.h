@@ -91,6 +91,15 @@ using OriginalReadyHook = std::function<void(const JobResult& partial)>;
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel,
                          const OriginalReadyHook& originalReady);
 
+// The comparison's name of the engineer's edited schedule (what Export writes once a layer is
+// edited); without edits, the job's schedule is the comparison's "stheta-best".
+inline constexpr const char* kEditedMethod = "edited";
+
+// With layer edits and a comparison: the edited schedule as one more method of the comparison,
+// evaluated exactly like the others (replacing an earlier "edited" row). A job with --compare
+// does it; the window calls it after a re-run for an edit, which keeps the comparison it had.
+Status appendEditedMethod(JobResult& result, const JobSpec& spec);
+
 // Writes the re-scheduled program to spec.outputProgram, and report.json, axes.csv and
 // layers.csv (and demo_blade.nc for a demo job; compare.json, compare.csv and report.html for a
 // comparison) into spec.outputDir, each atomically; refuses to overwrite the input program.

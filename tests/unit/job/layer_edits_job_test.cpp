@@ -170,6 +170,37 @@ TEST(LayerEditsJob, SavedEditRunsToTheSameProgramInBatch) {
     EXPECT_NE(reportJsonText(*edited, &spec).find("\"edited_layers\""), std::string::npos);
 }
 
+TEST(LayerEditsJob, AComparisonShowsTheEditedScheduleBesideThePresets) {
+    JobSpec spec;
+    spec.demo = true;
+    spec.compare = true;
+    spec.compareOptimum = false;
+    const auto plain = run(spec);
+    ASSERT_TRUE(plain.has_value()) << plain.error().toString();
+    EXPECT_EQ(plain->comparison->find(kEditedMethod), nullptr);
+    const auto& layers = plain->rescheduled->schedule.layers;
+    scheduling::LayerOverride edit;
+    for (std::size_t k = 1; k + 1 < layers.size() && edit.keyPoints.empty(); ++k) {
+        edit.layer = k;
+        edit.keyPoints = draggedKeyPoints(layers[k]);
+    }
+    ASSERT_FALSE(edit.keyPoints.empty());
+    spec.layerEdits = {edit};
+    auto edited = run(spec);
+    ASSERT_TRUE(edited.has_value()) << edited.error().toString();
+    const compare::MethodResult* row = edited->comparison->find(kEditedMethod);
+    ASSERT_NE(row, nullptr);
+    // Evaluated like every method: the same motion as the job's own analysis of its program.
+    EXPECT_NEAR(row->t1.time, edited->rescheduled->constantFeed.time,
+                1e-6 * edited->rescheduled->constantFeed.time);
+    EXPECT_EQ(row->profile.aReversals.count, 0);
+
+    // Undone, the row goes: a comparison never shows an edit the program does not have.
+    spec.layerEdits.clear();
+    ASSERT_TRUE(appendEditedMethod(*edited, spec));
+    EXPECT_EQ(edited->comparison->find(kEditedMethod), nullptr);
+}
+
 TEST(LayerEditsJob, EditThatNoLongerFitsFailsTheJob) {
     JobSpec spec;
     spec.demo = true;

@@ -41,7 +41,7 @@ fuzz: deps
 	bash packaging/fuzz.sh
 
 format:
-	find core app tests $$(test -d ui && echo ui) -path tests/data -prune -o \( -name '*.h' -o -name '*.cpp' \) -print | xargs clang-format -i
+	find core app tests $$(test -d ui && echo ui) \( -path tests/data -o -path tests/fuzz/corpus \) -prune -o \( -name '*.h' -o -name '*.cpp' \) -print | xargs clang-format -i
 
 clean:
 	rm -rf build out

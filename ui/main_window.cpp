@@ -69,6 +69,11 @@ QString editText(const scheduling::LayerOverride* change) {
     return settings ? QObject::tr("settings") : QObject::tr("key points");
 }
 
+const QColor kBetter(20, 130, 60);
+const QColor kWorse(200, 40, 40);
+constexpr double kNoticeableChange = 0.01; // 1 %: below this a re-run's figure did not move
+constexpr double kMuchWorse = 2.0;         // x2: an edit that made the layer much worse
+
 // A number as a person reads it in the desktop's language: thousands grouped ("1,408,372"),
 // right-aligned; the value itself kept for sorting and tests.
 QTableWidgetItem* numberItem(double value, int decimals) {
@@ -76,6 +81,20 @@ QTableWidgetItem* numberItem(double value, int decimals) {
     item->setData(Qt::UserRole, value);
     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     return item;
+}
+
+// The time span (s, on the re-scheduled motion's time axis) of the samples of pass records
+// first..last; nullopt when none of them was analysed.
+std::optional<std::pair<double, double>> layerTimeSpan(const analysis::AxisProfile& profile,
+                                                       std::size_t first, std::size_t last) {
+    const auto& records = profile.sampleRecord;
+    const auto begin = std::lower_bound(records.begin(), records.end(), first);
+    const auto end = std::upper_bound(records.begin(), records.end(), last);
+    if (begin >= end || profile.time.size() != records.size()) {
+        return std::nullopt;
+    }
+    return std::pair{profile.time[static_cast<std::size_t>(begin - records.begin())],
+                     profile.time[static_cast<std::size_t>(end - records.begin()) - 1]};
 }
 
 // One undo step of the job: a layer's override before and after, and the key points the editor
@@ -192,8 +211,21 @@ QWidget* MainWindow::build3dPage() {
     m_toolSlider->setEnabled(false);
     connect(m_toolSlider, &QSlider::valueChanged, this,
             [this](int record) { m_view3d->showToolAt(static_cast<std::size_t>(record)); });
+    // Where the tool is, as the engineer reads it: program line, time and A.
+    auto* readout = new QLabel(page);
+    readout->setMinimumWidth(readout->fontMetrics().horizontalAdvance(
+        QStringLiteral("line 0000000 · t = 00000.00 s · A = −0000.0°")));
+    connect(m_view3d, &ToolpathView::positionReadoutChanged, readout, &QLabel::setText);
+    // A click on the toolpath selects the point's layer and moves the tool there.
+    connect(m_view3d, &ToolpathView::pointPicked, this, [this](std::size_t passIndex) {
+        selectLayer(m_view3d->layerOfRecord(passIndex));
+        m_toolSlider->setValue(static_cast<int>(passIndex));
+    });
+    auto* sliderRow = new QHBoxLayout;
+    sliderRow->addWidget(m_toolSlider, 1);
+    sliderRow->addWidget(readout);
     layout->addWidget(m_view3d, 1);
-    layout->addWidget(m_toolSlider);
+    layout->addLayout(sliderRow);
     return page;
 }
 
@@ -354,6 +386,11 @@ void MainWindow::onJobFinished() {
     }
     if (reapply && m_result && m_result->comparison && !outcome->comparison) {
         outcome->comparison = std::move(m_result->comparison);
+        // The comparison was computed before the edit: the edited schedule becomes its row.
+        if (auto status = job::appendEditedMethod(*outcome, m_spec); !status) {
+            statusBar()->showMessage(tr("The edited schedule is not in the comparison: %1")
+                                         .arg(QString::fromStdString(status.error().message)));
+        }
     }
     m_result = std::move(*outcome);
     showResult(std::move(scene));
@@ -378,10 +415,9 @@ void MainWindow::showResult(job::DisplayScene scene) {
     if (m_result->comparison) {
         m_plots->setComparison(*m_result->comparison);
         m_comparison->setComparison(*m_result->comparison);
-        // The comparison's stheta-best is the preset's; the edited program is shown beside it.
-        if (!m_spec.layerEdits.empty() && m_result->rescheduled) {
-            m_plots->addProfile(tr("edited"), m_result->rescheduled->profile);
-        }
+        // The job's program is the comparison's stheta-best until a layer is edited.
+        m_comparison->setExportedMethod(
+            QString::fromUtf8(m_spec.layerEdits.empty() ? "stheta-best" : job::kEditedMethod));
     } else {
         m_plots->setProfiles(m_result->original, m_result->rescheduled
                                                      ? std::optional(m_result->rescheduled->profile)
@@ -390,6 +426,7 @@ void MainWindow::showResult(job::DisplayScene scene) {
     }
     m_view3d->showScene(m_scene);
     m_view3d->setToolRadius(m_result->toolRadius.value_or(0.0));
+    m_view3d->setTimeline(*m_result);
     const auto records = static_cast<int>(m_result->pass.count);
     m_toolSlider->setRange(0, std::max(records - 1, 0));
     m_toolSlider->setEnabled(records > 0);
@@ -409,9 +446,15 @@ void MainWindow::showLayers() {
         return;
     }
     const std::vector<report::LayerMotion> motion = job::layerMotionOf(*m_result);
+    const std::vector<report::LayerMotion> before = std::exchange(m_layerMotion, motion);
+    const bool compare = m_threadIsReapply && before.size() == motion.size();
     m_layers->setRowCount(static_cast<int>(motion.size()));
     for (int row = 0; row < m_layers->rowCount(); ++row) {
-        showLayerRow(row, motion[static_cast<std::size_t>(row)]);
+        const auto index = static_cast<std::size_t>(row);
+        showLayerRow(row, motion[index]);
+        if (compare) {
+            explainLayerChange(row, motion[index], before[index]);
+        }
     }
     m_layers->resizeColumnsToContents();
 }
@@ -429,10 +472,48 @@ void MainWindow::showLayerRow(int row, const report::LayerMotion& m) {
     m_layers->setItem(row, kReversalsBefore, numberItem(m.reversalsBefore, 0));
     m_layers->setItem(row, kReversalsAfter, numberItem(m.reversalsAfter, 0));
     m_layers->setItem(row, kPeakABefore, numberItem(units::radToDeg(m.peakAccelerationBefore), 0));
-    m_layers->setItem(row, kPeakAAfter, numberItem(units::radToDeg(m.peakAccelerationAfter), 0));
+    auto* after = numberItem(units::radToDeg(m.peakAccelerationAfter), 0);
+    // Before -> after at a glance: lower is what the re-scheduling is for.
+    after->setForeground(m.peakAccelerationAfter <= m.peakAccelerationBefore ? kBetter : kWorse);
+    m_layers->setItem(row, kPeakAAfter, after);
     m_layers->setItem(row, kClearanceColumn, numberItem(units::radToDeg(layer.minClearance), 3));
     m_layers->setItem(row, kPeakThetaColumn,
                       numberItem(units::radToDeg(layer.peakSecondDerivative), 4));
+}
+
+void MainWindow::explainLayerChange(int row, const report::LayerMotion& now,
+                                    const report::LayerMotion& before) {
+    const double ratio = now.peakAccelerationAfter / std::max(before.peakAccelerationAfter, 1e-12);
+    if (std::abs(ratio - 1.0) < kNoticeableChange) {
+        return;
+    }
+    const auto layer = static_cast<std::size_t>(row);
+    QString why;
+    if (overrideOf(layer) != nullptr) {
+        why = tr("This layer's edit changed its peak A acceleration");
+    } else {
+        const bool previousEdited = layer > 0 && overrideOf(layer - 1) != nullptr;
+        const bool nextEdited = overrideOf(layer + 1) != nullptr;
+        why = nextEdited ? tr("Changed although not edited: layer %1's edit moved the junction "
+                              "this layer ends at")
+                               .arg(row + 1)
+              : previousEdited ? tr("Changed although not edited: layer %1's edit moved the "
+                                    "junction this layer starts at")
+                                     .arg(row - 1)
+                               : tr("Changed with the last edit of another layer");
+    }
+    QTableWidgetItem* item = m_layers->item(row, kPeakAAfter);
+    const QString change =
+        ratio >= 1.0
+            ? tr("%1× the peak before the last edit").arg(QLocale().toString(ratio, 'f', 1))
+            : tr("%1 % lower than before the last edit")
+                  .arg(QLocale().toString(100.0 * (1.0 - ratio), 'f', 0));
+    item->setToolTip(why + QStringLiteral(": ") + change);
+    item->setText(item->text() + (ratio >= 1.0 ? QStringLiteral(" ▲") : QStringLiteral(" ▼")));
+    if (ratio >= kMuchWorse) { // an edit that made a layer much worse must not go unseen
+        item->setBackground(QColor(255, 205, 205));
+        item->setForeground(QColor(150, 0, 0));
+    }
 }
 
 void MainWindow::showSelectedLayer(int layer) {
@@ -440,6 +521,7 @@ void MainWindow::showSelectedLayer(int layer) {
     if (!m_result || !m_result->rescheduled || layer < 0 ||
         static_cast<std::size_t>(layer) >= m_result->rescheduled->schedule.layers.size()) {
         m_editor->clearLayer();
+        m_plots->setHighlightedSpan(std::nullopt, {});
         m_layerSettings->clearLayer();
         m_section->clearLayer();
         return;
@@ -449,7 +531,11 @@ void MainWindow::showSelectedLayer(int layer) {
     const scheduling::ScheduleParameters parameters =
         change != nullptr ? scheduling::layerParameters(m_spec.parameters, *change)
                           : m_spec.parameters;
-    m_editor->setLayer(m_result->rescheduled->schedule.layers[index], parameters);
+    const auto& scheduled = m_result->rescheduled->schedule.layers[index];
+    m_editor->setLayer(scheduled, parameters);
+    m_plots->setHighlightedSpan(
+        layerTimeSpan(m_result->rescheduled->profile, scheduled.first, scheduled.last),
+        tr("layer %1").arg(layer));
     m_layerSettings->setLayer(layer, change, m_spec.parameters);
     m_section->setLayer(m_scene, layer);
     if (editsPending()) {

@@ -129,6 +129,11 @@ class MainWindow final : public QMainWindow {
     void showResult(job::DisplayScene scene);
     void showLayers();
     void showLayerRow(int row, const report::LayerMotion& motion);
+    void rerunWithToolbarInputs();
+    // After a re-run for an edit: marks the peak-A cell of a layer whose figure moved, saying
+    // why (its own edit, or a neighbour's edit moving the junction they share).
+    void explainLayerChange(int row, const report::LayerMotion& now,
+                            const report::LayerMotion& before);
     void showSelectedLayer(int layer);
     void requestReapply();
     void reapplyEdits();
@@ -177,6 +182,7 @@ class MainWindow final : public QMainWindow {
     QUndoStack m_undo;
     JobThread* m_thread = nullptr;
     bool m_threadIsReapply = false;
+    std::vector<report::LayerMotion> m_layerMotion; // the layer table's figures, for the next run
     bool m_reapplyQueued = false;
     int m_keepSelection = -1;
     QTableWidget* m_layers = nullptr;

@@ -133,12 +133,17 @@ void MainWindow::buildViewMenu() {
     });
     view->addSeparator();
     auto* colouring = new QActionGroup(this);
-    const std::pair<QString, ToolpathView::Colouring> colourings[] = {
-        {tr("Colour: &layer"), ToolpathView::Colouring::Layer},
-        {tr("Colour: &A speed"), ToolpathView::Colouring::ASpeed},
-        {tr("Colour: A speed (&original)"), ToolpathView::Colouring::OriginalASpeed}};
-    for (const auto& [text, mode] : colourings) {
+    // The 3D view's bar shows shorter names (icon texts) than the menu, so that every action
+    // fits it in a 1366 px wide window; "Colour:" is said once, in front of the colourings.
+    m_view3dBar->addWidget(new QLabel(tr(" Colour: "), m_view3dBar));
+    const std::tuple<QString, QString, ToolpathView::Colouring> colourings[] = {
+        {tr("Colour: &layer"), tr("layer"), ToolpathView::Colouring::Layer},
+        {tr("Colour: &A speed"), tr("A speed"), ToolpathView::Colouring::ASpeed},
+        {tr("Colour: A speed (&original)"), tr("A speed (original)"),
+         ToolpathView::Colouring::OriginalASpeed}};
+    for (const auto& [text, barText, mode] : colourings) {
         QAction* action = view->addAction(text);
+        action->setIconText(barText);
         action->setCheckable(true);
         action->setChecked(mode == ToolpathView::Colouring::Layer);
         colouring->addAction(action);
@@ -155,20 +160,24 @@ void MainWindow::buildViewMenu() {
     for (const auto& [text, setter] : toggles) {
         QAction* action = view->addAction(text);
         action->setCheckable(true);
-        action->setChecked(true);
+        // As the view starts: the original axes only on demand (they hide the blade).
+        action->setChecked(setter != &ToolpathView::setOriginalAxesVisible);
         m_view3dBar->addAction(action);
         connect(action, &QAction::toggled, m_view3d, setter);
     }
     m_view3dBar->addSeparator();
     view->addSeparator();
-    const std::tuple<QString, QString, void (ToolpathView::*)()> presets[] = {
-        {tr("&Front"), tr("1"), &ToolpathView::viewFront},
-        {tr("&Top"), tr("2"), &ToolpathView::viewTop},
-        {tr("Along the rotary a&xis"), tr("3"), &ToolpathView::viewSide},
-        {tr("&Isometric"), tr("4"), &ToolpathView::viewIsometric},
-        {tr("&Fit"), tr("F"), &ToolpathView::fitView}};
-    for (const auto& [text, key, slot] : presets) {
-        QAction* action = menuAction(view, text, QKeySequence(key), tr("3D view preset"));
+    const std::tuple<QString, QString, QString, void (ToolpathView::*)()> presets[] = {
+        {tr("&Front"), tr("Front"), tr("1"), &ToolpathView::viewFront},
+        {tr("&Top"), tr("Top"), tr("2"), &ToolpathView::viewTop},
+        {tr("Along the rotary a&xis"), tr("Along X"), tr("3"), &ToolpathView::viewSide},
+        {tr("&Isometric"), tr("Isometric"), tr("4"), &ToolpathView::viewIsometric},
+        {tr("&Fit"), tr("Fit"), tr("F"), &ToolpathView::fitView}};
+    for (const auto& [text, barText, key, slot] : presets) {
+        QAction* action =
+            menuAction(view, text, QKeySequence(key),
+                       tr("3D view preset: %1").arg(QString(text).remove(QLatin1Char('&'))));
+        action->setIconText(barText);
         m_view3dBar->addAction(action);
         connect(action, &QAction::triggered, m_view3d, slot);
     }
@@ -214,6 +223,14 @@ void MainWindow::buildToolBar() {
     m_toolRadius->setToolTip(tr("Ball radius R; 'from file' uses the radius the CL file states"));
     connect(m_toolRadius, &QDoubleSpinBox::valueChanged, this,
             [](double value) { QSettings().setValue(kToolRadiusKey, value); });
+    // Once typed (not at every keystroke), a new radius re-runs the job on screen.
+    connect(m_toolRadius, &QDoubleSpinBox::editingFinished, this, [this] {
+        const std::optional<double> shown =
+            m_toolRadius->value() > 0.0 ? std::optional(m_toolRadius->value()) : std::nullopt;
+        if (m_result && shown != m_spec.toolRadius) {
+            rerunWithToolbarInputs();
+        }
+    });
     bar->addWidget(m_toolRadius);
     m_machineLabel = new QLabel(tr(" Machine: built-in"), bar);
     bar->addWidget(m_machineLabel);
@@ -518,7 +535,22 @@ void MainWindow::openMachineDialog() {
                                                       tr("Machine files (*.json)"));
     if (!path.isEmpty()) {
         setMachineFile(path);
+        rerunWithToolbarInputs();
     }
+}
+
+// The job on screen again with the tool radius and machine the tool bar now shows, so a changed
+// input is seen at once rather than with the next program. Layer edits are kept.
+void MainWindow::rerunWithToolbarInputs() {
+    if (!m_result || m_thread != nullptr) {
+        return;
+    }
+    job::JobSpec spec = m_spec;
+    spec.toolRadius =
+        m_toolRadius->value() > 0.0 ? std::optional(m_toolRadius->value()) : std::nullopt;
+    spec.machineFile = m_machinePath.toStdString();
+    statusBar()->showMessage(tr("Re-running with the new tool radius or machine…"));
+    startJob(std::move(spec), false);
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {

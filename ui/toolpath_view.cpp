@@ -1,13 +1,23 @@
 #include "ui/toolpath_view.h"
 
+#include "core/base/units.h"
+#include "core/job/job.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QLinearGradient>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QSpinBox>
 #include <QWheelEvent>
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
 #include <vtkGenericRenderWindowInteractor.h>
@@ -42,9 +52,11 @@ struct Drawn {
 struct ToolpathView::Scene {
     vtkNew<vtkRenderWindow> window;
     vtkNew<vtkRenderer> renderer;
-    Drawn surface, path, originalGlyphs, rescheduledGlyphs, section;
+    // selectedPath: the selected layer again, thicker, over the path.
+    Drawn surface, path, selectedPath, originalGlyphs, rescheduledGlyphs, section;
     vtkNew<vtkGenericRenderWindowInteractor> interactor;
     vtkNew<vtkInteractorStyleTrackballCamera> style;
+    vtkNew<vtkCellPicker> picker;
     vtkNew<vtkSphereSource> ball;
     vtkNew<vtkPolyDataMapper> ballMapper;
     vtkNew<vtkActor> ballActor;
@@ -59,16 +71,50 @@ struct ToolpathView::Scene {
 
 namespace {
 
-constexpr unsigned char kSelectedRgb[3] = {255, 60, 40};
+using Swatch = ToolpathView::LegendEntry::Swatch;
 
-QColor layerColour(std::size_t layer) {
-    return QColor::fromHsv(static_cast<int>((layer * 47) % 300), 160, 220);
+// The colours of the frame, chosen so that no two meanings share one: the layer palette keeps
+// away from the axes' cyan and orange, the section's yellow, the highlight's pink and the tool's
+// silver; the speed map runs from blue through magenta to red, away from all but the pink,
+// which it never meets (by speed, the selected layer is drawn thicker, not pink).
+constexpr QRgb kRescheduledAxisRgb = qRgb(77, 230, 255);
+constexpr QRgb kOriginalAxisRgb = qRgb(255, 153, 51);
+constexpr QRgb kSelectedRgb = qRgb(255, 60, 190);
+constexpr QRgb kSectionRgb = qRgb(255, 235, 51);
+constexpr QRgb kToolRgb = qRgb(214, 217, 224);
+constexpr QRgb kSurfaceRgb = qRgb(158, 168, 184);
+constexpr std::array<QRgb, 3> kLayerPalette = {qRgb(70, 190, 90), qRgb(70, 110, 235),
+                                               qRgb(160, 100, 235)};
+constexpr QRgb kBackgroundRgb = qRgb(31, 31, 36);
+constexpr QRgb kLegendBackgroundRgb = qRgb(40, 40, 46);
+constexpr QRgb kTextRgb = qRgb(230, 230, 230);
+
+// A press and release closer than this (widget pixels) is a click, not a drag.
+constexpr double kClickSlopPx = 3.0;
+// A picked point of the blade surface selects the path point drawn within this distance.
+constexpr double kPickRadiusPx = 10.0;
+
+void setColour(vtkProperty* property, QRgb rgb) {
+    property->SetColor(qRed(rgb) / 255.0, qGreen(rgb) / 255.0, qBlue(rgb) / 255.0);
 }
 
-// Blue (slow) through green and yellow to red (fast).
+// Neighbouring layers differ in colour; three colours are enough for that and leave the
+// other hues to the axes, the section and the highlight.
+QColor layerColour(std::size_t layer) {
+    return QColor(kLayerPalette[layer % kLayerPalette.size()]);
+}
+
+// Grey with a hint of the layer's colour: the layers that are not selected stay visible as
+// texture on the blade without competing with the selected one.
+QColor dimmedLayerColour(std::size_t layer) {
+    return QColor::fromHsv(layerColour(layer).hsvHue(), 45, 125);
+}
+
+// Blue (slow) through magenta to red (fast).
 QColor speedColour(double fraction) {
     const double clamped = std::clamp(fraction, 0.0, 1.0);
-    return QColor::fromHsvF(static_cast<float>((1.0 - clamped) * 240.0 / 360.0), 0.85F, 0.95F);
+    const double hue = std::fmod((240.0 + 120.0 * clamped) / 360.0, 1.0);
+    return QColor::fromHsvF(static_cast<float>(hue), 0.85F, 0.95F);
 }
 
 void appendRgb(vtkUnsignedCharArray* colours, const QColor& colour) {
@@ -76,6 +122,13 @@ void appendRgb(vtkUnsignedCharArray* colours, const QColor& colour) {
                                   static_cast<unsigned char>(colour.green()),
                                   static_cast<unsigned char>(colour.blue())};
     colours->InsertNextTypedTuple(rgb);
+}
+
+// "-152.3" with a typographic minus, and no "-0.0" for a value that rounds to zero.
+QString signedNumber(double value, int decimals) {
+    const double half = 0.5 * std::pow(10.0, -decimals);
+    const double shown = std::abs(value) < half ? 0.0 : value;
+    return QString::number(shown, 'f', decimals).replace(QLatin1Char('-'), QChar(0x2212));
 }
 
 vtkNew<vtkPoints> pointsOf(const std::vector<Vec3>& positions) {
@@ -108,30 +161,49 @@ void fillSurface(vtkPolyData* data, const job::DisplayScene& scene) {
     data->Modified();
 }
 
-// One polyline per layer, joined to the first point of the next layer so the path is unbroken.
+// The drawn points of layer k as one polyline, joined to the first point of the next layer so
+// the path is unbroken.
+void appendLayerLine(vtkCellArray* lines, const job::DisplayScene& scene, std::size_t k) {
+    const job::DisplayLayer& layer = scene.layers[k];
+    const std::size_t end = k + 1 < scene.layers.size() ? layer.lastPoint + 1 : layer.lastPoint;
+    lines->InsertNextCell(static_cast<int>(end - layer.firstPoint + 1));
+    for (std::size_t i = layer.firstPoint; i <= end; ++i) {
+        lines->InsertCellPoint(static_cast<vtkIdType>(i));
+    }
+}
+
 void fillPath(vtkPolyData* data, const job::DisplayScene& scene) {
     vtkNew<vtkCellArray> lines;
     for (std::size_t k = 0; k < scene.layers.size(); ++k) {
-        const job::DisplayLayer& layer = scene.layers[k];
-        const std::size_t end = k + 1 < scene.layers.size() ? layer.lastPoint + 1 : layer.lastPoint;
-        lines->InsertNextCell(static_cast<int>(end - layer.firstPoint + 1));
-        for (std::size_t i = layer.firstPoint; i <= end; ++i) {
-            lines->InsertCellPoint(static_cast<vtkIdType>(i));
-        }
+        appendLayerLine(lines, scene, k);
     }
     data->SetPoints(pointsOf(scene.tips));
     data->SetLines(lines);
     data->Modified();
 }
 
+// Drawn points that carry a tool axis: the first drawn point at or after every stride-th
+// record, so that at most ceil(records / stride) axes are drawn whatever the decimation.
+std::vector<std::size_t> axisPoints(const job::DisplayScene& scene, std::size_t stride) {
+    std::vector<std::size_t> points;
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < scene.record.size(); ++i) {
+        if (scene.record[i] >= next) {
+            points.push_back(i);
+            next = scene.record[i] + stride;
+        }
+    }
+    return points;
+}
+
 // Tool axes as lines from the ball centre: both orientations turn about the same centre, so
 // the two sets show the re-scheduled rotation directly.
 void fillGlyphs(vtkPolyData* data, const job::DisplayScene& scene, const std::vector<Vec3>& axes,
-                double length) {
+                const std::vector<std::size_t>& at, double length) {
     vtkNew<vtkPoints> points;
     vtkNew<vtkCellArray> lines;
     if (axes.size() == scene.centres.size()) {
-        for (const std::size_t i : scene.glyphPoints) {
+        for (const std::size_t i : at) {
             const Vec3 start = scene.centres[i];
             const Vec3 end = start + length * axes[i];
             const vtkIdType ids[2] = {points->InsertNextPoint(start.data()),
@@ -161,41 +233,97 @@ double speedScaleOf(const job::DisplayScene& scene) {
     return scale;
 }
 
+// The time of pass record `record` on the profile's time axis: that of the sample covering it
+// (a record merged into the sample before it moved nowhere, so it shares that time).
+double secondsAt(const analysis::AxisProfile& profile, std::size_t record) {
+    const auto& samples = profile.sampleRecord;
+    const auto after = std::upper_bound(samples.begin(), samples.end(), record);
+    const auto index =
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - samples.begin() - 1, 0));
+    return profile.time[index];
+}
+
+// The sample beside a legend entry, in `box` (the swatch column of its first text line).
+void paintSwatch(QPainter& painter, const ToolpathView::LegendEntry& entry, const QRectF& box) {
+    const double y = box.center().y();
+    const auto line = [&](const QColor& colour, double width, double from, double to) {
+        painter.setPen(QPen(colour, width, Qt::SolidLine, Qt::FlatCap));
+        painter.drawLine(QPointF(box.left() + from * box.width(), y),
+                         QPointF(box.left() + to * box.width(), y));
+    };
+    switch (entry.swatch) {
+    case Swatch::Line:
+        line(entry.colour, 2.0, 0.0, 1.0);
+        break;
+    case Swatch::ThickLine:
+        line(entry.colour, 5.0, 0.0, 1.0);
+        break;
+    case Swatch::ThickSpeed:
+        for (int step = 0; step < 4; ++step) {
+            line(speedColour(step / 3.0), 5.0, step / 4.0, (step + 1) / 4.0);
+        }
+        break;
+    case Swatch::Palette:
+    case Swatch::DimmedPalette:
+        for (std::size_t k = 0; k < kLayerPalette.size(); ++k) {
+            const double third = 1.0 / static_cast<double>(kLayerPalette.size());
+            const double from = static_cast<double>(k) * third;
+            line(entry.swatch == Swatch::Palette ? layerColour(k) : dimmedLayerColour(k), 2.0, from,
+                 from + third);
+        }
+        break;
+    case Swatch::Area:
+        painter.fillRect(QRectF(box.left(), y - 5.0, box.width(), 10.0), entry.colour);
+        break;
+    case Swatch::ColourBar:
+        break; // drawn below its title, across the band
+    }
+}
+
 } // namespace
 
 ToolpathView::ToolpathView(QWidget* parent) : QWidget(parent), m_vtk(std::make_unique<Scene>()) {
     setMinimumSize(320, 240);
     setToolTip(tr("Blade and toolpath: left drag rotates, right drag or wheel zooms, middle "
-                  "drag pans. Tool axes from the ball centre: original orange, re-scheduled "
-                  "cyan; the selected layer's blade section in yellow"));
+                  "drag pans; a click on the toolpath selects its layer and moves the tool "
+                  "there. The legend on the right names every colour"));
     Scene& vtk = *m_vtk;
     vtk.window->SetOffScreenRendering(1);
     // VTK asks for 8x multisampling by default; on Mesa's software renderer (Xvfb, remote
     // desktops) that costs ~35 ms of an 800x600 frame against ~5 ms without (bench_view).
     vtk.window->SetMultiSamples(0);
     vtk.window->AddRenderer(vtk.renderer);
-    vtk.renderer->SetBackground(0.12, 0.12, 0.14);
+    vtk.renderer->SetBackground(qRed(kBackgroundRgb) / 255.0, qGreen(kBackgroundRgb) / 255.0,
+                                qBlue(kBackgroundRgb) / 255.0);
 
-    vtk.surface.actor->GetProperty()->SetColor(0.62, 0.66, 0.72);
+    setColour(vtk.surface.actor->GetProperty(), kSurfaceRgb);
     vtk.surface.actor->GetProperty()->SetSpecular(0.2);
     // The tips lie on the ball, just off the surface: push the surface back in depth.
     vtk.surface.mapper->SetResolveCoincidentTopologyToPolygonOffset();
     vtk.surface.mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(2.0, 4.0);
     vtk.section.mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-2.0, -4.0);
+    // The selected layer lies on the path it repeats: drawn in front of it.
+    vtk.selectedPath.mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-1.0, -2.0);
     vtk.surface.mapper->ScalarVisibilityOff();
     vtk.path.actor->GetProperty()->SetLineWidth(2.0);
-    vtk.path.actor->GetProperty()->LightingOff();
-    vtk.path.mapper->SetColorModeToDirectScalars();
-    vtk.originalGlyphs.actor->GetProperty()->SetColor(1.0, 0.6, 0.2);
-    vtk.rescheduledGlyphs.actor->GetProperty()->SetColor(0.3, 0.9, 1.0);
-    vtk.section.actor->GetProperty()->SetColor(1.0, 0.92, 0.2);
-    vtk.section.actor->GetProperty()->SetLineWidth(4.0);
+    vtk.selectedPath.actor->GetProperty()->SetLineWidth(5.0);
+    setColour(vtk.selectedPath.actor->GetProperty(), kSelectedRgb);
+    for (Drawn* drawn : {&vtk.path, &vtk.selectedPath}) {
+        drawn->actor->GetProperty()->LightingOff();
+        drawn->mapper->SetColorModeToDirectScalars();
+    }
+    setColour(vtk.originalGlyphs.actor->GetProperty(), kOriginalAxisRgb);
+    setColour(vtk.rescheduledGlyphs.actor->GetProperty(), kRescheduledAxisRgb);
+    setColour(vtk.section.actor->GetProperty(), kSectionRgb);
+    vtk.section.actor->GetProperty()->SetLineWidth(3.0);
     for (Drawn* drawn : {&vtk.originalGlyphs, &vtk.rescheduledGlyphs, &vtk.section}) {
         drawn->actor->GetProperty()->LightingOff();
         drawn->mapper->ScalarVisibilityOff();
     }
-    for (Drawn* drawn :
-         {&vtk.surface, &vtk.path, &vtk.originalGlyphs, &vtk.rescheduledGlyphs, &vtk.section}) {
+    vtk.originalGlyphs.actor->VisibilityOff();
+    vtk.selectedPath.actor->VisibilityOff();
+    for (Drawn* drawn : {&vtk.surface, &vtk.path, &vtk.selectedPath, &vtk.originalGlyphs,
+                         &vtk.rescheduledGlyphs, &vtk.section}) {
         vtk.renderer->AddActor(drawn->actor);
     }
 
@@ -203,10 +331,11 @@ ToolpathView::ToolpathView(QWidget* parent) : QWidget(parent), m_vtk(std::make_u
     vtk.ball->SetPhiResolution(16);
     vtk.ballMapper->SetInputConnection(vtk.ball->GetOutputPort());
     vtk.ballActor->SetMapper(vtk.ballMapper);
-    vtk.ballActor->GetProperty()->SetColor(0.9, 0.75, 0.3);
+    setColour(vtk.ballActor->GetProperty(), kToolRgb);
+    vtk.ballActor->GetProperty()->SetSpecular(0.4);
     vtk.shankMapper->SetInputConnection(vtk.shank->GetOutputPort());
     vtk.shankActor->SetMapper(vtk.shankMapper);
-    vtk.shankActor->GetProperty()->SetColor(0.9, 0.75, 0.3);
+    setColour(vtk.shankActor->GetProperty(), kToolRgb);
     vtk.shankActor->GetProperty()->SetLineWidth(6.0);
     vtk.ballActor->VisibilityOff();
     vtk.shankActor->VisibilityOff();
@@ -216,9 +345,84 @@ ToolpathView::ToolpathView(QWidget* parent) : QWidget(parent), m_vtk(std::make_u
     vtk.interactor->SetInteractorStyle(vtk.style);
     // The widget repaints on every event; VTK must not try to render into a window of its own.
     vtk.interactor->EnableRenderOff();
+
+    // Picking sees the blade too, so that a click finds the path point in front, not one
+    // behind the blade that happens to lie nearer the ray.
+    vtk.picker->PickFromListOn();
+    vtk.picker->AddPickList(vtk.surface.actor);
+    vtk.picker->AddPickList(vtk.path.actor);
+    vtk.picker->AddPickList(vtk.selectedPath.actor);
+    vtk.picker->SetTolerance(0.004);
+
+    m_strip = buildControlStrip();
+    placeControlStrip();
 }
 
 ToolpathView::~ToolpathView() = default;
+
+QWidget* ToolpathView::buildControlStrip() {
+    auto* strip = new QWidget(this);
+    auto* layout = new QHBoxLayout(strip);
+    layout->setContentsMargins(6, 3, 6, 3);
+    auto* label = new QLabel(tr("Axes shown"), strip);
+    m_densityBox = new QSpinBox(strip);
+    m_densityBox->setRange(1, 20'000);
+    m_densityBox->setSingleStep(50);
+    m_densityBox->setValue(m_maxAxes);
+    m_densityBox->setToolTip(tr("At most this many tool axes of each set are drawn, evenly "
+                                "along the pass"));
+    label->setBuddy(m_densityBox);
+    connect(m_densityBox, &QSpinBox::valueChanged, this, &ToolpathView::setAxisDensity);
+    m_densityHint = new QLabel(strip);
+    auto* pickHint = new QLabel(tr("Click the toolpath to select a point"), strip);
+    pickHint->setEnabled(false); // greyed: a hint, not a value
+    layout->addWidget(label);
+    layout->addWidget(m_densityBox);
+    layout->addWidget(m_densityHint);
+    layout->addStretch(1);
+    layout->addWidget(pickHint);
+    return strip;
+}
+
+// The strip is placed by hand under the frame: the frame is painted, not laid out, and a
+// hidden view (the tests render without showing it) must have the same frame size.
+void ToolpathView::placeControlStrip() {
+    const int stripHeight = m_strip->sizeHint().height();
+    m_strip->setGeometry(0, std::max(height() - stripHeight, 0), width(), stripHeight);
+}
+
+void ToolpathView::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    placeControlStrip();
+}
+
+QSize ToolpathView::renderSize() const {
+    return {std::max(width(), 16), std::max(height() - m_strip->sizeHint().height(), 16)};
+}
+
+// Wide enough for the usual entries on one or two lines (longer ones, a CAD file's name,
+// wrap), and never more than 2/5 of the frame: the part keeps the rest.
+int ToolpathView::legendWidth(int frameWidth) const {
+    const int text = fontMetrics().horizontalAdvance(tr("re-scheduled tool axes"));
+    return std::clamp(text + 52, 150, std::max(frameWidth * 2 / 5, 16));
+}
+
+QRect ToolpathView::sceneArea() const {
+    const QSize size = renderSize();
+    return {0, 0, size.width() - legendWidth(size.width()), size.height()};
+}
+
+// VTK renders the frame; its renderer keeps clear of the legend band, so fitting the camera
+// fits the part beside the legend.
+void ToolpathView::syncViewport() {
+    const QSize size = renderSize();
+    Scene& vtk = *m_vtk;
+    vtk.window->SetSize(size.width(), size.height());
+    vtk.interactor->SetSize(size.width(), size.height());
+    const double sceneFraction =
+        static_cast<double>(sceneArea().width()) / static_cast<double>(size.width());
+    vtk.renderer->SetViewport(0.0, 0.0, sceneFraction, 1.0);
+}
 
 void ToolpathView::showScene(const job::DisplayScene& scene) {
     Scene& vtk = *m_vtk;
@@ -230,22 +434,25 @@ void ToolpathView::showScene(const job::DisplayScene& scene) {
     vtk.speedScale = speedScaleOf(scene);
     fillSurface(vtk.surface.data, scene);
     fillPath(vtk.path.data, scene);
-    const double glyphLength = scene.toolRadius > 0.0 ? 1.5 * scene.toolRadius : 10.0;
-    fillGlyphs(vtk.originalGlyphs.data, scene, scene.originalAxes, glyphLength);
-    fillGlyphs(vtk.rescheduledGlyphs.data, scene, scene.rescheduledAxes, glyphLength);
+    vtk.selectedPath.data->SetPoints(vtk.path.data->GetPoints());
+    updateGlyphs();
     vtk.hasData = !scene.empty();
     vtk.ballActor->VisibilityOff();
     vtk.shankActor->VisibilityOff();
+    m_toolRecord.reset();
     if (m_selected >= static_cast<int>(scene.layers.size())) {
         m_selected = -1;
     }
     updatePathColours();
+    updateSelectedPath();
     updateSection();
+    updateDensityHint();
     if (first) {
         resetView();
     } else {
         vtk.renderer->ResetCameraClippingRange();
     }
+    emitReadout();
     update();
 }
 
@@ -266,16 +473,50 @@ void ToolpathView::setSchedule(const scheduling::ScheduleResult& schedule) {
     showScene(job::buildDisplayScene(input));
 }
 
+void ToolpathView::setTimeline(const job::JobResult& result) {
+    m_timeline = {};
+    const std::size_t first = result.pass.first, count = result.pass.count;
+    const auto& records = result.program.path().records;
+    const bool rescheduled = result.rescheduled.has_value();
+    const auto& axes = rescheduled ? result.rescheduled->axes : result.axes;
+    const auto& profile = rescheduled ? result.rescheduled->profile : result.original;
+    if (records.size() >= first + count && axes.size() == count) {
+        const bool timed =
+            !profile.sampleRecord.empty() && profile.time.size() == profile.sampleRecord.size();
+        for (std::size_t i = 0; i < count; ++i) {
+            m_timeline.line.push_back(records[first + i].line);
+            m_timeline.aDegrees.push_back(units::radToDeg(axes[i].a));
+            if (timed) {
+                m_timeline.seconds.push_back(secondsAt(profile, i));
+            }
+        }
+    }
+    emitReadout();
+}
+
 void ToolpathView::setSelectedLayer(int layer) {
-    m_selected = layer;
+    m_selected =
+        layer >= 0 && static_cast<std::size_t>(layer) < m_vtk->scene.layers.size() ? layer : -1;
     updatePathColours();
+    updateSelectedPath();
     updateSection();
     update();
+}
+
+int ToolpathView::layerOfRecord(std::size_t passIndex) const {
+    const auto& layers = m_vtk->scene.layers;
+    for (std::size_t k = 0; k < layers.size(); ++k) {
+        if (passIndex >= layers[k].firstRecord && passIndex <= layers[k].lastRecord) {
+            return static_cast<int>(k);
+        }
+    }
+    return -1;
 }
 
 void ToolpathView::setColouring(Colouring colouring) {
     m_colouring = colouring;
     updatePathColours();
+    updateSelectedPath();
     update();
 }
 
@@ -284,14 +525,68 @@ void ToolpathView::setOriginalAxesVisible(bool visible) {
     update();
 }
 
+bool ToolpathView::originalAxesVisible() const {
+    return m_vtk->originalGlyphs.actor->GetVisibility() != 0;
+}
+
 void ToolpathView::setRescheduledAxesVisible(bool visible) {
     m_vtk->rescheduledGlyphs.actor->SetVisibility(visible);
     update();
 }
 
+bool ToolpathView::rescheduledAxesVisible() const {
+    return m_vtk->rescheduledGlyphs.actor->GetVisibility() != 0;
+}
+
 void ToolpathView::setSurfaceVisible(bool visible) {
     m_vtk->surface.actor->SetVisibility(visible);
     update();
+}
+
+void ToolpathView::setAxisDensity(int maxAxes) {
+    m_maxAxes = std::max(maxAxes, 1);
+    {
+        const QSignalBlocker block(m_densityBox);
+        m_densityBox->setValue(m_maxAxes);
+    }
+    updateGlyphs();
+    updateDensityHint();
+    update();
+}
+
+std::size_t ToolpathView::axisStride() const {
+    const job::DisplayScene& scene = m_vtk->scene;
+    const std::size_t records =
+        std::max(scene.passRecords, scene.record.empty() ? 0 : scene.record.back() + 1);
+    const auto cap = static_cast<std::size_t>(m_maxAxes);
+    return std::max<std::size_t>((records + cap - 1) / cap, 1);
+}
+
+std::size_t ToolpathView::drawnAxisCount() const {
+    std::size_t count = 0;
+    for (const Drawn* glyphs : {&m_vtk->originalGlyphs, &m_vtk->rescheduledGlyphs}) {
+        if (glyphs->actor->GetVisibility() != 0) {
+            count += static_cast<std::size_t>(glyphs->data->GetNumberOfCells());
+        }
+    }
+    return count;
+}
+
+void ToolpathView::updateGlyphs() {
+    Scene& vtk = *m_vtk;
+    const job::DisplayScene& scene = vtk.scene;
+    const std::vector<std::size_t> at = axisPoints(scene, axisStride());
+    // One ball radius: enough to read the direction, short enough that a few hundred axes
+    // leave the blade visible between them.
+    const double length = scene.toolRadius > 0.0 ? scene.toolRadius : 10.0;
+    fillGlyphs(vtk.originalGlyphs.data, scene, scene.originalAxes, at, length);
+    fillGlyphs(vtk.rescheduledGlyphs.data, scene, scene.rescheduledAxes, at, length);
+}
+
+void ToolpathView::updateDensityHint() {
+    const std::size_t stride = axisStride();
+    m_densityHint->setText(stride > 1 ? tr("1 in %1 points of the pass").arg(stride)
+                                      : tr("at every point of the pass"));
 }
 
 void ToolpathView::updatePathColours() {
@@ -311,23 +606,43 @@ void ToolpathView::updatePathColours() {
     colours->Allocate(static_cast<vtkIdType>(3 * scene.tips.size()));
     const double scale = vtk.speedScale > 0.0 ? vtk.speedScale : 1.0;
     for (std::size_t i = 0; i < scene.tips.size(); ++i) {
+        const std::size_t layer = scene.layer[i];
         if (speeds != nullptr) {
             appendRgb(colours, speedColour((*speeds)[i] / scale));
-        } else if (static_cast<int>(scene.layer[i]) == m_selected) {
-            colours->InsertNextTypedTuple(kSelectedRgb);
+        } else if (m_selected < 0) {
+            appendRgb(colours, layerColour(layer));
+        } else if (static_cast<int>(layer) == m_selected) {
+            appendRgb(colours, QColor(kSelectedRgb));
         } else {
-            appendRgb(colours, layerColour(scene.layer[i]));
+            appendRgb(colours, dimmedLayerColour(layer));
         }
     }
     vtk.path.data->GetPointData()->SetScalars(colours);
     vtk.path.data->Modified();
+    vtk.selectedPath.data->GetPointData()->SetScalars(colours);
+    vtk.selectedPath.data->Modified();
+}
+
+// By layer, the selected layer is drawn thick in the highlight colour; by speed, thick in its
+// speed colours, so the speeds stay readable there too.
+void ToolpathView::updateSelectedPath() {
+    Scene& vtk = *m_vtk;
+    vtkNew<vtkCellArray> lines;
+    const bool selected = m_selected >= 0;
+    if (selected) {
+        appendLayerLine(lines, vtk.scene, static_cast<std::size_t>(m_selected));
+    }
+    vtk.selectedPath.data->SetLines(lines);
+    vtk.selectedPath.data->Modified();
+    vtk.selectedPath.mapper->SetScalarVisibility(m_colouring != Colouring::Layer);
+    vtk.selectedPath.actor->SetVisibility(selected);
 }
 
 void ToolpathView::updateSection() {
     Scene& vtk = *m_vtk;
     vtkNew<vtkPoints> points;
     vtkNew<vtkCellArray> lines;
-    if (m_selected >= 0 && static_cast<std::size_t>(m_selected) < vtk.scene.layers.size()) {
+    if (m_selected >= 0) {
         for (const cad::Polyline3& piece :
              vtk.scene.layers[static_cast<std::size_t>(m_selected)].section) {
             if (piece.points.size() < 2) {
@@ -352,26 +667,112 @@ void ToolpathView::updateSection() {
     vtk.section.data->Modified();
 }
 
+QColor ToolpathView::pathColourAt(std::size_t point) const {
+    vtkDataArray* scalars = m_vtk->path.data->GetPointData()->GetScalars();
+    auto* colours = vtkUnsignedCharArray::SafeDownCast(scalars);
+    if (colours == nullptr || point >= static_cast<std::size_t>(colours->GetNumberOfTuples())) {
+        return {};
+    }
+    unsigned char rgb[3] = {0, 0, 0};
+    colours->GetTypedTuple(static_cast<vtkIdType>(point), rgb);
+    return {rgb[0], rgb[1], rgb[2]};
+}
+
+QString ToolpathView::colourBarTitle() const {
+    const job::DisplayScene& scene = m_vtk->scene;
+    if (m_colouring == Colouring::Layer || scene.aSpeedOriginal.empty()) {
+        return {};
+    }
+    const bool original =
+        m_colouring == Colouring::OriginalASpeed || scene.aSpeedRescheduled.empty();
+    // The speeds stay rad/s inside; degrees are what the engineer reads everywhere else.
+    return original ? tr("|dA/dt| original (deg/s)") : tr("|dA/dt| re-scheduled (deg/s)");
+}
+
+std::vector<ToolpathView::LegendEntry> ToolpathView::legend() const {
+    const job::DisplayScene& scene = m_vtk->scene;
+    std::vector<LegendEntry> entries;
+    const QString bar = colourBarTitle();
+    if (!bar.isEmpty()) {
+        entries.push_back({bar, speedColour(1.0), Swatch::ColourBar});
+        if (m_selected >= 0) {
+            entries.push_back(
+                {tr("layer %1 (selected)").arg(m_selected), QColor(), Swatch::ThickSpeed});
+        }
+    } else if (m_selected >= 0) {
+        entries.push_back(
+            {tr("layer %1 (selected)").arg(m_selected), QColor(kSelectedRgb), Swatch::ThickLine});
+        entries.push_back({tr("other layers"), dimmedLayerColour(0), Swatch::DimmedPalette});
+    } else {
+        entries.push_back({tr("toolpath, layers in turn"), layerColour(0), Swatch::Palette});
+    }
+    if (m_selected >= 0 && !scene.layers[static_cast<std::size_t>(m_selected)].section.empty()) {
+        entries.push_back(
+            {tr("blade section at layer %1 (x = %2 mm)")
+                 .arg(m_selected)
+                 .arg(signedNumber(scene.layers[static_cast<std::size_t>(m_selected)].sectionX, 1)),
+             QColor(kSectionRgb), Swatch::Line});
+    }
+    const std::size_t stride = axisStride();
+    const QString every = stride > 1 ? tr(", 1 in %1").arg(stride) : QString();
+    if (rescheduledAxesVisible() && scene.hasRescheduled()) {
+        entries.push_back(
+            {tr("re-scheduled tool axes%1").arg(every), QColor(kRescheduledAxisRgb), Swatch::Line});
+    }
+    if (originalAxesVisible() && !scene.originalAxes.empty()) {
+        entries.push_back(
+            {tr("original tool axes%1").arg(every), QColor(kOriginalAxisRgb), Swatch::Line});
+    }
+    if (toolVisible()) {
+        entries.push_back({tr("tool: ball R %1 mm and shank").arg(m_vtk->toolRadius, 0, 'g', 4),
+                           QColor(kToolRgb), Swatch::Area});
+    }
+    if (m_vtk->surface.actor->GetVisibility() != 0 && !scene.surface.triangles.empty()) {
+        entries.push_back({tr("blade: %1").arg(QString::fromStdString(scene.surfaceName)),
+                           QColor(kSurfaceRgb), Swatch::Area});
+    }
+    return entries;
+}
+
+QStringList ToolpathView::legendEntries() const {
+    QStringList texts;
+    for (const LegendEntry& entry : legend()) {
+        texts << entry.text;
+    }
+    return texts;
+}
+
 void ToolpathView::setToolRadius(double radius) {
     m_vtk->toolRadius = radius > 0.0 ? radius : 4.0;
+}
+
+std::optional<std::size_t> ToolpathView::drawnPointOf(std::size_t passIndex) const {
+    const job::DisplayScene& scene = m_vtk->scene;
+    if (scene.empty() || passIndex > scene.record.back()) {
+        return std::nullopt;
+    }
+    return static_cast<std::size_t>(
+        std::lower_bound(scene.record.begin(), scene.record.end(), passIndex) -
+        scene.record.begin());
 }
 
 void ToolpathView::showToolAt(std::size_t record) {
     Scene& vtk = *m_vtk;
     const job::DisplayScene& scene = vtk.scene;
-    if (scene.empty() || record > scene.record.back()) {
+    const std::optional<std::size_t> drawn = drawnPointOf(record);
+    if (!drawn) {
         vtk.ballActor->VisibilityOff();
         vtk.shankActor->VisibilityOff();
+        m_toolRecord.reset();
+        emitReadout();
         update();
         return;
     }
-    const auto drawn = static_cast<std::size_t>(
-        std::lower_bound(scene.record.begin(), scene.record.end(), record) - scene.record.begin());
     const Vec3 axis =
-        scene.hasRescheduled() ? scene.rescheduledAxes[drawn] : scene.originalAxes[drawn];
+        scene.hasRescheduled() ? scene.rescheduledAxes[*drawn] : scene.originalAxes[*drawn];
     // The tip is the lowest point of the ball; its centre sits one radius up the tool axis.
     constexpr double kShankLengthMm = 40.0;
-    const Vec3 centre = scene.tips[drawn] + vtk.toolRadius * axis;
+    const Vec3 centre = scene.tips[*drawn] + vtk.toolRadius * axis;
     const Vec3 top = centre + kShankLengthMm * axis;
     vtk.ball->SetCenter(centre.x(), centre.y(), centre.z());
     vtk.ball->SetRadius(vtk.toolRadius);
@@ -380,7 +781,34 @@ void ToolpathView::showToolAt(std::size_t record) {
     vtk.ballActor->VisibilityOn();
     vtk.shankActor->VisibilityOn();
     vtk.renderer->ResetCameraClippingRange();
+    m_toolRecord = record;
+    emitReadout();
     update();
+}
+
+bool ToolpathView::toolVisible() const {
+    return m_vtk->ballActor->GetVisibility() != 0;
+}
+
+QString ToolpathView::positionReadout(std::size_t passIndex) const {
+    const Timeline& t = m_timeline;
+    if (t.line.size() != m_vtk->scene.passRecords || passIndex >= t.line.size()) {
+        return {}; // no timeline, or one of another program
+    }
+    QStringList parts{tr("line %1").arg(t.line[passIndex])};
+    if (passIndex < t.seconds.size()) {
+        parts << tr("t = %1 s").arg(QString::number(t.seconds[passIndex], 'f', 2));
+    }
+    parts << tr("A = %1°").arg(signedNumber(t.aDegrees[passIndex], 1));
+    return parts.join(QStringLiteral(" · "));
+}
+
+QString ToolpathView::positionReadout() const {
+    return m_toolRecord ? positionReadout(*m_toolRecord) : QString();
+}
+
+void ToolpathView::emitReadout() {
+    emit positionReadoutChanged(positionReadout());
 }
 
 void ToolpathView::lookFrom(const double direction[3], const double viewUp[3]) {
@@ -412,6 +840,7 @@ void ToolpathView::viewIsometric() {
 }
 
 void ToolpathView::fitView() {
+    syncViewport(); // the fit depends on the aspect of the area beside the legend
     m_vtk->renderer->ResetCamera();
     m_vtk->renderer->ResetCameraClippingRange();
     update();
@@ -422,9 +851,9 @@ void ToolpathView::resetView() {
 }
 
 QImage ToolpathView::renderFrame() {
-    const int w = std::max(width(), 16);
-    const int h = std::max(height(), 16);
-    m_vtk->window->SetSize(w, h);
+    syncViewport();
+    const QSize size = renderSize();
+    const int w = size.width(), h = size.height();
     m_vtk->window->Render();
     vtkNew<vtkUnsignedCharArray> pixels;
     m_vtk->window->GetRGBACharPixelData(0, 0, w - 1, h - 1, 0, pixels);
@@ -432,45 +861,70 @@ QImage ToolpathView::renderFrame() {
     QImage frame = QImage(reinterpret_cast<const uchar*>(pixels->GetPointer(0)), w, h, 4 * w,
                           QImage::Format_RGBX8888)
                        .mirrored();
-    if (m_vtk->hasData) {
-        paintOverlay(frame);
-    }
+    paintLegend(frame);
     return frame;
 }
 
-// The colour legend (top left) and the W axes as the camera sees them (bottom left), painted
-// by Qt on the frame: cheaper than VTK's annotation actors and identical in screenshots.
-void ToolpathView::paintOverlay(QImage& frame) {
+// The legend band right of the scene: every colour drawn, what it means, the speed colour bar
+// and the W axes as the camera sees them. Painted by Qt: cheaper than VTK's annotation actors
+// and identical in screenshots.
+void ToolpathView::paintLegend(QImage& frame) {
     QPainter painter(&frame);
     painter.setRenderHint(QPainter::Antialiasing);
-    painter.setPen(QColor(230, 230, 230));
-    const job::DisplayScene& scene = m_vtk->scene;
-    const bool bySpeed = m_colouring != Colouring::Layer && !scene.aSpeedOriginal.empty();
-    if (bySpeed) {
-        const QRect bar(12, 28, 160, 12);
-        QLinearGradient gradient(bar.topLeft(), bar.topRight());
-        for (int step = 0; step <= 8; ++step) {
-            gradient.setColorAt(step / 8.0, speedColour(step / 8.0));
-        }
-        painter.fillRect(bar, gradient);
-        const bool original =
-            m_colouring == Colouring::OriginalASpeed || scene.aSpeedRescheduled.empty();
-        painter.drawText(
-            12, 20, original ? tr("|dA/dt| original (rad/s)") : tr("|dA/dt| re-scheduled (rad/s)"));
-        painter.drawText(12, 56, QStringLiteral("0"));
-        painter.drawText(bar.right() - 40, 56,
-                         QStringLiteral("\u2265 ") + QString::number(m_vtk->speedScale, 'g', 3));
-    } else {
-        painter.drawText(12, 20,
-                         m_selected >= 0 ? tr("Coloured by layer; layer %1 in red").arg(m_selected)
-                                         : tr("Coloured by layer"));
+    painter.setFont(font());
+    const QRect area = sceneArea();
+    const QRect band(area.right() + 1, 0, frame.width() - area.width(), frame.height());
+    painter.fillRect(band, QColor(kLegendBackgroundRgb));
+    if (!m_vtk->hasData) {
+        return;
     }
-    painter.drawText(12, bySpeed ? 74 : 38,
-                     tr("Blade: %1").arg(QString::fromStdString(scene.surfaceName)));
+    const QFontMetrics metrics(font());
+    constexpr int kMargin = 10, kSwatch = 24, kGap = 8;
+    const QRect inner = band.adjusted(kMargin, kMargin, -kMargin, -kMargin);
+    const int textLeft = inner.left() + kSwatch + kGap;
+    int y = inner.top();
+    for (const LegendEntry& entry : legend()) {
+        painter.setPen(QColor(kTextRgb));
+        if (entry.swatch == Swatch::ColourBar) {
+            y = paintColourBar(painter, entry.text, QRect(inner.left(), y, inner.width(), 0)) +
+                kGap;
+            continue;
+        }
+        const QRect text = metrics.boundingRect(QRect(textLeft, y, inner.right() - textLeft, 1000),
+                                                Qt::TextWordWrap, entry.text);
+        paintSwatch(painter, entry, QRectF(inner.left(), y, kSwatch, metrics.height()));
+        painter.setPen(QColor(kTextRgb));
+        painter.drawText(text, Qt::TextWordWrap, entry.text);
+        y = text.bottom() + kGap;
+    }
+    paintAxesMarker(painter, QPointF(band.left() + 40.0, frame.height() - 40.0));
+}
 
+// The title, the speed colours from 0 to the top of the scale (deg/s) and their range, from the
+// top of `row` across its width; returns the bottom.
+int ToolpathView::paintColourBar(QPainter& painter, const QString& title, const QRect& row) const {
+    const QFontMetrics metrics(painter.font());
+    const QRect text = metrics.boundingRect(QRect(row.left(), row.top(), row.width(), 1000),
+                                            Qt::TextWordWrap, title);
+    painter.drawText(text, Qt::TextWordWrap, title);
+    const QRect bar(row.left(), text.bottom() + 4, row.width(), 10);
+    QLinearGradient gradient(bar.topLeft(), bar.topRight());
+    for (int step = 0; step <= 8; ++step) {
+        gradient.setColorAt(step / 8.0, speedColour(step / 8.0));
+    }
+    painter.fillRect(bar, gradient);
+    const int baseline = bar.bottom() + 2 + metrics.ascent();
+    painter.drawText(bar.left(), baseline, QStringLiteral("0"));
+    const QString top =
+        QStringLiteral("\u2265 ") + QString::number(units::radToDeg(m_vtk->speedScale), 'f', 0);
+    painter.drawText(bar.right() - metrics.horizontalAdvance(top), baseline, top);
+    return baseline + metrics.descent();
+}
+
+// X (red), Y (green) and Z (blue) of W from `origin`, turned as the camera sees them.
+void ToolpathView::paintAxesMarker(QPainter& painter, QPointF origin) const {
     // Rows of the view matrix are the camera's right, up and backward directions in W.
     vtkMatrix4x4* view = m_vtk->renderer->GetActiveCamera()->GetViewTransformMatrix();
-    const QPointF origin(40.0, frame.height() - 40.0);
     const char* names[3] = {"X", "Y", "Z"};
     const QColor colours[3] = {QColor(230, 80, 70), QColor(90, 200, 90), QColor(90, 140, 240)};
     for (int axis = 0; axis < 3; ++axis) {
@@ -482,10 +936,58 @@ void ToolpathView::paintOverlay(QImage& frame) {
     }
 }
 
+std::optional<QPointF> ToolpathView::widgetPositionOf(std::size_t passIndex) {
+    const std::optional<std::size_t> drawn = drawnPointOf(passIndex);
+    if (!drawn) {
+        return std::nullopt;
+    }
+    syncViewport();
+    vtkRenderer* renderer = m_vtk->renderer;
+    const Vec3& p = m_vtk->scene.tips[*drawn];
+    renderer->SetWorldPoint(p.x(), p.y(), p.z(), 1.0);
+    renderer->WorldToDisplay();
+    const double* display = renderer->GetDisplayPoint();
+    // Display y runs up from the bottom row, as in forward()'s flip.
+    return QPointF(display[0], renderSize().height() - 1 - display[1]);
+}
+
+// The ray through the click hits the blade or the path first; the drawn path point nearest
+// that hit is picked, if it lies within kPickRadiusPx of the click on screen.
+std::optional<std::size_t> ToolpathView::pickAt(QPointF position) {
+    Scene& vtk = *m_vtk;
+    if (!vtk.hasData || !sceneArea().contains(position.toPoint())) {
+        return std::nullopt;
+    }
+    syncViewport();
+    const double displayY = renderSize().height() - 1 - position.y();
+    if (vtk.picker->Pick(position.x(), displayY, 0.0, vtk.renderer) == 0) {
+        return std::nullopt;
+    }
+    double hit[3] = {0.0, 0.0, 0.0};
+    vtk.picker->GetPickPosition(hit);
+    const Vec3 world(hit[0], hit[1], hit[2]);
+    const std::vector<Vec3>& tips = vtk.scene.tips;
+    std::size_t nearest = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < tips.size(); ++i) {
+        const double distance = (tips[i] - world).squaredNorm();
+        if (distance < best) {
+            best = distance;
+            nearest = i;
+        }
+    }
+    const std::size_t record = vtk.scene.record[nearest];
+    const std::optional<QPointF> shown = widgetPositionOf(record);
+    if (!shown ||
+        std::hypot(shown->x() - position.x(), shown->y() - position.y()) > kPickRadiusPx) {
+        return std::nullopt; // the blade where the path does not run
+    }
+    return record;
+}
+
 void ToolpathView::forward(QMouseEvent* event, unsigned long vtkEvent) {
     const QPointF position = event->position();
-    m_vtk->window->SetSize(std::max(width(), 16), std::max(height(), 16));
-    m_vtk->interactor->SetSize(std::max(width(), 16), std::max(height(), 16));
+    syncViewport();
     m_vtk->interactor->SetEventInformationFlipY(static_cast<int>(position.x()),
                                                 static_cast<int>(position.y()),
                                                 (event->modifiers() & Qt::ControlModifier) ? 1 : 0,
@@ -495,8 +997,13 @@ void ToolpathView::forward(QMouseEvent* event, unsigned long vtkEvent) {
 }
 
 void ToolpathView::mousePressEvent(QMouseEvent* event) {
+    if (!QRect(QPoint(0, 0), renderSize()).contains(event->position().toPoint())) {
+        event->ignore(); // the control strip's empty space
+        return;
+    }
     switch (event->button()) {
     case Qt::LeftButton:
+        m_pressPosition = event->position();
         forward(event, vtkCommand::LeftButtonPressEvent);
         break;
     case Qt::RightButton:
@@ -512,9 +1019,16 @@ void ToolpathView::mousePressEvent(QMouseEvent* event) {
 
 void ToolpathView::mouseReleaseEvent(QMouseEvent* event) {
     switch (event->button()) {
-    case Qt::LeftButton:
+    case Qt::LeftButton: {
         forward(event, vtkCommand::LeftButtonReleaseEvent);
+        const bool click = (event->position() - m_pressPosition).manhattanLength() <= kClickSlopPx;
+        if (click) {
+            if (const std::optional<std::size_t> record = pickAt(event->position())) {
+                emit pointPicked(*record);
+            }
+        }
         break;
+    }
     case Qt::RightButton:
         forward(event, vtkCommand::RightButtonReleaseEvent);
         break;
@@ -541,9 +1055,9 @@ void ToolpathView::wheelEvent(QWheelEvent* event) {
 void ToolpathView::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     if (!m_vtk->hasData) {
-        painter.fillRect(rect(), palette().base());
-        painter.drawText(rect(), Qt::AlignCenter,
-                         tr("Run a job to see the blade and the toolpath"));
+        const QRect frame(QPoint(0, 0), renderSize());
+        painter.fillRect(frame, palette().base());
+        painter.drawText(frame, Qt::AlignCenter, tr("Run a job to see the blade and the toolpath"));
         return;
     }
     painter.drawImage(0, 0, renderFrame());

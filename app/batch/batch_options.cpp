@@ -108,8 +108,8 @@ std::string forHelp(const std::string& value) {
 }
 
 void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
-    auto* group = cli.add_option_group("Scheduling",
-                                       "Parameters of the S-theta re-scheduling (docs/method.md, docs/job-file.md)");
+    auto* group = cli.add_option_group(
+        "Scheduling", "Parameters of the S-theta re-scheduling (docs/method.md, docs/job-file.md)");
     group->add_option("-o,--output", raw.outputProgram,
                       "Write the re-scheduled program here; - writes it to standard output (the "
                       "summary then goes to standard error)");

@@ -7,6 +7,7 @@
 #include "core/io/program.h"
 #include "core/job/job_file.h"
 #include "tests/gui/image_checks.h"
+#include "ui/axis_ticks.h"
 #include "ui/comparison_table.h"
 #include "ui/layer_settings_panel.h"
 #include "ui/main_window.h"
@@ -18,6 +19,7 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -204,6 +206,10 @@ class MainWindowTest final : public QObject {
         const auto& layer = m_window->result()->rescheduled->schedule.layers[target];
         QVERIFY(layer.polyline == afterKeys);
         QVERIFY(m_window->plots()->methods().contains(QStringLiteral("edited")));
+        // The comparison has the edited program as a row, marked as what Export writes.
+        const bladeaxis::ui::ComparisonTable* comparison = m_window->comparisonTable();
+        QVERIFY(comparison->exportedRow() >= 0);
+        QCOMPARE(comparison->item(comparison->exportedRow(), 0)->text(), QStringLiteral("edited"));
         QVERIFY(m_window->result()->rescheduled->schedule.check.reversals == 0);
         QCOMPARE(m_window->selectedLayer(), target);
         const std::string gui = BLADEAXIS_GUI_OUTPUT_DIR "/gui_edited.nc";
@@ -233,6 +239,9 @@ class MainWindowTest final : public QObject {
         QVERIFY(waitForEdits());
         QVERIFY(m_window->spec().layerEdits.empty());
         QVERIFY(m_window->result()->rescheduled->programText == m_unedited);
+        QVERIFY(!m_window->plots()->methods().contains(QStringLiteral("edited")));
+        QCOMPARE(comparison->item(comparison->exportedRow(), 0)->text(),
+                 QStringLiteral("stheta-best"));
         m_window->undoStack()->redo();
         QVERIFY(editor->layer()->theta == after);
         QVERIFY(waitForEdits());
@@ -254,6 +263,23 @@ class MainWindowTest final : public QObject {
         QVERIFY(m_window->result()->rescheduled->schedule.layers[target].lo != loBefore);
         const int edited = headerColumn(m_window->layerTable(), "Edited");
         QCOMPARE(m_window->layerTable()->item(target, edited)->text(), QStringLiteral("settings"));
+        // Each peak that moved with the edit says why: the layer's own edit, or the junction a
+        // neighbour shares with it.
+        const int peakAfter = headerColumn(m_window->layerTable(), "Peak A acc. after");
+        int explained = 0;
+        for (int row = 0; row < m_window->layerTable()->rowCount(); ++row) {
+            const QString why = m_window->layerTable()->item(row, peakAfter)->toolTip();
+            if (why.isEmpty()) {
+                continue;
+            }
+            ++explained;
+            if (row == target) {
+                QVERIFY2(why.startsWith(QStringLiteral("This layer's edit")), qPrintable(why));
+            } else if (std::abs(row - target) == 1) {
+                QVERIFY2(why.contains(QStringLiteral("junction")), qPrintable(why));
+            }
+        }
+        QVERIFY(explained > 0);
         m_window->undoStack()->undo();
         QVERIFY(waitForEdits());
         QVERIFY(m_window->spec().layerEdits.empty());
@@ -283,6 +309,71 @@ class MainWindowTest final : public QObject {
         QCOMPARE(m_window->sectionView()->layer(), layer);
         const QImage image = m_window->grab().toImage();
         QVERIFY(image.save(QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/main_window_cad.png")));
+    }
+
+    void accelerationIsOnALogScaleAndTheSelectedLayerIsTinted() {
+        bladeaxis::ui::ProfilePlots* plots = m_window->plots();
+        QVERIFY(plots->accelerationLogScale());
+        auto* box = plots->findChild<QCheckBox*>(QStringLiteral("accelerationLogScale"));
+        QVERIFY(box != nullptr && box->isChecked());
+        const int target = m_window->layerTable()->rowCount() / 2;
+        m_window->selectLayer(target);
+        const auto span = plots->highlightedSpan();
+        QVERIFY(span.has_value());
+        QVERIFY(span->first < span->second);
+        QVERIFY(span->second <= m_window->result()->rescheduled->profile.time.back() + 1e-9);
+        QCOMPARE(plots->highlightedSpanLabel(), QStringLiteral("layer %1").arg(target));
+        box->setChecked(false);
+        QVERIFY(!plots->accelerationLogScale());
+        box->setChecked(true);
+    }
+
+    void theSThetaLegendAndARefusalStayOutsideTheData() {
+        const int target = layerWithInteriorKeyPoint();
+        if (target < 0) {
+            QSKIP("the demo has no layer with an interior key point");
+        }
+        m_window->selectLayer(target);
+        bladeaxis::ui::SThetaEditor* editor = m_window->editor();
+        QVERIFY(editor->plotArea().top() >= editor->legendHeight());
+        // A key point pulled far outside the channel is refused; the whole reason is shown in
+        // its own strip above the plot, which shrinks to make room.
+        std::vector<bladeaxis::Vec2> vertices = editor->layer()->polyline;
+        vertices[1].y() += 50.0;
+        QVERIFY(!editor->applyVertices(vertices));
+        QVERIFY(!editor->refusal().isEmpty());
+        const QRectF strip = editor->messageRect();
+        QVERIFY(!strip.isEmpty());
+        QVERIFY(strip.top() >= editor->legendHeight());
+        QVERIFY(editor->plotArea().top() >= strip.bottom());
+        const QFontMetricsF metrics(editor->font());
+        const QRectF needed = metrics.boundingRect(strip, Qt::TextWordWrap, editor->refusal());
+        QVERIFY(strip.height() >= needed.height());
+        QVERIFY(!editor->readoutAt(editor->plotArea().center()).isEmpty());
+        m_window->selectLayer(target == 0 ? 1 : 0); // leaves the refused preview
+    }
+
+    void roundTicksReadZeroFiftyHundred() {
+        const std::vector<double> ticks = bladeaxis::ui::niceTicks(44.0, 266.0, 5);
+        QCOMPARE(ticks, (std::vector<double>{50.0, 100.0, 150.0, 200.0, 250.0}));
+        QCOMPARE(bladeaxis::ui::niceTicks(-0.3, 0.3, 4), (std::vector<double>{-0.2, 0.0, 0.2}));
+    }
+
+    void aNewToolRadiusInTheToolBarReRunsTheJob() {
+        QDoubleSpinBox* radius = m_window->toolRadiusBox();
+        QVERIFY(m_window->result()->toolRadius.has_value());
+        const double used = *m_window->result()->toolRadius;
+        const double other = used == 7.5 ? 6.5 : 7.5;
+        for (const double value : {other, used}) { // there, and back by the tool bar alone
+            QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+            radius->setValue(value);
+            emit radius->editingFinished();
+            QVERIFY(m_window->isRunning());
+            QVERIFY(finished.wait(kJobTimeoutMs));
+            QCOMPARE(finished.front().front().toBool(), true);
+            QVERIFY(m_window->result()->toolRadius.has_value());
+            QCOMPARE(*m_window->result()->toolRadius, value);
+        }
     }
 
     void screenshotOfTheMainWindowIsNotBlank() {

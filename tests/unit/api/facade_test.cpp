@@ -49,7 +49,8 @@ TEST(Facade, GivesTheSameReportAsTheJobApi) {
     NullProgressSink sink;
     const auto direct = job::runJob(spec, sink, CancelToken{});
     ASSERT_TRUE(direct);
-    EXPECT_EQ(withoutTimings(outcome->reportJson()), withoutTimings(job::reportJsonText(*direct, &spec)));
+    EXPECT_EQ(withoutTimings(outcome->reportJson()),
+              withoutTimings(job::reportJsonText(*direct, &spec)));
     EXPECT_EQ(*outcome->programText(), direct->rescheduled->programText);
 }
 

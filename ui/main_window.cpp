@@ -133,6 +133,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         {tr("Layer"), tr("Status"), tr("Edited"), tr("Rev.\nbefore"), tr("Rev.\nafter"),
          tr("Peak A acc.\nbefore [°/s²]"), tr("Peak A acc.\nafter [°/s²]"),
          tr("Min clearance\n[°]"), tr("Peak θ''\n[°/mm²]")});
+    const QStringList headerTips{
+        tr("Layer number, 0 first in feed order"),
+        tr("ok, or what the engine found: pinched, monotone infeasible (original kept), ..."),
+        tr("What you changed in this layer: settings, key points"),
+        tr("A reversals in the layer, original program"),
+        tr("A reversals in the layer, re-scheduled program (0 is the aim)"),
+        tr("Peak A acceleration in the layer at the programmed feed, original program"),
+        tr("Peak A acceleration in the layer, re-scheduled; green lower, red higher than before"),
+        tr("Smallest distance of the new orientation from the edge of the channel where the shank "
+           "touches the blade: the margin (3° by default) where the schedule runs along the "
+           "hull, less only where the layer is pinched"),
+        tr("Sharpest bend of the new θ(S); lower is smoother")};
+    for (int column = 0; column < kLayerColumns; ++column) {
+        m_layers->horizontalHeaderItem(column)->setToolTip(headerTips[column]);
+    }
     m_layers->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_layers->setSelectionMode(QAbstractItemView::SingleSelection);
     m_layers->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -328,10 +343,14 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply) {
     m_keepSelection = selectedLayer();
     m_threadIsReapply = reapply;
     m_thread = new JobThread(std::move(spec), this);
-    connect(m_thread, &JobThread::progressed, this, [this](double fraction, const QString& stage) {
-        m_progress->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
-        statusBar()->showMessage(tr("Running: %1").arg(stage));
-    });
+    connect(m_thread, &JobThread::progressed, this,
+            [this, reapply](double fraction, const QString& stage) {
+                m_progress->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
+                // A re-run for an edit repeats every stage of the job; the user asked for one
+                // thing, which the message names first.
+                statusBar()->showMessage(reapply ? tr("Applying the layer edits: %1").arg(stage)
+                                                 : tr("Running: %1").arg(stage));
+            });
     connect(m_thread, &QThread::finished, this, &MainWindow::onJobFinished);
     if (!reapply) { // a new program is shown in 3D as soon as it is read
         connect(m_thread, &JobThread::originalReady, this, [this] {

@@ -353,6 +353,27 @@ class MainWindowTest final : public QObject {
         m_window->selectLayer(target == 0 ? 1 : 0); // leaves the refused preview
     }
 
+    void clickingTheSThetaPlotTakesTheFocusFromASettingsBox() {
+        m_window->activateWindow(); // focus exists only in the active window
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        m_window->selectLayer(0);
+        QDoubleSpinBox* margin = m_window->layerSettings()->marginBox();
+        margin->setFocus();
+        QTRY_VERIFY(margin->hasFocus());
+        bladeaxis::ui::SThetaEditor* editor = m_window->editor();
+        QTest::mouseClick(editor, Qt::LeftButton, {}, editor->plotArea().center().toPoint());
+        QTRY_VERIFY(editor->hasFocus()); // so Ctrl+Z reaches the job's undo, not the box
+    }
+
+    void everyLayerColumnExplainsItselfInPlainWords() {
+        const QTableWidget* table = m_window->layerTable();
+        for (int column = 0; column < table->columnCount(); ++column) {
+            const QString tip = table->horizontalHeaderItem(column)->toolTip();
+            QVERIFY2(!tip.isEmpty(), qPrintable(table->horizontalHeaderItem(column)->text()));
+            QVERIFY2(!tip.contains(QChar(0x00A7)), qPrintable(tip)); // no "§" numbers
+        }
+    }
+
     void roundTicksReadZeroFiftyHundred() {
         const std::vector<double> ticks = bladeaxis::ui::niceTicks(44.0, 266.0, 5);
         QCOMPARE(ticks, (std::vector<double>{50.0, 100.0, 150.0, 200.0, 250.0}));

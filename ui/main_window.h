@@ -28,6 +28,9 @@ namespace bladeaxis::ui {
 // The About box's text: version, revision and the libraries built with and running.
 QString aboutText();
 
+// The machine files shipped with BladeAxis (installed, or the source tree's resources/machines).
+QStringList shippedMachineFiles();
+
 class ComparisonTable;
 class JobThread;
 class LayerSettingsPanel;
@@ -130,6 +133,7 @@ class MainWindow final : public QMainWindow {
     void showLayers();
     void showLayerRow(int row, const report::LayerMotion& motion);
     void rerunWithToolbarInputs();
+    void fillMachineMenu();
     // After a re-run for an edit: marks the peak-A cell of a layer whose figure moved, saying
     // why (its own edit, or a neighbour's edit moving the junction they share).
     void explainLayerChange(int row, const report::LayerMotion& now,
@@ -200,6 +204,7 @@ class MainWindow final : public QMainWindow {
     QLabel* m_machineLabel = nullptr;
     QLabel* m_cadLabel = nullptr;
     QMenu* m_recentMenu = nullptr;
+    QMenu* m_machineMenu = nullptr;
     QAction* m_compareAction = nullptr;
     QAction* m_optimumAction = nullptr;
     QAction* m_darkAction = nullptr;

@@ -3,6 +3,7 @@
 #include "core/base/version.h"
 #include "core/job/demo_program.h"
 #include "core/job/job_file.h"
+#include "core/kinematics/machine_file.h"
 #include "ui/blade_placement_dialog.h"
 #include "ui/comparison_table.h"
 #include "ui/main_window.h"
@@ -13,6 +14,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QCoreApplication>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QDragEnterEvent>
@@ -63,6 +65,8 @@ void MainWindow::buildFileMenu() {
     connect(menuAction(file, tr("Open &machine…"), QKeySequence(tr("Ctrl+M")),
                        tr("Machine file (JSON); default: the built-in blade machine")),
             &QAction::triggered, this, &MainWindow::openMachineDialog);
+    m_machineMenu = file->addMenu(tr("Mac&hine"));
+    connect(m_machineMenu, &QMenu::aboutToShow, this, &MainWindow::fillMachineMenu);
     connect(menuAction(file, tr("Open blade &CAD…"), QKeySequence(tr("Ctrl+B")),
                        tr("Blade CAD (STEP/IGES) for the clearance check, the sections and the "
                           "3D surface of the next program")),
@@ -259,9 +263,62 @@ void MainWindow::restoreSettings() {
     m_darkAction->setChecked(settings.value(kDarkKey, false).toBool());
 }
 
+// The machine files BladeAxis ships: installed beside the program (../share/bladeaxis/machines)
+// or, in a build tree, the source's resources/machines.
+QStringList shippedMachineFiles() {
+    QStringList files;
+    for (const QString& folder :
+         {QCoreApplication::applicationDirPath() + QStringLiteral("/../share/bladeaxis/machines"),
+          QStringLiteral(BLADEAXIS_RESOURCES_DIR "/machines")}) {
+        const QDir dir(folder);
+        for (const QString& name :
+             dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+            const QString path = QFileInfo(dir.filePath(name)).canonicalFilePath();
+            if (!files.contains(path)) {
+                files << path;
+            }
+        }
+    }
+    return files;
+}
+
+// The built-in machine, the shipped machine files by their names, and the file in use: a click
+// chooses one and re-runs the job shown.
+void MainWindow::fillMachineMenu() {
+    m_machineMenu->clear();
+    auto* group = new QActionGroup(m_machineMenu);
+    const auto add = [this, group](const QString& text, const QString& path) {
+        QAction* action = m_machineMenu->addAction(text);
+        action->setCheckable(true);
+        action->setChecked(path == m_machinePath);
+        action->setData(path);
+        action->setToolTip(path.isEmpty() ? tr("The built-in blade machine") : path);
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, path] {
+            setMachineFile(path);
+            rerunWithToolbarInputs();
+        });
+    };
+    add(tr("Built-in blade machine"), QString());
+    QStringList files = shippedMachineFiles();
+    if (!m_machinePath.isEmpty() && !files.contains(m_machinePath)) {
+        files << m_machinePath;
+    }
+    for (const QString& path : files) {
+        const auto machine = kinematics::loadMachineFile(path.toStdString());
+        const QString name =
+            machine ? QString::fromStdString(machine->name) : QFileInfo(path).fileName();
+        add(tr("%1 (%2)").arg(name, QFileInfo(path).fileName()), path);
+    }
+    m_machineMenu->addSeparator();
+    m_machineMenu->addAction(tr("Other file…"), this, &MainWindow::openMachineDialog);
+}
+
 void MainWindow::setMachineFile(const QString& machinePath) {
     m_machinePath = machinePath;
-    m_machineLabel->setText(tr(" Machine: %1").arg(QFileInfo(machinePath).fileName()));
+    m_machineLabel->setText(machinePath.isEmpty()
+                                ? tr(" Machine: built-in")
+                                : tr(" Machine: %1").arg(QFileInfo(machinePath).fileName()));
     QSettings().setValue(kMachineKey, machinePath);
 }
 

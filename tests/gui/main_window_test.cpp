@@ -27,6 +27,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QInputDialog>
+#include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSignalSpy>
@@ -371,6 +372,35 @@ class MainWindowTest final : public QObject {
             const QString tip = table->horizontalHeaderItem(column)->toolTip();
             QVERIFY2(!tip.isEmpty(), qPrintable(table->horizontalHeaderItem(column)->text()));
             QVERIFY2(!tip.contains(QChar(0x00A7)), qPrintable(tip)); // no "§" numbers
+        }
+    }
+
+    void theMachineMenuOffersTheShippedMachinesAndReRunsOnAChoice() {
+        QMenu* menu = nullptr;
+        for (QMenu* candidate : m_window->findChildren<QMenu*>()) {
+            menu = candidate->title() == QStringLiteral("Mac&hine") ? candidate : menu;
+        }
+        QVERIFY(menu != nullptr);
+        // The menu is rebuilt each time it opens, so its actions are looked up every time.
+        const auto find = [menu](bool builtIn) -> QAction* {
+            emit menu->aboutToShow();
+            for (QAction* action : menu->actions()) {
+                const bool isBuiltIn = action->isCheckable() && action->data().toString().isEmpty();
+                if (builtIn ? isBuiltIn
+                            : action->text().contains(QStringLiteral("blade_ab.json"))) {
+                    return action;
+                }
+            }
+            return nullptr;
+        };
+        for (const bool builtIn : {false, true}) {
+            QAction* choice = find(builtIn);
+            QVERIFY(choice != nullptr);
+            QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+            choice->trigger();
+            QVERIFY(finished.wait(kJobTimeoutMs));
+            QCOMPARE(finished.front().front().toBool(), true);
+            QCOMPARE(m_window->result()->machine.sourceFile.empty(), builtIn);
         }
     }
 

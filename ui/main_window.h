@@ -132,7 +132,9 @@ class MainWindow final : public QMainWindow {
     void showResult(job::DisplayScene scene);
     void showLayers();
     void showLayerRow(int row, const report::LayerMotion& motion);
-    void rerunWithToolbarInputs();
+    void rerunWith(job::JobSpec spec, const QString& message);
+    void rerunWithToolRadius();
+    void rerunWithMachine();
     void fillMachineMenu();
     // After a re-run for an edit: marks the peak-A cell of a layer whose figure moved, saying
     // why (its own edit, or a neighbour's edit moving the junction they share).

@@ -232,7 +232,7 @@ void MainWindow::buildToolBar() {
         const std::optional<double> shown =
             m_toolRadius->value() > 0.0 ? std::optional(m_toolRadius->value()) : std::nullopt;
         if (m_result && shown != m_spec.toolRadius) {
-            rerunWithToolbarInputs();
+            rerunWithToolRadius();
         }
     });
     bar->addWidget(m_toolRadius);
@@ -296,7 +296,7 @@ void MainWindow::fillMachineMenu() {
         group->addAction(action);
         connect(action, &QAction::triggered, this, [this, path] {
             setMachineFile(path);
-            rerunWithToolbarInputs();
+            rerunWithMachine();
         });
     };
     add(tr("Built-in blade machine"), QString());
@@ -592,22 +592,31 @@ void MainWindow::openMachineDialog() {
                                                       tr("Machine files (*.json)"));
     if (!path.isEmpty()) {
         setMachineFile(path);
-        rerunWithToolbarInputs();
+        rerunWithMachine();
     }
 }
 
-// The job on screen again with the tool radius and machine the tool bar now shows, so a changed
-// input is seen at once rather than with the next program. Layer edits are kept.
-void MainWindow::rerunWithToolbarInputs() {
+// The job on screen again with one input changed, so the change is seen at once rather than
+// with the next program. Layer edits are kept.
+void MainWindow::rerunWith(job::JobSpec spec, const QString& message) {
     if (!m_result || m_thread != nullptr) {
         return;
     }
+    statusBar()->showMessage(message);
+    startJob(std::move(spec), false);
+}
+
+void MainWindow::rerunWithToolRadius() {
     job::JobSpec spec = m_spec;
     spec.toolRadius =
         m_toolRadius->value() > 0.0 ? std::optional(m_toolRadius->value()) : std::nullopt;
+    rerunWith(std::move(spec), tr("Re-running with the new tool radius…"));
+}
+
+void MainWindow::rerunWithMachine() {
+    job::JobSpec spec = m_spec;
     spec.machineFile = m_machinePath.toStdString();
-    statusBar()->showMessage(tr("Re-running with the new tool radius or machine…"));
-    startJob(std::move(spec), false);
+    rerunWith(std::move(spec), tr("Re-running on the chosen machine…"));
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {

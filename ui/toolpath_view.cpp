@@ -2,14 +2,13 @@
 
 #include "core/base/units.h"
 #include "core/job/job.h"
+#include "ui/toolpath_view_scene.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLinearGradient>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QSpinBox>
-#include <QWheelEvent>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,12 +17,10 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellPicker.h>
-#include <vtkCommand.h>
 #include <vtkDoubleArray.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLineSource.h>
-#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -37,84 +34,12 @@
 
 namespace bladeaxis::ui {
 
-// A drawn item: its data, mapper and actor.
-struct Drawn {
-    vtkNew<vtkPolyData> data;
-    vtkNew<vtkPolyDataMapper> mapper;
-    vtkNew<vtkActor> actor;
-
-    Drawn() {
-        mapper->SetInputData(data);
-        actor->SetMapper(mapper);
-    }
-};
-
-struct ToolpathView::Scene {
-    vtkNew<vtkRenderWindow> window;
-    vtkNew<vtkRenderer> renderer;
-    // selectedPath: the selected layer again, thicker, over the path.
-    Drawn surface, path, selectedPath, originalGlyphs, rescheduledGlyphs, section;
-    vtkNew<vtkGenericRenderWindowInteractor> interactor;
-    vtkNew<vtkInteractorStyleTrackballCamera> style;
-    vtkNew<vtkCellPicker> picker;
-    vtkNew<vtkSphereSource> ball;
-    vtkNew<vtkPolyDataMapper> ballMapper;
-    vtkNew<vtkActor> ballActor;
-    vtkNew<vtkLineSource> shank;
-    vtkNew<vtkPolyDataMapper> shankMapper;
-    vtkNew<vtkActor> shankActor;
-    job::DisplayScene scene;
-    double toolRadius = 4.0;
-    double speedScale = 0.0; // rad/s at the top of the colour bar
-    bool hasData = false;
-};
+using namespace detail;
 
 namespace {
 
-using Swatch = ToolpathView::LegendEntry::Swatch;
-
-// The colours of the frame, chosen so that no two meanings share one: the layer palette keeps
-// away from the axes' cyan and orange, the section's yellow, the highlight's pink and the tool's
-// silver; the speed map runs from blue through magenta to red, away from all but the pink,
-// which it never meets (by speed, the selected layer is drawn thicker, not pink).
-constexpr QRgb kRescheduledAxisRgb = qRgb(77, 230, 255);
-constexpr QRgb kOriginalAxisRgb = qRgb(255, 153, 51);
-constexpr QRgb kSelectedRgb = qRgb(255, 60, 190);
-constexpr QRgb kSectionRgb = qRgb(255, 235, 51);
-constexpr QRgb kToolRgb = qRgb(214, 217, 224);
-constexpr QRgb kSurfaceRgb = qRgb(158, 168, 184);
-constexpr std::array<QRgb, 3> kLayerPalette = {qRgb(70, 190, 90), qRgb(70, 110, 235),
-                                               qRgb(160, 100, 235)};
-constexpr QRgb kBackgroundRgb = qRgb(31, 31, 36);
-constexpr QRgb kLegendBackgroundRgb = qRgb(40, 40, 46);
-constexpr QRgb kTextRgb = qRgb(230, 230, 230);
-
-// A press and release closer than this (widget pixels) is a click, not a drag.
-constexpr double kClickSlopPx = 3.0;
-// A picked point of the blade surface selects the path point drawn within this distance.
-constexpr double kPickRadiusPx = 10.0;
-
 void setColour(vtkProperty* property, QRgb rgb) {
     property->SetColor(qRed(rgb) / 255.0, qGreen(rgb) / 255.0, qBlue(rgb) / 255.0);
-}
-
-// Neighbouring layers differ in colour; three colours are enough for that and leave the
-// other hues to the axes, the section and the highlight.
-QColor layerColour(std::size_t layer) {
-    return QColor(kLayerPalette[layer % kLayerPalette.size()]);
-}
-
-// Grey with a hint of the layer's colour: the layers that are not selected stay visible as
-// texture on the blade without competing with the selected one.
-QColor dimmedLayerColour(std::size_t layer) {
-    return QColor::fromHsv(layerColour(layer).hsvHue(), 45, 125);
-}
-
-// Blue (slow) through magenta to red (fast).
-QColor speedColour(double fraction) {
-    const double clamped = std::clamp(fraction, 0.0, 1.0);
-    const double hue = std::fmod((240.0 + 120.0 * clamped) / 360.0, 1.0);
-    return QColor::fromHsvF(static_cast<float>(hue), 0.85F, 0.95F);
 }
 
 void appendRgb(vtkUnsignedCharArray* colours, const QColor& colour) {
@@ -122,13 +47,6 @@ void appendRgb(vtkUnsignedCharArray* colours, const QColor& colour) {
                                   static_cast<unsigned char>(colour.green()),
                                   static_cast<unsigned char>(colour.blue())};
     colours->InsertNextTypedTuple(rgb);
-}
-
-// "-152.3" with a typographic minus, and no "-0.0" for a value that rounds to zero.
-QString signedNumber(double value, int decimals) {
-    const double half = 0.5 * std::pow(10.0, -decimals);
-    const double shown = std::abs(value) < half ? 0.0 : value;
-    return QString::number(shown, 'f', decimals).replace(QLatin1Char('-'), QChar(0x2212));
 }
 
 vtkNew<vtkPoints> pointsOf(const std::vector<Vec3>& positions) {
@@ -243,44 +161,37 @@ double secondsAt(const analysis::AxisProfile& profile, std::size_t record) {
     return profile.time[index];
 }
 
-// The sample beside a legend entry, in `box` (the swatch column of its first text line).
-void paintSwatch(QPainter& painter, const ToolpathView::LegendEntry& entry, const QRectF& box) {
-    const double y = box.center().y();
-    const auto line = [&](const QColor& colour, double width, double from, double to) {
-        painter.setPen(QPen(colour, width, Qt::SolidLine, Qt::FlatCap));
-        painter.drawLine(QPointF(box.left() + from * box.width(), y),
-                         QPointF(box.left() + to * box.width(), y));
-    };
-    switch (entry.swatch) {
-    case Swatch::Line:
-        line(entry.colour, 2.0, 0.0, 1.0);
-        break;
-    case Swatch::ThickLine:
-        line(entry.colour, 5.0, 0.0, 1.0);
-        break;
-    case Swatch::ThickSpeed:
-        for (int step = 0; step < 4; ++step) {
-            line(speedColour(step / 3.0), 5.0, step / 4.0, (step + 1) / 4.0);
-        }
-        break;
-    case Swatch::Palette:
-    case Swatch::DimmedPalette:
-        for (std::size_t k = 0; k < kLayerPalette.size(); ++k) {
-            const double third = 1.0 / static_cast<double>(kLayerPalette.size());
-            const double from = static_cast<double>(k) * third;
-            line(entry.swatch == Swatch::Palette ? layerColour(k) : dimmedLayerColour(k), 2.0, from,
-                 from + third);
-        }
-        break;
-    case Swatch::Area:
-        painter.fillRect(QRectF(box.left(), y - 5.0, box.width(), 10.0), entry.colour);
-        break;
-    case Swatch::ColourBar:
-        break; // drawn below its title, across the band
-    }
+} // namespace
+
+namespace detail {
+
+// Neighbouring layers differ in colour; three colours are enough for that and leave the
+// other hues to the axes, the section and the highlight.
+QColor layerColour(std::size_t layer) {
+    return QColor(kLayerPalette[layer % kLayerPalette.size()]);
 }
 
-} // namespace
+// Grey with a hint of the layer's colour: the layers that are not selected stay visible as
+// texture on the blade without competing with the selected one.
+QColor dimmedLayerColour(std::size_t layer) {
+    return QColor::fromHsv(layerColour(layer).hsvHue(), 45, 125);
+}
+
+// Blue (slow) through magenta to red (fast).
+QColor speedColour(double fraction) {
+    const double clamped = std::clamp(fraction, 0.0, 1.0);
+    const double hue = std::fmod((240.0 + 120.0 * clamped) / 360.0, 1.0);
+    return QColor::fromHsvF(static_cast<float>(hue), 0.85F, 0.95F);
+}
+
+// "-152.3" with a typographic minus, and no "-0.0" for a value that rounds to zero.
+QString signedNumber(double value, int decimals) {
+    const double half = 0.5 * std::pow(10.0, -decimals);
+    const double shown = std::abs(value) < half ? 0.0 : value;
+    return QString::number(shown, 'f', decimals).replace(QLatin1Char('-'), QChar(0x2212));
+}
+
+} // namespace detail
 
 ToolpathView::ToolpathView(QWidget* parent) : QWidget(parent), m_vtk(std::make_unique<Scene>()) {
     setMinimumSize(320, 240);
@@ -678,70 +589,6 @@ QColor ToolpathView::pathColourAt(std::size_t point) const {
     return {rgb[0], rgb[1], rgb[2]};
 }
 
-QString ToolpathView::colourBarTitle() const {
-    const job::DisplayScene& scene = m_vtk->scene;
-    if (m_colouring == Colouring::Layer || scene.aSpeedOriginal.empty()) {
-        return {};
-    }
-    const bool original =
-        m_colouring == Colouring::OriginalASpeed || scene.aSpeedRescheduled.empty();
-    // The speeds stay rad/s inside; degrees are what the engineer reads everywhere else.
-    return original ? tr("|dA/dt| original (deg/s)") : tr("|dA/dt| re-scheduled (deg/s)");
-}
-
-std::vector<ToolpathView::LegendEntry> ToolpathView::legend() const {
-    const job::DisplayScene& scene = m_vtk->scene;
-    std::vector<LegendEntry> entries;
-    const QString bar = colourBarTitle();
-    if (!bar.isEmpty()) {
-        entries.push_back({bar, speedColour(1.0), Swatch::ColourBar});
-        if (m_selected >= 0) {
-            entries.push_back(
-                {tr("layer %1 (selected)").arg(m_selected), QColor(), Swatch::ThickSpeed});
-        }
-    } else if (m_selected >= 0) {
-        entries.push_back(
-            {tr("layer %1 (selected)").arg(m_selected), QColor(kSelectedRgb), Swatch::ThickLine});
-        entries.push_back({tr("other layers"), dimmedLayerColour(0), Swatch::DimmedPalette});
-    } else {
-        entries.push_back({tr("toolpath, layers in turn"), layerColour(0), Swatch::Palette});
-    }
-    if (m_selected >= 0 && !scene.layers[static_cast<std::size_t>(m_selected)].section.empty()) {
-        entries.push_back(
-            {tr("blade section at layer %1 (x = %2 mm)")
-                 .arg(m_selected)
-                 .arg(signedNumber(scene.layers[static_cast<std::size_t>(m_selected)].sectionX, 1)),
-             QColor(kSectionRgb), Swatch::Line});
-    }
-    const std::size_t stride = axisStride();
-    const QString every = stride > 1 ? tr(", 1 in %1").arg(stride) : QString();
-    if (rescheduledAxesVisible() && scene.hasRescheduled()) {
-        entries.push_back(
-            {tr("re-scheduled tool axes%1").arg(every), QColor(kRescheduledAxisRgb), Swatch::Line});
-    }
-    if (originalAxesVisible() && !scene.originalAxes.empty()) {
-        entries.push_back(
-            {tr("original tool axes%1").arg(every), QColor(kOriginalAxisRgb), Swatch::Line});
-    }
-    if (toolVisible()) {
-        entries.push_back({tr("tool: ball R %1 mm and shank").arg(m_vtk->toolRadius, 0, 'g', 4),
-                           QColor(kToolRgb), Swatch::Area});
-    }
-    if (m_vtk->surface.actor->GetVisibility() != 0 && !scene.surface.triangles.empty()) {
-        entries.push_back({tr("blade: %1").arg(QString::fromStdString(scene.surfaceName)),
-                           QColor(kSurfaceRgb), Swatch::Area});
-    }
-    return entries;
-}
-
-QStringList ToolpathView::legendEntries() const {
-    QStringList texts;
-    for (const LegendEntry& entry : legend()) {
-        texts << entry.text;
-    }
-    return texts;
-}
-
 void ToolpathView::setToolRadius(double radius) {
     m_vtk->toolRadius = radius > 0.0 ? radius : 4.0;
 }
@@ -848,208 +695,6 @@ void ToolpathView::fitView() {
 
 void ToolpathView::resetView() {
     viewIsometric();
-}
-
-QImage ToolpathView::renderFrame() {
-    syncViewport();
-    const QSize size = renderSize();
-    const int w = size.width(), h = size.height();
-    m_vtk->window->Render();
-    vtkNew<vtkUnsignedCharArray> pixels;
-    m_vtk->window->GetRGBACharPixelData(0, 0, w - 1, h - 1, 0, pixels);
-    // VTK's rows start at the bottom.
-    QImage frame = QImage(reinterpret_cast<const uchar*>(pixels->GetPointer(0)), w, h, 4 * w,
-                          QImage::Format_RGBX8888)
-                       .mirrored();
-    paintLegend(frame);
-    return frame;
-}
-
-// The legend band right of the scene: every colour drawn, what it means, the speed colour bar
-// and the W axes as the camera sees them. Painted by Qt: cheaper than VTK's annotation actors
-// and identical in screenshots.
-void ToolpathView::paintLegend(QImage& frame) {
-    QPainter painter(&frame);
-    painter.setRenderHint(QPainter::Antialiasing);
-    painter.setFont(font());
-    const QRect area = sceneArea();
-    const QRect band(area.right() + 1, 0, frame.width() - area.width(), frame.height());
-    painter.fillRect(band, QColor(kLegendBackgroundRgb));
-    if (!m_vtk->hasData) {
-        return;
-    }
-    const QFontMetrics metrics(font());
-    constexpr int kMargin = 10, kSwatch = 24, kGap = 8;
-    const QRect inner = band.adjusted(kMargin, kMargin, -kMargin, -kMargin);
-    const int textLeft = inner.left() + kSwatch + kGap;
-    int y = inner.top();
-    for (const LegendEntry& entry : legend()) {
-        painter.setPen(QColor(kTextRgb));
-        if (entry.swatch == Swatch::ColourBar) {
-            y = paintColourBar(painter, entry.text, QRect(inner.left(), y, inner.width(), 0)) +
-                kGap;
-            continue;
-        }
-        const QRect text = metrics.boundingRect(QRect(textLeft, y, inner.right() - textLeft, 1000),
-                                                Qt::TextWordWrap, entry.text);
-        paintSwatch(painter, entry, QRectF(inner.left(), y, kSwatch, metrics.height()));
-        painter.setPen(QColor(kTextRgb));
-        painter.drawText(text, Qt::TextWordWrap, entry.text);
-        y = text.bottom() + kGap;
-    }
-    paintAxesMarker(painter, QPointF(band.left() + 40.0, frame.height() - 40.0));
-}
-
-// The title, the speed colours from 0 to the top of the scale (deg/s) and their range, from the
-// top of `row` across its width; returns the bottom.
-int ToolpathView::paintColourBar(QPainter& painter, const QString& title, const QRect& row) const {
-    const QFontMetrics metrics(painter.font());
-    const QRect text = metrics.boundingRect(QRect(row.left(), row.top(), row.width(), 1000),
-                                            Qt::TextWordWrap, title);
-    painter.drawText(text, Qt::TextWordWrap, title);
-    const QRect bar(row.left(), text.bottom() + 4, row.width(), 10);
-    QLinearGradient gradient(bar.topLeft(), bar.topRight());
-    for (int step = 0; step <= 8; ++step) {
-        gradient.setColorAt(step / 8.0, speedColour(step / 8.0));
-    }
-    painter.fillRect(bar, gradient);
-    const int baseline = bar.bottom() + 2 + metrics.ascent();
-    painter.drawText(bar.left(), baseline, QStringLiteral("0"));
-    const QString top =
-        QStringLiteral("\u2265 ") + QString::number(units::radToDeg(m_vtk->speedScale), 'f', 0);
-    painter.drawText(bar.right() - metrics.horizontalAdvance(top), baseline, top);
-    return baseline + metrics.descent();
-}
-
-// X (red), Y (green) and Z (blue) of W from `origin`, turned as the camera sees them.
-void ToolpathView::paintAxesMarker(QPainter& painter, QPointF origin) const {
-    // Rows of the view matrix are the camera's right, up and backward directions in W.
-    vtkMatrix4x4* view = m_vtk->renderer->GetActiveCamera()->GetViewTransformMatrix();
-    const char* names[3] = {"X", "Y", "Z"};
-    const QColor colours[3] = {QColor(230, 80, 70), QColor(90, 200, 90), QColor(90, 140, 240)};
-    for (int axis = 0; axis < 3; ++axis) {
-        const QPointF tip =
-            origin + 26.0 * QPointF(view->GetElement(0, axis), -view->GetElement(1, axis));
-        painter.setPen(QPen(colours[axis], 2.0));
-        painter.drawLine(origin, tip);
-        painter.drawText(tip + QPointF(3.0, 4.0), QString::fromLatin1(names[axis]));
-    }
-}
-
-std::optional<QPointF> ToolpathView::widgetPositionOf(std::size_t passIndex) {
-    const std::optional<std::size_t> drawn = drawnPointOf(passIndex);
-    if (!drawn) {
-        return std::nullopt;
-    }
-    syncViewport();
-    vtkRenderer* renderer = m_vtk->renderer;
-    const Vec3& p = m_vtk->scene.tips[*drawn];
-    renderer->SetWorldPoint(p.x(), p.y(), p.z(), 1.0);
-    renderer->WorldToDisplay();
-    const double* display = renderer->GetDisplayPoint();
-    // Display y runs up from the bottom row, as in forward()'s flip.
-    return QPointF(display[0], renderSize().height() - 1 - display[1]);
-}
-
-// The ray through the click hits the blade or the path first; the drawn path point nearest
-// that hit is picked, if it lies within kPickRadiusPx of the click on screen.
-std::optional<std::size_t> ToolpathView::pickAt(QPointF position) {
-    Scene& vtk = *m_vtk;
-    if (!vtk.hasData || !sceneArea().contains(position.toPoint())) {
-        return std::nullopt;
-    }
-    syncViewport();
-    const double displayY = renderSize().height() - 1 - position.y();
-    if (vtk.picker->Pick(position.x(), displayY, 0.0, vtk.renderer) == 0) {
-        return std::nullopt;
-    }
-    double hit[3] = {0.0, 0.0, 0.0};
-    vtk.picker->GetPickPosition(hit);
-    const Vec3 world(hit[0], hit[1], hit[2]);
-    const std::vector<Vec3>& tips = vtk.scene.tips;
-    std::size_t nearest = 0;
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < tips.size(); ++i) {
-        const double distance = (tips[i] - world).squaredNorm();
-        if (distance < best) {
-            best = distance;
-            nearest = i;
-        }
-    }
-    const std::size_t record = vtk.scene.record[nearest];
-    const std::optional<QPointF> shown = widgetPositionOf(record);
-    if (!shown ||
-        std::hypot(shown->x() - position.x(), shown->y() - position.y()) > kPickRadiusPx) {
-        return std::nullopt; // the blade where the path does not run
-    }
-    return record;
-}
-
-void ToolpathView::forward(QMouseEvent* event, unsigned long vtkEvent) {
-    const QPointF position = event->position();
-    syncViewport();
-    m_vtk->interactor->SetEventInformationFlipY(static_cast<int>(position.x()),
-                                                static_cast<int>(position.y()),
-                                                (event->modifiers() & Qt::ControlModifier) ? 1 : 0,
-                                                (event->modifiers() & Qt::ShiftModifier) ? 1 : 0);
-    m_vtk->interactor->InvokeEvent(vtkEvent, nullptr);
-    update();
-}
-
-void ToolpathView::mousePressEvent(QMouseEvent* event) {
-    if (!QRect(QPoint(0, 0), renderSize()).contains(event->position().toPoint())) {
-        event->ignore(); // the control strip's empty space
-        return;
-    }
-    switch (event->button()) {
-    case Qt::LeftButton:
-        m_pressPosition = event->position();
-        forward(event, vtkCommand::LeftButtonPressEvent);
-        break;
-    case Qt::RightButton:
-        forward(event, vtkCommand::RightButtonPressEvent);
-        break;
-    case Qt::MiddleButton:
-        forward(event, vtkCommand::MiddleButtonPressEvent);
-        break;
-    default:
-        break;
-    }
-}
-
-void ToolpathView::mouseReleaseEvent(QMouseEvent* event) {
-    switch (event->button()) {
-    case Qt::LeftButton: {
-        forward(event, vtkCommand::LeftButtonReleaseEvent);
-        const bool click = (event->position() - m_pressPosition).manhattanLength() <= kClickSlopPx;
-        if (click) {
-            if (const std::optional<std::size_t> record = pickAt(event->position())) {
-                emit pointPicked(*record);
-            }
-        }
-        break;
-    }
-    case Qt::RightButton:
-        forward(event, vtkCommand::RightButtonReleaseEvent);
-        break;
-    case Qt::MiddleButton:
-        forward(event, vtkCommand::MiddleButtonReleaseEvent);
-        break;
-    default:
-        break;
-    }
-}
-
-void ToolpathView::mouseMoveEvent(QMouseEvent* event) {
-    forward(event, vtkCommand::MouseMoveEvent);
-}
-
-void ToolpathView::wheelEvent(QWheelEvent* event) {
-    m_vtk->interactor->InvokeEvent(event->angleDelta().y() > 0
-                                       ? vtkCommand::MouseWheelForwardEvent
-                                       : vtkCommand::MouseWheelBackwardEvent,
-                                   nullptr);
-    update();
 }
 
 void ToolpathView::paintEvent(QPaintEvent*) {

@@ -158,11 +158,14 @@ Status MachineReader::chain(const Json& root, TableAHeadB& chain, bool& hasB) co
     }
     for (const auto& [key, target] :
          {std::pair{"a_sign", &chain.aSign}, std::pair{"b_sign", &chain.bSign}}) {
-        const int sign = object.value(key, 1);
-        if (sign != 1 && sign != -1) {
+        // Compared as a double: a huge number converted to int first would be undefined.
+        const double sign = !object.contains(key)        ? 1.0
+                            : object.at(key).is_number() ? object.at(key).get<double>()
+                                                         : 0.0;
+        if (sign != 1.0 && sign != -1.0) {
             return fail(std::string("kinematics.") + key, key, "expected 1 or -1");
         }
-        *target = sign;
+        *target = sign > 0.0 ? 1 : -1;
     }
     return {};
 }

@@ -1,3 +1,4 @@
+#include "core/base/file_io.h"
 #include "core/base/units.h"
 #include "core/kinematics/machine_file.h"
 
@@ -122,6 +123,30 @@ TEST(MachineFile, ErrorNamesTheLineOfTheOffendingKey) {
     auto machine = parseMachineJson(json, "m.json");
     ASSERT_FALSE(machine.has_value());
     EXPECT_EQ(machine.error().where.line, 3);
+}
+
+TEST(MachineFile, AnAxisSignOtherThanPlusOrMinusOneIsRefusedNamingTheKey) {
+    for (const char* sign : {"1e82", "0.5", "\"-1\"", "2"}) {
+        const std::string json =
+            std::string("{\"schema\": \"bladeaxis-machine/1\", "
+                        "\"kinematics\": {\"type\": \"table_a_head_b\", \"a_sign\": ") +
+            sign + "}}";
+        auto machine = parseMachineJson(json, "m.json");
+        ASSERT_FALSE(machine.has_value()) << sign;
+        EXPECT_EQ(machine.error().code, ErrorCode::MachineFile);
+        EXPECT_NE(machine.error().message.find("a_sign"), std::string::npos)
+            << machine.error().message;
+    }
+    std::string shipped = readTextFile(kShippedMachine).value_or("");
+    for (const std::string key : {"\"a_sign\": 1", "\"b_sign\": 1"}) {
+        const auto at = shipped.find(key);
+        ASSERT_NE(at, std::string::npos) << key;
+        shipped.replace(at, key.size(), key.substr(0, key.size() - 1) + "-1.0");
+    }
+    auto flipped = parseMachineJson(shipped, "m.json");
+    ASSERT_TRUE(flipped.has_value()) << flipped.error().toString();
+    EXPECT_EQ(flipped->chain.aSign, -1);
+    EXPECT_EQ(flipped->chain.bSign, -1);
 }
 
 TEST(MachineFile, MissingFileIsFileNotFound) {

@@ -4,6 +4,7 @@
 #include "core/scheduling/layer_edit.h"
 #include "ui/axis_ticks.h"
 
+#include <QEvent>
 #include <QFontMetricsF>
 #include <QLocale>
 #include <QMouseEvent>
@@ -84,18 +85,18 @@ void SThetaEditor::setLayer(const scheduling::LayerResult& layer,
     if (m_thetaHigh <= m_thetaLow) {
         m_thetaHigh = m_thetaLow + 1.0;
     }
-    update();
+    relayout(); // the message strip may have gone
 }
 
 void SThetaEditor::clearLayer() {
     m_layer.reset();
     m_pending.clear();
-    update();
+    relayout();
 }
 
 void SThetaEditor::setPending(const QString& message) {
     m_pending = message;
-    update();
+    relayout();
 }
 
 QString SThetaEditor::message() const {
@@ -104,32 +105,37 @@ QString SThetaEditor::message() const {
 
 // The strips above the data: the legend (wrapped to the width), then the refusal or pending
 // message (wrapped); below them the plot with room for the tick labels left and under it.
-double SThetaEditor::legendHeight() const {
+// Worked out once per change of size, font or message, not at every point drawn.
+void SThetaEditor::relayout() {
     const QFontMetricsF metrics(font());
-    return static_cast<double>(legendRows(width() - 2.0 * kGap, metrics).size()) *
-               (metrics.height() + 2.0) +
-           kGap;
-}
-
-QRectF SThetaEditor::messageRect() const {
-    const QString text = message();
-    if (text.isEmpty()) {
-        return {};
+    m_legendHeight = static_cast<double>(legendRows(width() - 2.0 * kGap, metrics).size()) *
+                         (metrics.height() + 2.0) +
+                     kGap;
+    m_messageRect = QRectF();
+    if (const QString text = message(); !text.isEmpty()) {
+        const QRectF available(kGap, m_legendHeight, width() - 2.0 * kGap, height());
+        const QRectF needed =
+            metrics.boundingRect(available, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, text);
+        m_messageRect =
+            QRectF(available.left(), available.top(), available.width(), needed.height() + kGap);
     }
-    const QFontMetricsF metrics(font());
-    const QRectF available(kGap, legendHeight(), width() - 2.0 * kGap, height());
-    const QRectF needed =
-        metrics.boundingRect(available, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, text);
-    return QRectF(available.left(), available.top(), available.width(), needed.height() + kGap);
+    const double left = metrics.horizontalAdvance(QStringLiteral("-0000")) + 2.0 * kGap;
+    const double top = m_legendHeight + m_messageRect.height() + metrics.height() + kGap;
+    const double bottom = 2.0 * metrics.height() + kGap;
+    m_plotArea = QRectF(left, top, std::max(width() - left - 2.0 * kGap, 10.0),
+                        std::max(height() - top - bottom, 10.0));
+    update();
 }
 
-QRectF SThetaEditor::plotArea() const {
-    const QFontMetricsF metrics(font());
-    const double left = metrics.horizontalAdvance(QStringLiteral("-0000")) + 2.0 * kGap;
-    const double top = legendHeight() + messageRect().height() + metrics.height() + kGap;
-    const double bottom = 2.0 * metrics.height() + kGap;
-    return QRectF(left, top, std::max(width() - left - 2.0 * kGap, 10.0),
-                  std::max(height() - top - bottom, 10.0));
+void SThetaEditor::resizeEvent(QResizeEvent*) {
+    relayout();
+}
+
+void SThetaEditor::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::FontChange) {
+        relayout();
+    }
+    QWidget::changeEvent(event);
 }
 
 QPointF SThetaEditor::toWidget(double s, double theta) const {
@@ -178,12 +184,13 @@ bool SThetaEditor::applyVertices(const std::vector<Vec2>& vertices) {
         scheduling::resmoothLayer(*m_layer, vertices, m_parameters);
     if (!edited) {
         m_refusal = QString::fromStdString(edited.error().message);
-        update();
+        relayout();
         return false;
     }
+    const bool hadRefusal = !m_refusal.isEmpty();
     m_refusal.clear();
     m_layer = std::move(*edited);
-    update();
+    hadRefusal ? relayout() : update();
     emit layerEdited();
     return true;
 }

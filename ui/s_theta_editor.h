@@ -32,10 +32,10 @@ class SThetaEditor final : public QWidget {
     // The legend's entries, drawn above the plot in this order.
     QStringList legendNames() const;
     // The data rectangle: the legend and the message strip are above it, never on it.
-    QRectF plotArea() const;
+    QRectF plotArea() const { return m_plotArea; }
     // The legend's strip and the message's (empty without a message), in widget coordinates.
-    double legendHeight() const;
-    QRectF messageRect() const;
+    double legendHeight() const { return m_legendHeight; }
+    QRectF messageRect() const { return m_messageRect; }
     // The hover readout at a widget position: S, scheduled and original theta, the channel.
     QString readoutAt(QPointF position) const;
     // Re-smooths with these vertices; false (and the reason in refusal()) when refused.
@@ -56,6 +56,8 @@ class SThetaEditor final : public QWidget {
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
   private:
     QPointF toWidget(double s, double theta) const;
@@ -68,6 +70,7 @@ class SThetaEditor final : public QWidget {
     void paintCurves(QPainter& painter) const;
     void paintMessages(QPainter& painter) const;
     QString message() const;
+    void relayout();
 
     std::optional<scheduling::LayerResult> m_layer;
     scheduling::ScheduleParameters m_parameters;
@@ -76,6 +79,8 @@ class SThetaEditor final : public QWidget {
     std::vector<Vec2> m_dragStart;
     QString m_refusal;
     QString m_pending;
+    double m_legendHeight = 0.0;
+    QRectF m_messageRect, m_plotArea; // relayout()
 };
 
 } // namespace bladeaxis::ui

@@ -7,6 +7,7 @@
 #include <QWheelEvent>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vtkCommand.h>
 
 namespace bladeaxis::ui {
@@ -19,6 +20,20 @@ namespace {
 constexpr double kClickSlopPx = 3.0;
 // A picked point of the blade surface selects the path point drawn within this distance.
 constexpr double kPickRadiusPx = 10.0;
+
+// VTK's press or release event of a mouse button; none for the other buttons.
+std::optional<unsigned long> vtkButtonEvent(Qt::MouseButton button, bool press) {
+    switch (button) {
+    case Qt::LeftButton:
+        return press ? vtkCommand::LeftButtonPressEvent : vtkCommand::LeftButtonReleaseEvent;
+    case Qt::RightButton:
+        return press ? vtkCommand::RightButtonPressEvent : vtkCommand::RightButtonReleaseEvent;
+    case Qt::MiddleButton:
+        return press ? vtkCommand::MiddleButtonPressEvent : vtkCommand::MiddleButtonReleaseEvent;
+    default:
+        return std::nullopt;
+    }
+}
 
 } // namespace
 
@@ -87,42 +102,24 @@ void ToolpathView::mousePressEvent(QMouseEvent* event) {
         event->ignore(); // the control strip's empty space
         return;
     }
-    switch (event->button()) {
-    case Qt::LeftButton:
+    if (event->button() == Qt::LeftButton) {
         m_pressPosition = event->position();
-        forward(event, vtkCommand::LeftButtonPressEvent);
-        break;
-    case Qt::RightButton:
-        forward(event, vtkCommand::RightButtonPressEvent);
-        break;
-    case Qt::MiddleButton:
-        forward(event, vtkCommand::MiddleButtonPressEvent);
-        break;
-    default:
-        break;
+    }
+    if (const std::optional<unsigned long> vtkEvent = vtkButtonEvent(event->button(), true)) {
+        forward(event, *vtkEvent);
     }
 }
 
 void ToolpathView::mouseReleaseEvent(QMouseEvent* event) {
-    switch (event->button()) {
-    case Qt::LeftButton: {
-        forward(event, vtkCommand::LeftButtonReleaseEvent);
-        const bool click = (event->position() - m_pressPosition).manhattanLength() <= kClickSlopPx;
-        if (click) {
-            if (const std::optional<std::size_t> record = pickAt(event->position())) {
-                emit pointPicked(*record);
-            }
-        }
-        break;
+    if (const std::optional<unsigned long> vtkEvent = vtkButtonEvent(event->button(), false)) {
+        forward(event, *vtkEvent);
     }
-    case Qt::RightButton:
-        forward(event, vtkCommand::RightButtonReleaseEvent);
-        break;
-    case Qt::MiddleButton:
-        forward(event, vtkCommand::MiddleButtonReleaseEvent);
-        break;
-    default:
-        break;
+    const bool click = event->button() == Qt::LeftButton &&
+                       (event->position() - m_pressPosition).manhattanLength() <= kClickSlopPx;
+    if (click) {
+        if (const std::optional<std::size_t> record = pickAt(event->position())) {
+            emit pointPicked(*record);
+        }
     }
 }
 

@@ -74,35 +74,6 @@ std::filesystem::path toPath(const py::handle& value) {
 
 // --- errors --------------------------------------------------------------------------------
 
-// The enumerator's own spelling: stable for scripts to compare, unlike toString's prose.
-const char* codeName(ErrorCode code) {
-    switch (code) {
-    case ErrorCode::InvalidArgument:
-        return "InvalidArgument";
-    case ErrorCode::FileNotFound:
-        return "FileNotFound";
-    case ErrorCode::FileUnreadable:
-        return "FileUnreadable";
-    case ErrorCode::Parse:
-        return "Parse";
-    case ErrorCode::MachineFile:
-        return "MachineFile";
-    case ErrorCode::Geometry:
-        return "Geometry";
-    case ErrorCode::Infeasible:
-        return "Infeasible";
-    case ErrorCode::CheckFailed:
-        return "CheckFailed";
-    case ErrorCode::WriteFailed:
-        return "WriteFailed";
-    case ErrorCode::Cancelled:
-        return "Cancelled";
-    case ErrorCode::Internal:
-        return "Internal";
-    }
-    return "Internal";
-}
-
 // 0 is the engine's "unknown" line or column; Python says that with None.
 py::object positiveOrNone(int value) {
     return value > 0 ? py::object(py::int_(value)) : py::object(py::none());
@@ -112,7 +83,7 @@ py::object positiveOrNone(int value) {
     const py::handle type(g_errorType);
     py::object exception = type(toStr(error.toString()));
     exception.attr("exit_code") = api::exitCodeFor(error);
-    exception.attr("code") = codeName(error.code);
+    exception.attr("code") = bladeaxis::codeName(error.code);
     exception.attr("file") =
         error.where.file.empty() ? py::object(py::none()) : py::object(toStr(error.where.file));
     exception.attr("line") = positiveOrNone(error.where.line);

@@ -4,6 +4,34 @@
 
 namespace bladeaxis {
 
+const char* codeName(ErrorCode code) {
+    switch (code) {
+    case ErrorCode::InvalidArgument:
+        return "InvalidArgument";
+    case ErrorCode::FileNotFound:
+        return "FileNotFound";
+    case ErrorCode::FileUnreadable:
+        return "FileUnreadable";
+    case ErrorCode::Parse:
+        return "Parse";
+    case ErrorCode::MachineFile:
+        return "MachineFile";
+    case ErrorCode::Geometry:
+        return "Geometry";
+    case ErrorCode::Infeasible:
+        return "Infeasible";
+    case ErrorCode::CheckFailed:
+        return "CheckFailed";
+    case ErrorCode::WriteFailed:
+        return "WriteFailed";
+    case ErrorCode::Cancelled:
+        return "Cancelled";
+    case ErrorCode::Internal:
+        return "Internal";
+    }
+    return "Internal";
+}
+
 const char* toString(ErrorCode code) {
     switch (code) {
     case ErrorCode::InvalidArgument:

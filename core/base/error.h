@@ -25,6 +25,9 @@ enum class ErrorCode {
 };
 
 const char* toString(ErrorCode code);
+// The enumerator's own spelling ("FileNotFound"): stable for scripts to compare (the Python
+// module's BladeAxisError.code), unlike toString's prose.
+const char* codeName(ErrorCode code);
 
 // Where in an input file an error was found. line and column are 1-based; 0 means unknown.
 struct SourceLocation {

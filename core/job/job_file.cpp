@@ -102,10 +102,7 @@ Status JobReader::confineOutputs(const Json& root, const JobSpec& spec) const {
         }
     }
     std::error_code ec;
-    // The demo's input is the G-code program it generates (read before the "demo" key is).
-    const bool demo = spec.demo || (root.contains("demo") && root.at("demo").is_boolean() &&
-                                    root.at("demo").get<bool>());
-    const fs::path input = demo ? fs::path("demo_blade.nc") : spec.program;
+    const fs::path input = spec.demo ? fs::path("demo_blade.nc") : spec.program;
     if (root.contains("output_program") && fs::exists(spec.outputProgram, ec) &&
         lowerExtension(spec.outputProgram) != lowerExtension(input)) {
         return fail("output_program", "would replace " + spec.outputProgram.string() +
@@ -345,6 +342,20 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
             *target = *path;
         }
     }
+    // What the job does: the command line's --demo, --analyse-only, --compare, --no-optimum
+    // (before the outputs are confined: the demo's input is the program it generates).
+    for (const auto& [key, member, inverted] :
+         {std::tuple{"demo", &JobSpec::demo, false},
+          std::tuple{"analyse_only", &JobSpec::reschedule, true},
+          std::tuple{"compare", &JobSpec::compare, false},
+          std::tuple{"compare_optimum", &JobSpec::compareOptimum, false}}) {
+        if (root.contains(key)) {
+            if (!root.at(key).is_boolean()) {
+                return fail(key, "expected true or false");
+            }
+            spec.*member = root.at(key).get<bool>() != inverted;
+        }
+    }
     if (auto status = confineOutputs(root, spec); !status) {
         return status;
     }
@@ -396,19 +407,6 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
                 return std::unexpected(value.error());
             }
             spec.cad.tool.*member = *value;
-        }
-    }
-    // What the job does: the command line's --demo, --analyse-only, --compare, --no-optimum.
-    for (const auto& [key, member, inverted] :
-         {std::tuple{"demo", &JobSpec::demo, false},
-          std::tuple{"analyse_only", &JobSpec::reschedule, true},
-          std::tuple{"compare", &JobSpec::compare, false},
-          std::tuple{"compare_optimum", &JobSpec::compareOptimum, false}}) {
-        if (root.contains(key)) {
-            if (!root.at(key).is_boolean()) {
-                return fail(key, "expected true or false");
-            }
-            spec.*member = root.at(key).get<bool>() != inverted;
         }
     }
     if (root.contains("layer_edits")) {

@@ -1,5 +1,6 @@
 #include "core/scheduling/layer_problem.h"
 
+#include "core/base/parallel.h"
 #include "core/base/units.h"
 #include "core/scheduling/detail/fast_angles.h"
 
@@ -149,18 +150,63 @@ std::vector<LayerSpan> spansAroundKeptLayers(const LayerSplit& split,
     return spans;
 }
 
+// Layer k's problem: its ends, its flags, and its channel relative to its start value.
+LayerProblem layerProblem(const PlanePath& path, const LayerSpan& span, AbsoluteLayer& a,
+                          double startJunction, double endJunction, double shortLengthMm,
+                          std::size_t k) {
+    LayerProblem p;
+    p.span = span;
+    const MonotoneHull& h = a.hull;
+    const LayerEnds ends = endsOf(a, p.span, startJunction, endJunction);
+    const double startAbs = ends.startAbs;
+    const double endAbs = ends.endAbs;
+    p.reference = startAbs;
+    p.startValue = 0.0;
+    p.endValue = endAbs - startAbs;
+    p.s.resize(a.rawMin.size());
+    for (std::size_t i = 0; i < p.s.size(); ++i) {
+        p.s[i] = path.arcLength[p.span.first + i] - path.arcLength[p.span.first];
+    }
+    p.shortLayer = p.s.size() < 4 || p.s.back() < shortLengthMm;
+    if (h.pinched) {
+        addFlag(p, LayerStatus::Pinched);
+    }
+    if (p.span.fallbackBase) {
+        addFlag(p, LayerStatus::NoConcaveRun);
+    }
+    if (p.shortLayer) {
+        addFlag(p, LayerStatus::ShortLayer);
+    }
+    if (const char* why = infeasibility(h, startAbs, endAbs)) {
+        markInfeasible(p, k, why);
+    }
+    // The absolute vectors move into the problem and become relative in place.
+    const auto shifted = [startAbs](std::vector<double>& values) {
+        for (double& v : values) {
+            v -= startAbs;
+        }
+        return std::move(values);
+    };
+    p.rawMin = shifted(a.rawMin);
+    p.rawMax = shifted(a.rawMax);
+    p.lo = shifted(a.hull.lo);
+    p.hi = shifted(a.hull.hi);
+    p.original = shifted(a.original);
+    return p;
+}
+
 } // namespace
 
 std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawChannel& channel,
                                              const LayerSplit& split,
-                                             std::span<const double> margins,
-                                             double shortLengthMm) {
+                                             std::span<const double> margins, double shortLengthMm,
+                                             unsigned threads) {
     const std::size_t count = split.layers.size();
-    std::vector<AbsoluteLayer> absolute;
-    absolute.reserve(count);
-    for (std::size_t k = 0; k < count; ++k) {
-        absolute.push_back(absoluteLayer(path, channel, split.layers[k], margins[k]));
-    }
+    const std::size_t points = path.points.size();
+    std::vector<AbsoluteLayer> absolute(count);
+    forEachItem(count, points, threads, [&](std::size_t k) {
+        absolute[k] = absoluteLayer(path, channel, split.layers[k], margins[k]);
+    });
     // J_k for k >= 1: the base vector on layer k's hull, never above layer k-1's hull over its
     // shortest lead-out [A].
     std::vector<double> junction(count + 1, 0.0);
@@ -172,47 +218,10 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
     const std::vector<LayerSpan> spans =
         spansAroundKeptLayers(split, absolute, junction, junctionWarnings);
     std::vector<LayerProblem> problems(count);
-    for (std::size_t k = 0; k < count; ++k) {
-        LayerProblem& p = problems[k];
-        AbsoluteLayer& a = absolute[k];
-        p.span = spans[k];
-        const MonotoneHull& h = a.hull;
-        const LayerEnds ends = endsOf(a, p.span, junction[k], junction[k + 1]);
-        const double startAbs = ends.startAbs;
-        const double endAbs = ends.endAbs;
-        p.reference = startAbs;
-        p.startValue = 0.0;
-        p.endValue = endAbs - startAbs;
-        p.s.resize(a.rawMin.size());
-        for (std::size_t i = 0; i < p.s.size(); ++i) {
-            p.s[i] = path.arcLength[p.span.first + i] - path.arcLength[p.span.first];
-        }
-        p.shortLayer = p.s.size() < 4 || p.s.back() < shortLengthMm;
-        if (h.pinched) {
-            addFlag(p, LayerStatus::Pinched);
-        }
-        if (p.span.fallbackBase) {
-            addFlag(p, LayerStatus::NoConcaveRun);
-        }
-        if (p.shortLayer) {
-            addFlag(p, LayerStatus::ShortLayer);
-        }
-        if (const char* why = infeasibility(h, startAbs, endAbs)) {
-            markInfeasible(p, k, why);
-        }
-        // The absolute vectors move into the problem and become relative in place.
-        const auto shifted = [startAbs](std::vector<double>& values) {
-            for (double& v : values) {
-                v -= startAbs;
-            }
-            return std::move(values);
-        };
-        p.rawMin = shifted(a.rawMin);
-        p.rawMax = shifted(a.rawMax);
-        p.lo = shifted(a.hull.lo);
-        p.hi = shifted(a.hull.hi);
-        p.original = shifted(a.original);
-    }
+    forEachItem(count, points, threads, [&](std::size_t k) {
+        problems[k] = layerProblem(path, spans[k], absolute[k], junction[k], junction[k + 1],
+                                   shortLengthMm, k);
+    });
     if (!problems.empty()) {
         problems.front().warnings.insert(problems.front().warnings.begin(),
                                          junctionWarnings.begin(), junctionWarnings.end());

@@ -30,6 +30,7 @@ struct LayerProblem {
 // of §2.5 and §4.6.
 std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawChannel& channel,
                                              const LayerSplit& split,
-                                             std::span<const double> margins, double shortLengthMm);
+                                             std::span<const double> margins, double shortLengthMm,
+                                             unsigned threads = 1);
 
 } // namespace bladeaxis::scheduling

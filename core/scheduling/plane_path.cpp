@@ -1,6 +1,7 @@
 #include "core/scheduling/plane_path.h"
 
 #include "core/base/number_io.h"
+#include "core/base/parallel.h"
 #include "core/base/tolerances.h"
 #include "core/base/units.h"
 #include "core/scheduling/detail/fast_angles.h"
@@ -23,7 +24,19 @@ Vec3 axisFromPlaneAngle(double angle, double tiltB0, int traversalSign) {
 
 namespace {
 
-Status validateInput(std::span<const Vec3> centres, std::span<const Vec3> axes) {
+enum class PointFault { None, NonFinite, ZeroAxis };
+
+PointFault faultOf(const Vec3& centre, const Vec3& axis) {
+    if (!isFinite(centre) || !isFinite(axis)) {
+        return PointFault::NonFinite;
+    }
+    if (axis.squaredNorm() < tol::kZeroVector * tol::kZeroVector) { // no square root
+        return PointFault::ZeroAxis;
+    }
+    return PointFault::None;
+}
+
+Status validateInput(std::span<const Vec3> centres, std::span<const Vec3> axes, unsigned threads) {
     if (centres.empty()) {
         return makeError(ErrorCode::InvalidArgument, "the toolpath has no points");
     }
@@ -32,16 +45,28 @@ Status validateInput(std::span<const Vec3> centres, std::span<const Vec3> axes) 
                                                          std::to_string(centres.size()) + " vs " +
                                                          std::to_string(axes.size()) + ")");
     }
-    for (std::size_t i = 0; i < centres.size(); ++i) {
-        if (!isFinite(centres[i]) || !isFinite(axes[i])) {
-            return makeError(ErrorCode::Geometry,
-                             "non-finite centre or axis at point " + std::to_string(i));
-        }
-        if (axes[i].squaredNorm() < tol::kZeroVector * tol::kZeroVector) { // no square root
-            return makeError(ErrorCode::Geometry, "zero tool axis at point " + std::to_string(i));
-        }
+    // The first faulty point of the whole input: each range finds its own first, the earliest
+    // range with one wins.
+    const std::size_t n = centres.size();
+    std::vector<std::size_t> firstFault(rangeCount(n, threads), n);
+    forEachRangeOf(n, firstFault.size(),
+                   [&](std::size_t range, std::size_t begin, std::size_t end) {
+                       for (std::size_t i = begin; i < end; ++i) {
+                           if (faultOf(centres[i], axes[i]) != PointFault::None) {
+                               firstFault[range] = i;
+                               return;
+                           }
+                       }
+                   });
+    const std::size_t i = *std::min_element(firstFault.begin(), firstFault.end());
+    if (i == n) {
+        return {};
     }
-    return {};
+    if (faultOf(centres[i], axes[i]) == PointFault::NonFinite) {
+        return makeError(ErrorCode::Geometry,
+                         "non-finite centre or axis at point " + std::to_string(i));
+    }
+    return makeError(ErrorCode::Geometry, "zero tool axis at point " + std::to_string(i));
 }
 
 // Spec §1.3: w = +a when the projected path turns positively about +x around its centroid.
@@ -63,15 +88,18 @@ int traversalSignOf(std::span<const Vec3> centres) {
 }
 
 // Spec §1.2: B_in = asin(V . a) must be constant; otherwise take the median and warn.
-double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std::string>& warn) {
+double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std::string>& warn,
+              unsigned threads) {
     // asin is monotone, so the extremes and the median are taken on V . a / |V| and only those
     // three go through asin (the same values as asin of every sample, without n asin calls).
-    std::vector<double> axial;
-    axial.reserve(path.firstInput.size());
-    for (std::size_t input : path.firstInput) {
-        // x / |V|: the axial component of V.normalized() without the other two divisions.
-        axial.push_back(std::clamp(axes[input].x() / axes[input].norm(), -1.0, 1.0));
-    }
+    std::vector<double> axial(path.firstInput.size());
+    forEachRange(axial.size(), threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            // x / |V|: the axial component of V.normalized() without the other two divisions.
+            const Vec3& axis = axes[path.firstInput[k]];
+            axial[k] = std::clamp(axis.x() / axis.norm(), -1.0, 1.0);
+        }
+    });
     const auto [low, high] = std::minmax_element(axial.begin(), axial.end());
     const double spread = std::asin(*high) - std::asin(*low);
     std::nth_element(axial.begin(), axial.begin() + static_cast<long>(axial.size() / 2),
@@ -87,8 +115,9 @@ double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std
 
 } // namespace
 
-Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes) {
-    if (auto status = validateInput(centres, axes); !status) {
+Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes,
+                                   unsigned threads) {
+    if (auto status = validateInput(centres, axes, threads); !status) {
         return std::unexpected(status.error());
     }
     PlanePath path;
@@ -121,17 +150,19 @@ Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<cons
                                 " duplicate centre(s) merged");
     }
     path.traversalSign = traversalSignOf(path.centres);
-    path.tiltB0 = tiltOf(path, axes, path.warnings);
+    path.tiltB0 = tiltOf(path, axes, path.warnings, threads);
     if (std::cos(path.tiltB0) < 1e-6) {
         return makeError(ErrorCode::Geometry, "the tool axis is parallel to the rotary axis");
     }
-    path.points.reserve(path.centres.size());
-    path.originalAngle.reserve(path.centres.size());
-    for (std::size_t k = 0; k < path.centres.size(); ++k) {
-        const Vec3& q = path.centres[k];
-        path.points.emplace_back(q.z(), -path.traversalSign * q.y());
-        path.originalAngle.push_back(planeAngle(axes[path.firstInput[k]], path.traversalSign));
-    }
+    path.points.resize(path.centres.size());
+    path.originalAngle.resize(path.centres.size());
+    forEachRange(path.centres.size(), threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const Vec3& q = path.centres[k];
+            path.points[k] = Vec2(q.z(), -path.traversalSign * q.y());
+            path.originalAngle[k] = planeAngle(axes[path.firstInput[k]], path.traversalSign);
+        }
+    });
     return path;
 }
 

@@ -25,8 +25,10 @@ struct PlanePath {
 };
 
 // Fails (Geometry / InvalidArgument) on empty or mismatched input, non-finite values, zero
-// axes, axes along the rotary axis, or fewer than 3 distinct centres.
-Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes);
+// axes, axes along the rotary axis, or fewer than 3 distinct centres. The per-point work runs
+// on up to `threads` threads (0 = all), with the same result as on one.
+Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes,
+                                   unsigned threads = 1);
 
 // ang(P_perp v) of spec §1.3 for a traversal sign w . a: atan2(v . p, v . r), r = +z.
 double planeAngle(const Vec3& v, int traversalSign);

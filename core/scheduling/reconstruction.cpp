@@ -1,6 +1,7 @@
 #include "core/scheduling/reconstruction.h"
 
 #include "core/base/number_io.h"
+#include "core/base/parallel.h"
 #include "core/base/tolerances.h"
 #include "core/base/units.h"
 
@@ -10,21 +11,24 @@
 namespace bladeaxis::scheduling {
 
 ReconstructedPath reconstructAxes(std::span<const Vec3> centres, std::span<const double> thetaAbs,
-                                  double tiltB0, int traversalSign, double toolRadius) {
+                                  double tiltB0, int traversalSign, double toolRadius,
+                                  unsigned threads) {
     ReconstructedPath path;
     const std::size_t n = std::min(centres.size(), thetaAbs.size());
-    path.axes.reserve(n);
-    path.tips.reserve(n);
+    path.axes.resize(n);
+    path.tips.resize(n);
     // axisFromPlaneAngle with the tilt's sine and cosine taken once (the same arithmetic).
     const double axial = std::sin(tiltB0);
     const double inPlane = std::cos(tiltB0);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double angle = thetaAbs[i];
-        const Vec3 axis(axial, -traversalSign * std::sin(angle) * inPlane,
-                        std::cos(angle) * inPlane);
-        path.axes.push_back(axis);
-        path.tips.push_back(centres[i] - toolRadius * axis);
-    }
+    forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const double angle = thetaAbs[i];
+            const Vec3 axis(axial, -traversalSign * std::sin(angle) * inPlane,
+                            std::cos(angle) * inPlane);
+            path.axes[i] = axis;
+            path.tips[i] = centres[i] - toolRadius * axis;
+        }
+    });
     return path;
 }
 
@@ -46,15 +50,26 @@ std::size_t countReversals(std::span<const double> angles, double step) {
 ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                                         const ReconstructedPath& path,
                                         std::span<const double> thetaAbs, double tiltB0,
-                                        double toolRadius) {
-    ReconstructionCheck check;
+                                        double toolRadius, unsigned threads) {
     const double axial = std::sin(tiltB0);
-    for (std::size_t i = 0; i < path.axes.size() && i < centres.size(); ++i) {
-        const Vec3& v = path.axes[i];
-        check.maxCentreErrorMm =
-            std::max(check.maxCentreErrorMm, (path.tips[i] + toolRadius * v - centres[i]).norm());
-        check.maxUnitError = std::max(check.maxUnitError, std::abs(v.norm() - 1.0));
-        check.maxTiltError = std::max(check.maxTiltError, std::abs(v.x() - axial));
+    const std::size_t n = std::min(path.axes.size(), centres.size());
+    // Maxima per range, then over the ranges: a maximum does not depend on the order.
+    std::vector<ReconstructionCheck> ranges(rangeCount(n, threads));
+    forEachRangeOf(n, ranges.size(), [&](std::size_t range, std::size_t begin, std::size_t end) {
+        ReconstructionCheck& check = ranges[range];
+        for (std::size_t i = begin; i < end; ++i) {
+            const Vec3& v = path.axes[i];
+            check.maxCentreErrorMm = std::max(check.maxCentreErrorMm,
+                                              (path.tips[i] + toolRadius * v - centres[i]).norm());
+            check.maxUnitError = std::max(check.maxUnitError, std::abs(v.norm() - 1.0));
+            check.maxTiltError = std::max(check.maxTiltError, std::abs(v.x() - axial));
+        }
+    });
+    ReconstructionCheck check;
+    for (const ReconstructionCheck& range : ranges) {
+        check.maxCentreErrorMm = std::max(check.maxCentreErrorMm, range.maxCentreErrorMm);
+        check.maxUnitError = std::max(check.maxUnitError, range.maxUnitError);
+        check.maxTiltError = std::max(check.maxTiltError, range.maxTiltError);
     }
     check.reversals = countReversals(thetaAbs, tol::kReversalStepRad);
     return check;

@@ -16,7 +16,8 @@ struct ReconstructedPath {
 };
 
 ReconstructedPath reconstructAxes(std::span<const Vec3> centres, std::span<const double> thetaAbs,
-                                  double tiltB0, int traversalSign, double toolRadius);
+                                  double tiltB0, int traversalSign, double toolRadius,
+                                  unsigned threads = 1);
 
 struct ReconstructionCheck {
     double maxCentreErrorMm = 0.0; // max |O + R V - Q|
@@ -43,7 +44,7 @@ std::string describeFailures(const ReconstructionCheck& check);
 ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                                         const ReconstructedPath& path,
                                         std::span<const double> thetaAbs, double tiltB0,
-                                        double toolRadius);
+                                        double toolRadius, unsigned threads = 1);
 
 // Direction reversals of an angle sequence: sign changes among steps larger than `step`.
 std::size_t countReversals(std::span<const double> angles, double step);

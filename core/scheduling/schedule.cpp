@@ -1,6 +1,7 @@
 #include "core/scheduling/schedule.h"
 
 #include "core/base/number_io.h"
+#include "core/base/parallel.h"
 #include "core/base/tolerances.h"
 #include "core/base/units.h"
 #include "core/scheduling/channel.h"
@@ -13,9 +14,7 @@
 #include "core/scheduling/tangents.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <thread>
 
 namespace bladeaxis::scheduling {
 
@@ -76,7 +75,8 @@ CurvatureSettings curvatureSettings(const ScheduleParameters& p, const PlanePath
 Result<ChannelStage> buildChannelStage(const PlanePath& path, const ScheduleParameters& p,
                                        double radius, std::vector<std::string>& warnings) {
     ChannelStage stage;
-    auto tangents = computeTangents(path.points, p.tangentChordMinMm, p.tangentChordMedianFactor);
+    auto tangents =
+        computeTangents(path.points, p.tangentChordMinMm, p.tangentChordMedianFactor, p.threads);
     if (!tangents) {
         return std::unexpected(tangents.error());
     }
@@ -114,32 +114,18 @@ std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems, const P
                                     std::span<const ScheduleParameters> layerParameters,
                                     const ScheduleParameters& p, const CancelToken* cancel) {
     std::vector<LayerOutcome> outcomes(problems.size());
-    std::atomic<std::size_t> next{0};
-    auto worker = [&]() {
-        for (std::size_t k = next++; k < problems.size(); k = next++) {
-            if (cancel != nullptr && cancel->isCancelled()) {
-                return;
-            }
-            std::vector<std::size_t> inputs;
-            inputs.reserve(problems[k].span.last - problems[k].span.first + 1);
-            for (std::size_t i = problems[k].span.first; i <= problems[k].span.last; ++i) {
-                inputs.push_back(path.firstInput[i]);
-            }
-            outcomes[k] =
-                scheduleLayer(std::move(problems[k]), layerParameters[k], std::move(inputs), k);
+    forEachItem(problems.size(), path.points.size(), p.threads, [&](std::size_t k) {
+        if (cancel != nullptr && cancel->isCancelled()) {
+            return;
         }
-    };
-    unsigned threads =
-        p.threads != 0 ? p.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = static_cast<unsigned>(std::min<std::size_t>(threads, problems.size()));
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) {
-        pool.emplace_back(worker);
-    }
-    worker();
-    for (std::thread& thread : pool) {
-        thread.join();
-    }
+        std::vector<std::size_t> inputs;
+        inputs.reserve(problems[k].span.last - problems[k].span.first + 1);
+        for (std::size_t i = problems[k].span.first; i <= problems[k].span.last; ++i) {
+            inputs.push_back(path.firstInput[i]);
+        }
+        outcomes[k] =
+            scheduleLayer(std::move(problems[k]), layerParameters[k], std::move(inputs), k);
+    });
     return outcomes;
 }
 
@@ -178,7 +164,7 @@ Status applyKeyPointEdits(std::vector<LayerOutcome>& outcomes,
 }
 
 void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput& input,
-              std::vector<LayerOutcome>& outcomes) {
+              std::vector<LayerOutcome>& outcomes, unsigned threads) {
     const std::size_t n = input.centres.size();
     result.thetaAbsolute.assign(n, 0.0);
     result.thetaOriginalAbsolute.assign(n, 0.0);
@@ -206,7 +192,7 @@ void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput
         result.thetaOriginalAbsolute[i] = result.thetaOriginalAbsolute[first];
     }
     ReconstructedPath rebuilt = reconstructAxes(input.centres, result.thetaAbsolute, path.tiltB0,
-                                                path.traversalSign, input.toolRadius);
+                                                path.traversalSign, input.toolRadius, threads);
     for (std::size_t i = 0; i < n; ++i) {
         if (keepOriginal[path.sampleOfInput[i]]) { // MONOTONE_INFEASIBLE: the input is kept
             rebuilt.axes[i] = input.axes[i].normalized();
@@ -214,7 +200,7 @@ void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput
         }
     }
     result.check = checkReconstruction(input.centres, rebuilt, result.thetaAbsolute, path.tiltB0,
-                                       input.toolRadius);
+                                       input.toolRadius, threads);
     result.originalReversals = countReversals(result.thetaOriginalAbsolute, tol::kReversalStepRad);
     result.newAxes = std::move(rebuilt.axes);
     result.newTips = std::move(rebuilt.tips);
@@ -270,7 +256,7 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
         return makeError(ErrorCode::InvalidArgument,
                          "tool radius " + std::to_string(input.toolRadius) + " mm is not > 0");
     }
-    auto path = preparePlanePath(input.centres, input.axes);
+    auto path = preparePlanePath(input.centres, input.axes, parameters.threads);
     if (!path) {
         return std::unexpected(path.error());
     }
@@ -296,8 +282,9 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
     for (const ScheduleParameters& layer : perLayer) {
         margins.push_back(layer.marginRad);
     }
-    std::vector<LayerProblem> problems = buildLayerProblems(
-        *path, stage->channel, stage->split, margins, 4.0 * stage->tangents.chordLengthMm);
+    std::vector<LayerProblem> problems =
+        buildLayerProblems(*path, stage->channel, stage->split, margins,
+                           4.0 * stage->tangents.chordLengthMm, parameters.threads);
     for (const LayerProblem& problem : problems) {
         result.warnings.insert(result.warnings.end(), problem.warnings.begin(),
                                problem.warnings.end());
@@ -309,7 +296,7 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
     if (auto applied = applyKeyPointEdits(outcomes, overrides, perLayer); !applied) {
         return std::unexpected(applied.error());
     }
-    assemble(result, *path, input, outcomes);
+    assemble(result, *path, input, outcomes, parameters.threads);
     checkJunctions(result);
     addCheckWarnings(result);
     return result;

@@ -19,8 +19,9 @@ struct TangentField {
 
 // l_t = max(minChordMm, medianFactor * median chord). Where no chord of length l_t exists
 // (path ends), the farthest point is used, and at the very ends the other-side chord.
-// Fails (Geometry) when all points coincide in projection.
+// Fails (Geometry) when all points coincide in projection. The chords are found on up to
+// `threads` threads (0 = all), with the same result as on one.
 Result<TangentField> computeTangents(std::span<const Vec2> points, double minChordMm,
-                                     double medianFactor);
+                                     double medianFactor, unsigned threads = 1);
 
 } // namespace bladeaxis::scheduling

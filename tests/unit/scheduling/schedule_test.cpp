@@ -1,4 +1,5 @@
 // Spec §10.2 pipeline invariants and §10.3 degenerate cases on synthetic helical paths.
+#include "core/base/parallel.h"
 #include "core/scheduling/schedule.h"
 #include "tests/unit/scheduling/synthetic_paths.h"
 
@@ -7,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 namespace bladeaxis::scheduling {
@@ -91,6 +93,50 @@ TEST(Schedule, ParallelRunEqualsSerialRun) {
         EXPECT_EQ(a->layers[k].ddTheta, b->layers[k].ddTheta);
         EXPECT_EQ(a->layers[k].polyline, b->layers[k].polyline);
     }
+}
+
+// Every per-point stage splits a path this long into ranges on several threads (parallel.h);
+// the result must not depend on the split, down to the last bit.
+TEST(Schedule, ParallelStagesGiveTheSerialResultOnALongPath) {
+    const ScheduleInput input = appendixBHelix(140.0);
+    ASSERT_GT(input.centres.size(), 3 * kMinParallelRange);
+    ScheduleParameters serial = bestPreset();
+    serial.threads = 1;
+    ScheduleParameters parallel = bestPreset();
+    parallel.threads = 3; // ranges that do not fall on layer boundaries
+    auto a = schedule(input, serial);
+    auto b = schedule(input, parallel);
+    ASSERT_TRUE(a.has_value() && b.has_value());
+    EXPECT_EQ(a->thetaAbsolute, b->thetaAbsolute);
+    EXPECT_EQ(a->thetaOriginalAbsolute, b->thetaOriginalAbsolute);
+    EXPECT_EQ(a->newAxes, b->newAxes);
+    EXPECT_EQ(a->newTips, b->newTips);
+    EXPECT_EQ(a->basePoints, b->basePoints);
+    EXPECT_EQ(a->warnings, b->warnings);
+    EXPECT_EQ(a->check.maxCentreErrorMm, b->check.maxCentreErrorMm);
+    EXPECT_EQ(a->check.maxUnitError, b->check.maxUnitError);
+    EXPECT_EQ(a->check.maxTiltError, b->check.maxTiltError);
+    ASSERT_EQ(a->layers.size(), b->layers.size());
+    for (std::size_t k = 0; k < a->layers.size(); ++k) {
+        EXPECT_EQ(a->layers[k].theta, b->layers[k].theta) << k;
+        EXPECT_EQ(a->layers[k].lo, b->layers[k].lo) << k;
+        EXPECT_EQ(a->layers[k].hi, b->layers[k].hi) << k;
+        EXPECT_EQ(a->layers[k].thetaOriginal, b->layers[k].thetaOriginal) << k;
+    }
+}
+
+TEST(Schedule, ParallelRunReportsTheFirstFaultyPointOfTheInput) {
+    ScheduleInput input = appendixBHelix(140.0);
+    const std::size_t late = input.centres.size() - 10;
+    const std::size_t early = input.centres.size() / 2 + 7; // in a later range than the start
+    input.axes[late] = Vec3::Zero();
+    input.centres[early].y() = std::numeric_limits<double>::quiet_NaN();
+    ScheduleParameters parameters = bestPreset();
+    parameters.threads = 4;
+    auto result = schedule(input, parameters);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_NE(result.error().message.find("point " + std::to_string(early)), std::string::npos)
+        << result.error().message;
 }
 
 } // namespace

@@ -1,0 +1,70 @@
+#pragma once
+// Data-parallel loops for the per-point stages of large toolpaths. Work is split into contiguous
+// index ranges decided by the count and the thread count alone, each range writes only its own
+// elements, and reductions are combined in range order: a parallel run gives the same bits as a
+// serial one. Small inputs run on the calling thread, where starting threads would cost more
+// than the work (a thread start is tens of microseconds; a point costs tens of nanoseconds).
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace bladeaxis {
+
+// The thread count a `threads` setting means: 0 is every hardware thread.
+inline unsigned resolveThreadCount(unsigned threads) {
+    return threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
+// Below this many elements per range a loop runs serially.
+inline constexpr std::size_t kMinParallelRange = 16384;
+
+// The number of ranges forEachRange splits `count` elements into.
+inline std::size_t rangeCount(std::size_t count, unsigned threads) {
+    const std::size_t byWork = std::max<std::size_t>(1, count / kMinParallelRange);
+    return std::min<std::size_t>(resolveThreadCount(threads), byWork);
+}
+
+// Calls body(range, begin, end) for `ranges` contiguous ranges covering [0, count), one thread
+// per range (the calling thread takes the first).
+template <class Body>
+void forEachRangeOf(std::size_t count, std::size_t ranges, Body&& body) {
+    const auto bounds = [count, ranges](std::size_t r) { return count * r / ranges; };
+    std::vector<std::thread> pool;
+    pool.reserve(ranges > 0 ? ranges - 1 : 0);
+    for (std::size_t r = 1; r < ranges; ++r) {
+        pool.emplace_back([&body, &bounds, r] { body(r, bounds(r), bounds(r + 1)); });
+    }
+    if (ranges > 0) {
+        body(std::size_t{0}, bounds(0), bounds(1));
+    }
+    for (std::thread& thread : pool) {
+        thread.join();
+    }
+}
+
+// Calls body(begin, end) over [0, count) in contiguous ranges on up to `threads` threads
+// (0 = all); serially when the input is small.
+template <class Body>
+void forEachRange(std::size_t count, unsigned threads, Body&& body) {
+    forEachRangeOf(count, rangeCount(count, threads),
+                   [&body](std::size_t, std::size_t begin, std::size_t end) { body(begin, end); });
+}
+
+// Calls body(i) for every i in [0, count), items handed out one at a time to up to `threads`
+// threads (0 = all): for few items of uneven cost, such as the layers of a toolpath. `weight`
+// is the total work in points; below kMinParallelRange points all of it runs serially.
+template <class Body>
+void forEachItem(std::size_t count, std::size_t weight, unsigned threads, Body&& body) {
+    const std::size_t workers = std::min(rangeCount(weight, threads), count);
+    std::atomic<std::size_t> next{0};
+    forEachRangeOf(workers, workers, [&](std::size_t, std::size_t, std::size_t) {
+        for (std::size_t i = next++; i < count; i = next++) {
+            body(i);
+        }
+    });
+}
+
+} // namespace bladeaxis

@@ -1,0 +1,85 @@
+#include "core/base/parallel.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <mutex>
+#include <numeric>
+#include <set>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace bladeaxis {
+namespace {
+
+TEST(Parallel, RangesCoverEveryIndexOnceInContiguousPieces) {
+    const std::size_t count = 5 * kMinParallelRange + 3;
+    std::vector<int> visits(count, 0);
+    std::mutex lock;
+    std::vector<std::pair<std::size_t, std::size_t>> ranges;
+    forEachRange(count, 4, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            ++visits[i];
+        }
+        const std::lock_guard guard(lock);
+        ranges.emplace_back(begin, end);
+    });
+    EXPECT_TRUE(std::all_of(visits.begin(), visits.end(), [](int v) { return v == 1; }));
+    EXPECT_EQ(ranges.size(), 4u);
+    std::sort(ranges.begin(), ranges.end());
+    EXPECT_EQ(ranges.front().first, 0u);
+    EXPECT_EQ(ranges.back().second, count);
+    for (std::size_t r = 1; r < ranges.size(); ++r) {
+        EXPECT_EQ(ranges[r].first, ranges[r - 1].second);
+    }
+}
+
+TEST(Parallel, RangesRunOnSeveralThreads) {
+    std::mutex lock;
+    std::set<std::thread::id> threads;
+    forEachRange(4 * kMinParallelRange, 2, [&](std::size_t, std::size_t) {
+        const std::lock_guard guard(lock);
+        threads.insert(std::this_thread::get_id());
+    });
+    EXPECT_EQ(threads.size(), 2u);
+}
+
+TEST(Parallel, SmallInputRunsOnTheCallingThreadInOneRange) {
+    int calls = 0;
+    forEachRange(kMinParallelRange - 1, 8, [&](std::size_t begin, std::size_t end) {
+        ++calls;
+        EXPECT_EQ(begin, 0u);
+        EXPECT_EQ(end, kMinParallelRange - 1);
+        EXPECT_EQ(std::this_thread::get_id(), std::this_thread::get_id());
+    });
+    EXPECT_EQ(calls, 1);
+    EXPECT_EQ(rangeCount(kMinParallelRange - 1, 8), 1u);
+    EXPECT_EQ(rangeCount(0, 8), 1u);
+}
+
+TEST(Parallel, EmptyInputCallsNothingHarmful) {
+    std::size_t covered = 0;
+    forEachRange(0, 4, [&](std::size_t begin, std::size_t end) { covered += end - begin; });
+    EXPECT_EQ(covered, 0u);
+    int items = 0;
+    forEachItem(0, 0, 4, [&](std::size_t) { ++items; });
+    EXPECT_EQ(items, 0);
+}
+
+TEST(Parallel, EveryItemIsHandedOutOnce) {
+    const std::size_t count = 37;
+    std::vector<std::atomic<int>> visits(count);
+    forEachItem(count, 10 * kMinParallelRange, 3, [&](std::size_t i) { ++visits[i]; });
+    for (std::size_t i = 0; i < count; ++i) {
+        EXPECT_EQ(visits[i].load(), 1) << i;
+    }
+}
+
+TEST(Parallel, ZeroThreadsMeansEveryHardwareThread) {
+    EXPECT_EQ(resolveThreadCount(0), std::max(1u, std::thread::hardware_concurrency()));
+    EXPECT_EQ(resolveThreadCount(3), 3u);
+}
+
+} // namespace
+} // namespace bladeaxis

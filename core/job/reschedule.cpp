@@ -263,20 +263,20 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     }
     outcome.axes = std::move(*axes);
     outcome.stageSeconds.kinematics = clock.lap();
+    // The analysis describes the program actually written. Its feeds are the input's unless
+    // the pass is in inverse time (G93), where the same F over a new tip chord is a new tip
+    // speed: then the analysis waits for the written program's feeds. Otherwise it needs only
+    // the new axes, and runs beside the rewrite and the re-read check, which use one thread.
+    const bool feedsFromWritten = input.analysis.blockTimes;
+    const bool analyseAtOnce = input.analyseNewMotion && !feedsFromWritten;
+    auto analysed = std::async(analyseAtOnce ? std::launch::async : std::launch::deferred,
+                               [&] { return analyseNewMotion(input, outcome); });
     auto text = rewriteProgram(input, outcome.records, outcome.axes);
     if (!text) {
         return std::unexpected(text.error());
     }
     outcome.programText = std::move(*text);
     outcome.stageSeconds.rewrite = clock.lap();
-    // The analysis describes the program actually written. Its feeds are the input's unless
-    // the pass is in inverse time (G93), where the same F over a new tip chord is a new tip
-    // speed: then the analysis waits for the written program's feeds. Otherwise the re-read
-    // check and the analysis are independent and run at once.
-    const bool feedsFromWritten = input.analysis.blockTimes;
-    const bool analyseAtOnce = input.analyseNewMotion && !feedsFromWritten;
-    auto analysed = std::async(analyseAtOnce ? std::launch::async : std::launch::deferred,
-                               [&] { return analyseNewMotion(input, outcome); });
     auto written = input.verifyByRereading || feedsFromWritten
                        ? readBackWritten(input, outcome.programText)
                        : Result<WrittenProgram>(WrittenProgram{});

@@ -91,7 +91,9 @@ class Rewriter {
             const RecordSource& source = m_program.sources[k];
             const std::string_view line = lineAt(source.lineBegin);
             const std::array<double, 5> before = m_written;
-            std::vector<Edit> edits = editsFor(k, line, newAxes[k]);
+            std::vector<Edit>& edits = m_edits;
+            edits.clear();
+            editsFor(k, line, newAxes[k], edits);
             if (m_combinedFeed) {
                 feedEdit(k, line, before, edits);
             }
@@ -206,7 +208,8 @@ class Rewriter {
         return delta;
     }
 
-    std::vector<Edit> editsFor(std::size_t k, std::string_view line, const MachineAxes& target);
+    void editsFor(std::size_t k, std::string_view line, const MachineAxes& target,
+                  std::vector<Edit>& edits);
     void checkModuloMove(std::size_t k, const AxisContext& c, double before, double wanted);
     void feedEdit(std::size_t k, std::string_view line, const std::array<double, 5>& before,
                   std::vector<Edit>& edits);
@@ -226,6 +229,7 @@ class Rewriter {
     std::optional<Error> m_failure;    // a move the block's word form cannot make
     bool m_combinedFeed = false;       // F over the combined axis move: rescaled per block
     bool m_feedChanged = false;        // the previous record was written with another F
+    std::vector<Edit> m_edits;         // the current record's, reused: no allocation per block
 };
 
 // On a control that reads G94 F over the combined axis move, a block whose A and B steps change
@@ -334,11 +338,10 @@ std::string Rewriter::wordText(const AxisContext& c, std::string number) const {
     return letter + number;
 }
 
-std::vector<Edit> Rewriter::editsFor(std::size_t k, std::string_view line,
-                                     const MachineAxes& target) {
+void Rewriter::editsFor(std::size_t k, std::string_view line, const MachineAxes& target,
+                        std::vector<Edit>& edits) {
     const RecordSource& source = m_program.sources[k];
     const MachineAxes& original = *m_program.path.records[k].axes;
-    std::vector<Edit> edits;
     for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
         const AxisContext c = contextOf(axis, source);
         const AxisNumberStyle& style = m_program.axisStyles[axis];
@@ -382,7 +385,6 @@ std::vector<Edit> Rewriter::editsFor(std::size_t k, std::string_view line,
         }
         m_written[axis] = reachedAfter(c, before, writtenFile);
     }
-    return edits;
 }
 
 // Where a missing word goes: right after the nearest preceding axis word of the block (after
@@ -436,8 +438,13 @@ Edit Rewriter::insertion(const AxisContext& c, const RecordSource& source, std::
 }
 
 void Rewriter::appendEdited(std::string& out, std::string_view line, std::vector<Edit>& edits) {
-    std::stable_sort(edits.begin(), edits.end(),
-                     [](const Edit& a, const Edit& b) { return a.offset < b.offset; });
+    // At most a handful per block: an insertion sort, stable like std::stable_sort, without its
+    // buffer allocation.
+    for (std::size_t i = 1; i < edits.size(); ++i) {
+        for (std::size_t j = i; j > 0 && edits[j].offset < edits[j - 1].offset; --j) {
+            std::swap(edits[j], edits[j - 1]);
+        }
+    }
     std::size_t cursor = 0;
     for (const Edit& edit : edits) {
         out.append(line.substr(cursor, edit.offset - cursor));

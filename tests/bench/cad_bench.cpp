@@ -10,6 +10,7 @@
 #include "core/cad/clearance.h"
 #include "core/cad/sections.h"
 #include "core/cad/tessellation.h"
+#include "tests/bench/bench_size.h"
 
 #include <benchmark/benchmark.h>
 
@@ -22,7 +23,7 @@ namespace {
 using namespace bladeaxis;
 using Clock = std::chrono::steady_clock;
 
-constexpr int kLayers = 200;
+const int kLayers = bench::scaled(200, 2);
 
 struct Program {
     std::filesystem::path stepFile;
@@ -39,7 +40,7 @@ const Program& program() {
         blade::BladeSpec spec = blade::demoBladeSpec();
         spec.spanEnd = 110.0;
         const blade::Blade blade = *blade::Blade::create(spec);
-        result.stepFile = std::filesystem::temp_directory_path() / "bladeaxis_cad_bench.step";
+        result.stepFile = bench::benchFile("cad", ".step");
         (void)cad::writeCadFile(*cad::makeBladeSurface(blade, {.stationSpacing = 5.0}),
                                 result.stepFile, cad::CadFormat::Step);
         blade::HelicalPathSpec pathSpec = blade::demoPathSpec();

@@ -32,8 +32,7 @@ using bench::fail;
 constexpr double kToolRadius = 8.0; // mm, the demo path's ball
 
 const fs::path& millionProgram() {
-    static const fs::path file =
-        bench::writeMillionProgram(fs::temp_directory_path() / "bladeaxis_bench_million.nc");
+    static const fs::path file = bench::writeMillionProgram(bench::benchFile("million", ".nc"));
     return file;
 }
 

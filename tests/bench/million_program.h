@@ -1,6 +1,6 @@
 #pragma once
 // The million-block G-code program of the end-to-end benchmarks: the tile of million_tile.h
-// repeated kMillionTiles times along x, emitted through the default blade machine. It is made in
+// repeated millionTiles() times along x, emitted through the default blade machine. It is made in
 // a child process, so that the benchmark process's peak memory belongs to the benchmarks alone,
 // and kept in the temporary folder between runs.
 
@@ -37,9 +37,10 @@ inline toolpath::Toolpath millionRecordPath() {
     toolpath::Toolpath path;
     path.sourceFile = "million.nc";
     const auto& records = tile->path.records;
-    for (int t = 0; t < kMillionTiles; ++t) {
+    const int tiles = millionTiles();
+    for (int t = 0; t < tiles; ++t) {
         // The closing record of a tile is the first record of the next one.
-        const std::size_t count = records.size() - (t + 1 < kMillionTiles ? 1 : 0);
+        const std::size_t count = records.size() - (t + 1 < tiles ? 1 : 0);
         for (std::size_t i = 0; i < count; ++i) {
             toolpath::ClRecord record = records[i];
             record.tip.x() += advance * t;

@@ -1,9 +1,10 @@
 #pragma once
 // The tile the million-point benchmarks repeat along x: the demo section without twist (every
 // revolution is the previous one moved by the pitch), 10 revolutions at a fine tolerance. Tiled
-// 128 times it gives 1,007,361 points.
+// 128 times it gives 1,007,361 points (2 times in a smoke run).
 
 #include "core/blade/presets.h"
+#include "tests/bench/bench_size.h"
 
 namespace bladeaxis::bench {
 
@@ -22,6 +23,8 @@ inline blade::HelicalPathSpec fineTilePath() {
     return spec;
 }
 
-inline constexpr int kMillionTiles = 128;
+inline int millionTiles() {
+    return scaled(128, 2);
+}
 
 } // namespace bladeaxis::bench

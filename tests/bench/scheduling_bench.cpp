@@ -62,7 +62,7 @@ const scheduling::ScheduleInput& millionInput() {
         const blade::HelicalPathSpec pathSpec = bench::fineTilePath();
         const scheduling::ScheduleInput tile = generate(bench::twistFreeDemoBlade(), pathSpec);
         const double advance = pathSpec.pitch * pathSpec.revolutions;
-        constexpr int kTiles = bench::kMillionTiles;
+        const int kTiles = bench::millionTiles();
         scheduling::ScheduleInput tiled;
         tiled.toolRadius = tile.toolRadius;
         for (int t = 0; t < kTiles; ++t) {

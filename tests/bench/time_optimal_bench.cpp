@@ -3,6 +3,7 @@
 #include "core/analysis/axis_profile.h"
 #include "core/analysis/time_optimal.h"
 #include "core/kinematics/machine_model.h"
+#include "tests/bench/bench_size.h"
 
 #include <benchmark/benchmark.h>
 
@@ -31,7 +32,8 @@ analysis::AxisProfile spiralProfile(std::size_t count) {
 }
 
 void BM_TimeOptimalMillionSamples(benchmark::State& state) {
-    const analysis::AxisProfile profile = spiralProfile(1'000'000);
+    const std::size_t samples = bench::scaled<std::size_t>(1'000'000);
+    const analysis::AxisProfile profile = spiralProfile(samples);
     const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
     analysis::TimeOptimalOptions options;
     options.jerkHeuristic = state.range(0) != 0;
@@ -46,7 +48,7 @@ void BM_TimeOptimalMillionSamples(benchmark::State& state) {
         benchmark::DoNotOptimize(result);
     }
     state.counters["T2_s"] = t2;
-    state.SetItemsProcessed(state.iterations() * 1'000'000);
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(samples));
 }
 BENCHMARK(BM_TimeOptimalMillionSamples)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 

@@ -40,7 +40,7 @@ double secondsSince(Clock::time_point start) {
 
 const fs::path& millionProgram() {
     static const fs::path file =
-        bench::writeMillionProgram(fs::temp_directory_path() / "bladeaxis_bench_view_million.nc");
+        bench::writeMillionProgram(bench::benchFile("view_million", ".nc"));
     return file;
 }
 

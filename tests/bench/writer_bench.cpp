@@ -22,8 +22,7 @@ struct RewriteInput {
 
 const RewriteInput& rewriteInput() {
     static const RewriteInput input = [] {
-        const fs::path file =
-            bench::writeMillionProgram(fs::temp_directory_path() / "bladeaxis_bench_million.nc");
+        const fs::path file = bench::writeMillionProgram(bench::benchFile("writer_million", ".nc"));
         auto program = io::loadProgram(file, kinematics::defaultBladeMachine());
         if (!program) {
             bench::fail("read", program.error());

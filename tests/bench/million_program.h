@@ -23,7 +23,7 @@ namespace bladeaxis::bench {
     std::exit(1);
 }
 
-inline toolpath::Toolpath millionRecordPath() {
+inline toolpath::Toolpath tiledRecordPath(int tiles) {
     auto bladeModel = blade::Blade::create(twistFreeDemoBlade());
     if (!bladeModel) {
         fail("blade", bladeModel.error());
@@ -37,7 +37,6 @@ inline toolpath::Toolpath millionRecordPath() {
     toolpath::Toolpath path;
     path.sourceFile = "million.nc";
     const auto& records = tile->path.records;
-    const int tiles = millionTiles();
     for (int t = 0; t < tiles; ++t) {
         // The closing record of a tile is the first record of the next one.
         const std::size_t count = records.size() - (t + 1 < tiles ? 1 : 0);
@@ -50,11 +49,14 @@ inline toolpath::Toolpath millionRecordPath() {
     return path;
 }
 
-// Writes the program to `file` (in a child process) and returns the path.
-inline std::filesystem::path writeMillionProgram(const std::filesystem::path& file) {
+// Writes the program of `tiles` tiles (millionTiles() by default) to `file` (in a child
+// process) and returns the path.
+inline std::filesystem::path writeMillionProgram(const std::filesystem::path& file,
+                                                 int tiles = millionTiles()) {
     const pid_t child = fork();
     if (child == 0) {
-        auto text = io::nc::emitGcode(millionRecordPath(), kinematics::defaultBladeMachine(), {});
+        auto text =
+            io::nc::emitGcode(tiledRecordPath(tiles), kinematics::defaultBladeMachine(), {});
         if (!text) {
             fail("emit", text.error());
         }

@@ -25,9 +25,12 @@ bool axesFinite(const kinematics::MachineAxes& m) {
            std::isfinite(m.b);
 }
 
+// Also stores the positive programmed feeds, a run of one feed once, for chooseFeed: gathered in
+// the same pass, as a pass over the records (over 100 bytes each) costs about as much as the
+// checks.
 Status validateInput(std::span<const kinematics::MachineAxes> axes,
-                     std::span<const toolpath::ClRecord> records,
-                     const AxisProfileOptions& options) {
+                     std::span<const toolpath::ClRecord> records, const AxisProfileOptions& options,
+                     std::vector<double>& feedRuns) {
     if (axes.size() != records.size()) {
         return makeError(ErrorCode::InvalidArgument,
                          "axis motion: " + std::to_string(axes.size()) + " axis sets for " +
@@ -57,20 +60,19 @@ Status validateInput(std::span<const kinematics::MachineAxes> axes,
             return makeError(ErrorCode::Geometry, "invalid feed " + std::to_string(r.feed) +
                                                       " mm/s at " + recordName(i, r));
         }
+        if (r.feed > 0.0 && (feedRuns.empty() || r.feed != feedRuns.back())) {
+            feedRuns.push_back(r.feed);
+        }
     }
     return {};
 }
 
-// The one constant feed of the analysis (see AxisProfileOptions::feedOverride).
-Result<double> chooseFeed(std::span<const toolpath::ClRecord> records, double feedOverride) {
+// The one constant feed of the analysis (see AxisProfileOptions::feedOverride). feeds: the
+// positive programmed feeds, a run of one feed once (validateInput).
+Result<double> chooseFeed(std::span<const toolpath::ClRecord> records, double feedOverride,
+                          std::vector<double> feeds) {
     if (feedOverride > 0.0) {
         return feedOverride;
-    }
-    std::vector<double> feeds;
-    for (const toolpath::ClRecord& r : records) {
-        if (r.feed > 0.0 && (feeds.empty() || r.feed != feeds.back())) {
-            feeds.push_back(r.feed); // runs of one feed are stored once while scanning
-        }
     }
     if (feeds.empty()) {
         return makeError(ErrorCode::InvalidArgument,
@@ -95,7 +97,7 @@ Result<double> chooseFeed(std::span<const toolpath::ClRecord> records, double fe
     return median;
 }
 
-// Fills pathParameter and sampleRecord; drops points closer than kMinPathStepMm to the last
+// Fills pathParameter, time and sampleRecord; drops points closer than kMinPathStepMm to the last
 // kept one (distance to the kept point, so creeping sub-threshold steps still add up).
 void buildPathParameter(std::span<const toolpath::ClRecord> records,
                         const AxisProfileOptions& options, AxisProfile& profile) {
@@ -106,11 +108,16 @@ void buildPathParameter(std::span<const toolpath::ClRecord> records,
     };
     const bool timed = options.blockTimes && !centre;
     profile.pathParameter.reserve(records.size());
+    profile.time.reserve(records.size());
     profile.sampleRecord.reserve(records.size());
+    const auto addSample = [&](double s, std::size_t record) {
+        profile.pathParameter.push_back(s);
+        profile.time.push_back(s / profile.feed);
+        profile.sampleRecord.push_back(record);
+    };
     Vec3 last = pointOf(records[0]);
     double s = 0.0, length = 0.0;
-    profile.pathParameter.push_back(0.0);
-    profile.sampleRecord.push_back(0);
+    addSample(0.0, 0);
     for (std::size_t i = 1; i < records.size(); ++i) {
         const Vec3 p = pointOf(records[i]);
         const double step = (p - last).norm();
@@ -124,10 +131,33 @@ void buildPathParameter(std::span<const toolpath::ClRecord> records,
         s += timed && feed > 0.0 ? step * profile.feed / feed : step;
         length += step;
         last = p;
-        profile.pathParameter.push_back(s);
-        profile.sampleRecord.push_back(i);
+        addSample(s, i);
     }
     profile.pathLength = length;
+}
+
+// The machine axes at the samples, one series per axis indexed by AxisId, gathered in one pass
+// over the records.
+std::vector<std::vector<double>> sampledAxes(std::span<const kinematics::MachineAxes> axes,
+                                             std::span<const std::size_t> sampleRecord) {
+    using kinematics::AxisId;
+    const std::size_t n = sampleRecord.size();
+    std::vector<std::vector<double>> series(kinematics::kAllAxes.size());
+    for (std::vector<double>& axis : series) {
+        axis.resize(n);
+    }
+    const auto of = [&](AxisId id) -> std::vector<double>& {
+        return series[static_cast<std::size_t>(id)];
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        const kinematics::MachineAxes& m = axes[sampleRecord[i]];
+        of(AxisId::X)[i] = m.x;
+        of(AxisId::Y)[i] = m.y;
+        of(AxisId::Z)[i] = m.z;
+        of(AxisId::A)[i] = m.a;
+        of(AxisId::B)[i] = m.b;
+    }
+    return series;
 }
 
 } // namespace
@@ -135,10 +165,11 @@ void buildPathParameter(std::span<const toolpath::ClRecord> records,
 Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> axes,
                                       std::span<const toolpath::ClRecord> records,
                                       const AxisProfileOptions& options) {
-    if (Status ok = validateInput(axes, records, options); !ok) {
+    std::vector<double> feedRuns;
+    if (Status ok = validateInput(axes, records, options, feedRuns); !ok) {
         return std::unexpected(std::move(ok.error()));
     }
-    const Result<double> feed = chooseFeed(records, options.feedOverride);
+    const Result<double> feed = chooseFeed(records, options.feedOverride, std::move(feedRuns));
     if (!feed) {
         return std::unexpected(feed.error());
     }
@@ -149,31 +180,22 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
     buildPathParameter(records, options, profile);
     profile.cycleTime = profile.pathParameter.back() / profile.feed;
     const std::size_t n = profile.pathParameter.size();
-    profile.time.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        profile.time[i] = profile.pathParameter[i] / profile.feed;
-    }
     std::vector<std::size_t> knots;
     if (options.method == DerivativeMethod::Spline) {
         knots = motionKnots(profile.pathParameter, axes, profile.sampleRecord);
         profile.mergedShortChords = n - knots.size();
     }
-    std::vector<double> position;
+    std::vector<Result<AxisSeries>> series =
+        differentiateAxes(profile.pathParameter, sampledAxes(axes, profile.sampleRecord),
+                          profile.feed, options.method, options.filterSeconds, knots);
     for (kinematics::AxisId id : kinematics::kAllAxes) {
-        position.resize(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            position[i] = axes[profile.sampleRecord[i]][id];
-        }
-        Result<AxisSeries> series =
-            differentiateAxis(profile.pathParameter, std::move(position), profile.feed,
-                              options.method, options.filterSeconds, knots);
-        if (!series) {
-            Error error = std::move(series.error());
+        Result<AxisSeries>& axis = series[static_cast<int>(id)];
+        if (!axis) {
+            Error error = std::move(axis.error());
             error.message = std::string("axis ") + kinematics::axisName(id) + ": " + error.message;
             return std::unexpected(std::move(error));
         }
-        profile.axes[static_cast<int>(id)] = std::move(*series);
-        position = {};
+        profile.axes[static_cast<int>(id)] = std::move(*axis);
     }
     // Without merged points the sampled A already is the whole program: no gather needed.
     const std::vector<double>& sampledA =

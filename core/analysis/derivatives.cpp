@@ -4,7 +4,9 @@
 #include "core/geometry/cubic_spline.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 
 namespace bladeaxis::analysis {
@@ -65,12 +67,34 @@ void scale(std::vector<double>& values, double factor) {
     }
 }
 
+// The largest |v|, NaN ignored. std::max keeps the running peak against NaN and the magnitudes
+// have no -0, so the order of the comparisons does not change the result: four running peaks
+// side by side hide the latency of each comparison.
 double maxAbs(std::span<const double> values) {
-    double peak = 0.0;
-    for (double v : values) {
-        peak = std::max(peak, std::abs(v));
+    constexpr std::size_t kLanes = 4;
+    std::array<double, kLanes> peaks{};
+    std::size_t i = 0;
+    for (; i + kLanes <= values.size(); i += kLanes) {
+        for (std::size_t lane = 0; lane < kLanes; ++lane) {
+            peaks[lane] = std::max(peaks[lane], std::abs(values[i + lane]));
+        }
     }
-    return peak;
+    for (; i < values.size(); ++i) {
+        peaks[0] = std::max(peaks[0], std::abs(values[i]));
+    }
+    return std::max(std::max(peaks[0], peaks[1]), std::max(peaks[2], peaks[3]));
+}
+
+// The percentile of |velocity| and |acceleration| an AxisSeries reports.
+constexpr double kReportedQuantile = 0.999;
+
+// Peaks and percentiles of the stored samples (the spline takes them while making the samples).
+void takeSampleFigures(AxisSeries& series) {
+    series.peakVelocity = maxAbs(series.velocity);
+    series.peakAcceleration = maxAbs(series.acceleration);
+    series.peakJerk = maxAbs(series.jerk);
+    series.p999Velocity = absPercentile(series.velocity, kReportedQuantile);
+    series.p999Acceleration = absPercentile(series.acceleration, kReportedQuantile);
 }
 
 void finiteDifferences(std::span<const double> s, double feed, AxisSeries& series) {
@@ -81,66 +105,7 @@ void finiteDifferences(std::span<const double> s, double feed, AxisSeries& serie
     scale(series.velocity, feed);
     scale(series.acceleration, feed * feed);
     scale(series.jerk, feed * feed * feed);
-}
-
-// Returns the largest |velocity| found at the 4 interior points of the intervals.
-Status splineDerivatives(std::span<const double> s, double feed, AxisSeries& series,
-                         double& interiorPeak, std::span<const std::size_t> knots) {
-    const std::size_t n = s.size();
-    series.velocity.assign(n, 0.0);
-    series.acceleration.assign(n, 0.0);
-    series.jerk.assign(n, 0.0);
-    interiorPeak = 0.0;
-    if (n < 2) {
-        return {};
-    }
-    std::vector<double> knotS, knotQ;
-    knotS.reserve(knots.size());
-    knotQ.reserve(knots.size());
-    for (const std::size_t k : knots) {
-        knotS.push_back(s[k]);
-        knotQ.push_back(series.position[k]);
-    }
-    const geometry::CubicSpline spline(knotS, knotQ);
-    if (!spline.isValid()) {
-        return makeError(ErrorCode::Internal, "axis spline rejected validated samples");
-    }
-    const double feed2 = feed * feed;
-    const double feed3 = feed2 * feed;
-    std::size_t knot = 0; // the knot at or before sample i
-    for (std::size_t i = 0; i < n; ++i) {
-        while (knot + 1 < knots.size() && knots[knot + 1] <= i) {
-            ++knot;
-        }
-        if (knots[knot] == i) {
-            series.velocity[i] = spline.firstDerivativeAtKnot(knot) * feed;
-            series.acceleration[i] = spline.secondDerivativeAtKnot(knot) * feed2;
-            series.jerk[i] = spline.thirdDerivativeAtKnot(knot) * feed3;
-            continue;
-        }
-        // A merged sample lies inside the interval that starts at the knot before it.
-        series.velocity[i] = spline.firstDerivative(knot, s[i]) * feed;
-        series.acceleration[i] = spline.secondDerivative(knot, s[i]) * feed2;
-        series.jerk[i] = spline.thirdDerivative(knot) * feed3;
-    }
-    for (std::size_t i = 0; i + 1 < knotS.size(); ++i) {
-        const double h = knotS[i + 1] - knotS[i];
-        for (int k = 1; k <= 4; ++k) {
-            const double x = knotS[i] + 0.2 * k * h;
-            interiorPeak = std::max(interiorPeak, std::abs(spline.firstDerivative(i, x)));
-        }
-    }
-    interiorPeak *= feed;
-    return {};
-}
-
-// Every sample's index: the knots of the raw spline.
-std::vector<std::size_t> allSamples(std::size_t n) {
-    std::vector<std::size_t> all(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        all[i] = i;
-    }
-    return all;
+    takeSampleFigures(series);
 }
 
 Status validateKnots(std::span<const std::size_t> knots, std::size_t n) {
@@ -155,12 +120,10 @@ Status validateKnots(std::span<const std::size_t> knots, std::size_t n) {
     return {};
 }
 
-struct Peaks {
-    double velocity = 0.0, acceleration = 0.0, jerk = 0.0;
-};
-
-Peaks filteredDerivatives(std::span<const double> s, double feed, double filterSeconds,
-                          AxisSeries& series) {
+// The controller-like filter sampled at the samples; the peaks are also taken over its whole 1 ms
+// series.
+void filteredDerivatives(std::span<const double> s, double feed, double filterSeconds,
+                         AxisSeries& series) {
     const FilteredAxis filtered = filterAxis(s, series.position, feed, filterSeconds);
     const std::size_t n = s.size();
     series.velocity.resize(n);
@@ -172,10 +135,141 @@ Peaks filteredDerivatives(std::span<const double> s, double feed, double filterS
         series.acceleration[i] = sampleAt(filtered.acceleration, filtered.step, t);
         series.jerk[i] = sampleAt(filtered.jerk, filtered.step, t);
     }
-    return {maxAbs(filtered.velocity), maxAbs(filtered.acceleration), maxAbs(filtered.jerk)};
+    takeSampleFigures(series);
+    series.peakVelocity = std::max(series.peakVelocity, maxAbs(filtered.velocity));
+    series.peakAcceleration = std::max(series.peakAcceleration, maxAbs(filtered.acceleration));
+    series.peakJerk = std::max(series.peakJerk, maxAbs(filtered.jerk));
 }
 
-Status validate(std::span<const double> s, std::span<const double> position, double feed) {
+// The knots of the derivative spline: ascending sample indices, or every sample (`indices`
+// empty), when the knot values are the samples themselves and need no gathering.
+struct SplineKnots {
+    std::span<const std::size_t> indices;
+    std::size_t sampleCount = 0;
+
+    bool everySample() const { return indices.empty(); }
+    std::size_t count() const { return everySample() ? sampleCount : indices.size(); }
+    std::size_t sample(std::size_t knot) const { return everySample() ? knot : indices[knot]; }
+
+    // The values at the knots: the samples themselves, or a gathered copy kept in `storage`.
+    std::span<const double> valuesAtKnots(std::span<const double> samples,
+                                          std::vector<double>& storage) const {
+        if (everySample()) {
+            return samples;
+        }
+        storage.resize(indices.size());
+        for (std::size_t k = 0; k < indices.size(); ++k) {
+            storage[k] = samples[indices[k]];
+        }
+        return storage;
+    }
+};
+
+// The largest |q'| at 4 interior points of an interval (q'' is linear and q''' constant per
+// interval, so only the velocity can peak between the samples).
+double interiorSpeed(const geometry::CubicSplineInterval& piece) {
+    double peak = 0.0;
+    for (int k = 1; k <= 4; ++k) {
+        const double x = piece.left + 0.2 * k * piece.width();
+        peak = std::max(peak, std::abs(piece.firstDerivative(x)));
+    }
+    return peak;
+}
+
+// Velocity, acceleration and jerk at every sample from the spline with the given knot values and
+// moments (a merged sample lies inside the interval that starts at the knot before it). Peaks
+// and percentiles are taken as the values are made rather than by reading the series back. The
+// peak velocity also looks at 4 interior points per interval; they cost two divisions each, the
+// most of the evaluation, so an interval whose bound does not exceed the peak so far, and so
+// cannot raise it, is passed over.
+void sampleSpline(std::span<const double> s, const SplineKnots& knots,
+                  std::span<const double> knotS, std::span<const double> knotQ,
+                  std::span<const double> moments, double feed, AxisSeries& series) {
+    const double feed2 = feed * feed;
+    const double feed3 = feed2 * feed;
+    series.velocity.resize(s.size());
+    series.acceleration.resize(s.size());
+    series.jerk.resize(s.size());
+    double peakVelocity = 0.0, peakAcceleration = 0.0, peakJerk = 0.0;
+    AbsPercentile velocityQuantile(s.size(), kReportedQuantile);
+    AbsPercentile accelerationQuantile(s.size(), kReportedQuantile);
+    const auto store = [&](std::size_t i, double velocity, double acceleration, double jerk) {
+        series.velocity[i] = velocity * feed;
+        series.acceleration[i] = acceleration * feed2;
+        series.jerk[i] = jerk * feed3;
+        peakVelocity = std::max(peakVelocity, std::abs(series.velocity[i]));
+        peakAcceleration = std::max(peakAcceleration, std::abs(series.acceleration[i]));
+        peakJerk = std::max(peakJerk, std::abs(series.jerk[i]));
+        velocityQuantile.add(series.velocity[i]);
+        accelerationQuantile.add(series.acceleration[i]);
+    };
+    const auto interval = [&](std::size_t k) {
+        return geometry::CubicSplineInterval{knotS[k],     knotS[k + 1], knotQ[k],
+                                             knotQ[k + 1], moments[k],   moments[k + 1]};
+    };
+    double interiorPeak = 0.0;
+    const std::size_t last = knots.count() - 1;
+    for (std::size_t k = 0; k < last; ++k) {
+        const geometry::CubicSplineInterval piece = interval(k);
+        const std::size_t first = knots.sample(k);
+        store(first, piece.firstDerivative(piece.left), piece.leftMoment, piece.thirdDerivative());
+        for (std::size_t i = first + 1; i < knots.sample(k + 1); ++i) {
+            store(i, piece.firstDerivative(s[i]), piece.secondDerivative(s[i]),
+                  piece.thirdDerivative());
+        }
+        // Rounding is monotonic: |q'| <= bound at the interior points stays so times the feed.
+        if (!(piece.firstDerivativeBound() * feed <= peakVelocity)) {
+            interiorPeak = std::max(interiorPeak, interiorSpeed(piece));
+        }
+    }
+    const geometry::CubicSplineInterval lastPiece = interval(last - 1);
+    store(s.size() - 1, lastPiece.firstDerivative(lastPiece.right), lastPiece.rightMoment,
+          lastPiece.thirdDerivative());
+    series.peakVelocity = std::max(peakVelocity, interiorPeak * feed);
+    series.peakAcceleration = peakAcceleration;
+    series.peakJerk = peakJerk;
+    series.p999Velocity = velocityQuantile.value();
+    series.p999Acceleration = accelerationQuantile.value();
+}
+
+// Spline derivatives of several series over the same samples (at least 2) and knots: the knots
+// are shared, so one elimination of the spline system serves every series.
+void splineDerivatives(std::span<const double> s, double feed, const SplineKnots& knots,
+                       std::span<AxisSeries* const> series) {
+    std::vector<double> gatheredS;
+    const std::span<const double> knotS = knots.valuesAtKnots(s, gatheredS);
+    std::vector<std::vector<double>> gatheredQ(series.size());
+    std::vector<std::span<const double>> knotQ;
+    for (std::size_t k = 0; k < series.size(); ++k) {
+        knotQ.push_back(knots.valuesAtKnots(series[k]->position, gatheredQ[k]));
+    }
+    // One block for every series' moments, left uninitialised: the solve writes each entry.
+    const auto momentBlock = std::make_unique_for_overwrite<double[]>(knotS.size() * series.size());
+    std::vector<std::span<double>> moments;
+    for (std::size_t k = 0; k < series.size(); ++k) {
+        moments.emplace_back(momentBlock.get() + k * knotS.size(), knotS.size());
+    }
+    geometry::notAKnotMoments(knotS, knotQ, moments);
+    for (std::size_t k = 0; k < series.size(); ++k) {
+        sampleSpline(s, knots, knotS, knotQ[k], moments[k], feed, *series[k]);
+    }
+}
+
+// The first sample at which the path parameter is unusable (not finite, or not above the one
+// before it); s.size() when there is none. Checked once for all axes over the same samples.
+std::size_t firstBadPathSample(std::span<const double> s) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (!std::isfinite(s[i]) || (i > 0 && !(s[i] > s[i - 1]))) {
+            return i;
+        }
+    }
+    return s.size();
+}
+
+// The samples of one axis; badPath is firstBadPathSample(s). The error names the first bad
+// sample, a non-finite value before an out-of-order path parameter.
+Status validate(std::span<const double> s, std::span<const double> position, double feed,
+                std::size_t badPath) {
     if (s.size() != position.size()) {
         return makeError(ErrorCode::InvalidArgument,
                          "axis samples: " + std::to_string(s.size()) + " path values but " +
@@ -185,91 +279,166 @@ Status validate(std::span<const double> s, std::span<const double> position, dou
         return makeError(ErrorCode::InvalidArgument,
                          "feed must be positive and finite, got " + std::to_string(feed));
     }
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (!std::isfinite(s[i]) || !std::isfinite(position[i])) {
-            return makeError(ErrorCode::Geometry,
-                             "non-finite path value or position at sample " + std::to_string(i));
+    const auto badPosition = static_cast<std::size_t>(
+        std::ranges::find_if(position, [](double q) { return !std::isfinite(q); }) -
+        position.begin());
+    const std::size_t bad = std::min(badPath, badPosition);
+    if (bad == s.size()) {
+        return {};
+    }
+    if (!std::isfinite(s[bad]) || !std::isfinite(position[bad])) {
+        return makeError(ErrorCode::Geometry,
+                         "non-finite path value or position at sample " + std::to_string(bad));
+    }
+    return makeError(ErrorCode::InvalidArgument,
+                     "path parameter not strictly increasing at sample " + std::to_string(bad));
+}
+
+bool isStill(std::span<const double> position) {
+    return std::ranges::all_of(position, [&](double q) { return q == position.front(); });
+}
+
+Status checkFinite(const AxisSeries& series) {
+    if (!std::isfinite(series.peakVelocity + series.peakAcceleration + series.peakJerk)) {
+        return makeError(ErrorCode::Geometry, "axis derivatives overflow (samples too close for "
+                                              "the jumps between them)");
+    }
+    return {};
+}
+
+// Derivatives and peaks of the moving series (validated, not still) by `method`. An error (bad
+// knots) applies to every series.
+Status differentiateMoving(std::span<const double> s, std::span<AxisSeries* const> moving,
+                           double feed, DerivativeMethod method, double filterSeconds,
+                           std::span<const std::size_t> knots) {
+    if (moving.empty()) {
+        return {}; // a series of fewer than 2 samples is still: the methods below get >= 2
+    }
+    if (method == DerivativeMethod::Filtered) {
+        for (AxisSeries* series : moving) {
+            filteredDerivatives(s, feed, filterSeconds, *series);
         }
-        if (i > 0 && !(s[i] > s[i - 1])) {
-            return makeError(ErrorCode::InvalidArgument,
-                             "path parameter not strictly increasing at sample " +
-                                 std::to_string(i));
+        return {};
+    }
+    if (method == DerivativeMethod::FiniteDifference) {
+        for (AxisSeries* series : moving) {
+            finiteDifferences(s, feed, *series);
+        }
+        return {};
+    }
+    SplineKnots splineKnots{{}, s.size()};
+    if (!knots.empty() && method == DerivativeMethod::Spline) {
+        if (Status ok = validateKnots(knots, s.size()); !ok) {
+            return ok;
+        }
+        // Valid knots are ascending and unique from the first sample to the last: as many of
+        // them as samples are every sample.
+        if (knots.size() < s.size()) {
+            splineKnots.indices = knots;
         }
     }
+    splineDerivatives(s, feed, splineKnots, moving);
     return {};
 }
 
 } // namespace
 
+std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s,
+                                                  std::vector<std::vector<double>> positions,
+                                                  double feed, DerivativeMethod method,
+                                                  double filterSeconds,
+                                                  std::span<const std::size_t> knots) {
+    const std::size_t badPath = firstBadPathSample(s);
+    std::vector<Result<AxisSeries>> results(positions.size());
+    std::vector<std::size_t> movingIndex;
+    std::vector<AxisSeries*> moving;
+    for (std::size_t k = 0; k < positions.size(); ++k) {
+        if (Status ok = validate(s, positions[k], feed, badPath); !ok) {
+            results[k] = std::unexpected(std::move(ok.error()));
+            continue;
+        }
+        AxisSeries& series = *results[k];
+        series.position = std::move(positions[k]);
+        if (isStill(series.position)) {
+            // A still axis (B in four-axis work) has exactly zero derivatives by either method:
+            // skip the fit, which is most of the cost per axis.
+            const std::size_t n = series.position.size();
+            series.velocity.assign(n, 0.0);
+            series.acceleration.assign(n, 0.0);
+            series.jerk.assign(n, 0.0);
+            continue;
+        }
+        movingIndex.push_back(k);
+        moving.push_back(&series);
+    }
+    const Status ok = differentiateMoving(s, moving, feed, method, filterSeconds, knots);
+    for (std::size_t k = 0; k < moving.size(); ++k) {
+        if (Status summary = ok ? checkFinite(*moving[k]) : ok; !summary) {
+            results[movingIndex[k]] = std::unexpected(std::move(summary.error()));
+        }
+    }
+    return results;
+}
+
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,
                                      double feed, DerivativeMethod method, double filterSeconds,
                                      std::span<const std::size_t> knots) {
-    if (Status ok = validate(s, position, feed); !ok) {
-        return std::unexpected(std::move(ok.error()));
+    std::vector<std::vector<double>> positions;
+    positions.push_back(std::move(position));
+    return std::move(
+        differentiateAxes(s, std::move(positions), feed, method, filterSeconds, knots).front());
+}
+
+AbsPercentile::AbsPercentile(std::size_t count, double p) {
+    if (count == 0 || !(p >= 0.0)) {
+        m_smallestKept = HUGE_VAL; // nothing to rank: value() is 0
+        return;
     }
-    AxisSeries series;
-    series.position = std::move(position);
-    double interiorPeak = 0.0;
-    const bool still = std::ranges::all_of(series.position,
-                                           [&](double q) { return q == series.position.front(); });
-    if (still) {
-        // A still axis (B in four-axis work) has exactly zero derivatives by either method:
-        // skip the fit, which is most of the cost per axis.
-        const std::size_t n = series.position.size();
-        series.velocity.assign(n, 0.0);
-        series.acceleration.assign(n, 0.0);
-        series.jerk.assign(n, 0.0);
-        return series;
+    const double position = std::min(p, 1.0) * static_cast<double>(count - 1);
+    const auto k = static_cast<std::size_t>(position);
+    m_fraction = position - static_cast<double>(k);
+    m_keep = count - k;
+    m_kept.reserve(m_keep);
+}
+
+void AbsPercentile::keep(double v) {
+    if (m_keep == 0) {
+        return; // no values to rank (a NaN still fails the test in add)
     }
-    Peaks filteredPeaks;
-    if (method == DerivativeMethod::Spline || method == DerivativeMethod::RawSpline) {
-        std::vector<std::size_t> every;
-        if (knots.empty() || method == DerivativeMethod::RawSpline) {
-            every = allSamples(s.size());
-            knots = every;
-        } else if (Status ok = validateKnots(knots, s.size()); !ok) {
-            return std::unexpected(std::move(ok.error()));
-        }
-        if (Status ok = splineDerivatives(s, feed, series, interiorPeak, knots); !ok) {
-            return std::unexpected(std::move(ok.error()));
-        }
-    } else if (method == DerivativeMethod::Filtered) {
-        filteredPeaks = filteredDerivatives(s, feed, filterSeconds, series);
-    } else {
-        finiteDifferences(s, feed, series);
+    const double magnitude = std::isnan(v) ? HUGE_VAL : std::abs(v);
+    const std::ranges::greater smallestOnTop;
+    if (m_kept.size() < m_keep) {
+        m_kept.push_back(magnitude);
+        std::ranges::push_heap(m_kept, smallestOnTop);
+    } else if (magnitude > m_kept.front()) {
+        std::ranges::pop_heap(m_kept, smallestOnTop);
+        m_kept.back() = magnitude;
+        std::ranges::push_heap(m_kept, smallestOnTop);
     }
-    series.peakVelocity = std::max({maxAbs(series.velocity), interiorPeak, filteredPeaks.velocity});
-    series.peakAcceleration = std::max(maxAbs(series.acceleration), filteredPeaks.acceleration);
-    series.peakJerk = std::max(maxAbs(series.jerk), filteredPeaks.jerk);
-    series.p999Velocity = absPercentile(series.velocity, 0.999);
-    series.p999Acceleration = absPercentile(series.acceleration, 0.999);
-    if (!std::isfinite(series.peakVelocity + series.peakAcceleration + series.peakJerk)) {
-        return makeError(ErrorCode::Geometry, "axis derivatives overflow (samples too close for "
-                                              "the jumps between them)");
+    if (m_kept.size() == m_keep) {
+        m_smallestKept = m_kept.front();
     }
-    return series;
+}
+
+double AbsPercentile::value() const {
+    if (m_kept.empty()) {
+        return 0.0;
+    }
+    const double lower = m_kept.front();
+    if (m_fraction == 0.0 || m_kept.size() < 2) {
+        return lower;
+    }
+    // The next larger magnitude is one of the two children of the heap's top.
+    const double upper = m_kept.size() == 2 ? m_kept[1] : std::min(m_kept[1], m_kept[2]);
+    return lower + m_fraction * (upper - lower);
 }
 
 double absPercentile(std::span<const double> values, double p) {
-    if (values.empty() || !(p >= 0.0)) {
-        return 0.0;
+    AbsPercentile quantile(values.size(), p);
+    for (double v : values) {
+        quantile.add(v);
     }
-    const std::size_t n = values.size();
-    const double position = std::min(p, 1.0) * static_cast<double>(n - 1);
-    const auto k = static_cast<std::size_t>(position);
-    const double fraction = position - static_cast<double>(k);
-    // Only the n - k largest magnitudes matter: for p = 0.999 that is 0.1 % of the samples, so
-    // a partial sort into a small buffer avoids copying (and page-faulting) the whole series.
-    // NaN would break the ordering: it ranks above every number.
-    const auto magnitude = [](double v) { return std::isnan(v) ? HUGE_VAL : std::abs(v); };
-    std::vector<double> top(n - k);
-    std::ranges::partial_sort_copy(values, top, std::ranges::greater{}, magnitude, magnitude);
-    const double lower = magnitude(top.back());
-    if (fraction == 0.0 || top.size() < 2) {
-        return lower;
-    }
-    const double upper = magnitude(top[top.size() - 2]);
-    return lower + fraction * (upper - lower);
+    return quantile.value();
 }
 
 } // namespace bladeaxis::analysis

@@ -4,6 +4,8 @@
 
 #include "core/analysis/axis_profile.h"
 
+#include <cmath>
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -22,8 +24,43 @@ Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<doub
                                      double filterSeconds = 0.008,
                                      std::span<const std::size_t> knots = {});
 
+// differentiateAxis of several axes sampled at the same s, one result per axis, each the one
+// differentiateAxis gives. The spline methods fit every axis through the same knots, so the
+// spline system is eliminated once for all axes, and s is checked once.
+std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s,
+                                                  std::vector<std::vector<double>> positions,
+                                                  double feed, DerivativeMethod method,
+                                                  double filterSeconds = 0.008,
+                                                  std::span<const std::size_t> knots = {});
+
 // The p-quantile (0 <= p <= 1) of |values|, linear interpolation between order statistics
 // (numpy's default). 0 for an empty input. O(n).
 double absPercentile(std::span<const double> values, double p);
+
+// absPercentile of `count` values added one at a time, without storing them: only the
+// count - k largest magnitudes the quantile depends on are kept, in a heap (0.1 % of the values
+// for p = 0.999).
+class AbsPercentile {
+  public:
+    AbsPercentile(std::size_t count, double p);
+
+    void add(double v) {
+        // NaN fails the comparison and is kept: it ranks above every number.
+        if (!(std::abs(v) <= m_smallestKept)) {
+            keep(v);
+        }
+    }
+
+    // After all `count` values.
+    double value() const;
+
+  private:
+    void keep(double v);
+
+    std::vector<double> m_kept; // min-heap of the largest magnitudes so far
+    std::size_t m_keep = 0;
+    double m_fraction = 0.0;
+    double m_smallestKept = -HUGE_VAL; // every value is kept until the heap is full
+};
 
 } // namespace bladeaxis::analysis

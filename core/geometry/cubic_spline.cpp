@@ -1,73 +1,126 @@
 #include "core/geometry/cubic_spline.h"
 
 #include <cmath>
-#include <utility>
+#include <memory>
 
 namespace bladeaxis::geometry {
 
 namespace {
 
-// Solves a tridiagonal system in place (Thomas algorithm): sub[i] x[i-1] + diag[i] x[i] +
-// super[i] x[i+1] = rhs[i]. The not-a-knot rows keep the system well conditioned for the
-// strictly increasing knots we accept.
-std::vector<double> solveTridiagonal(std::vector<double> sub, std::vector<double> diag,
-                                     std::vector<double> super, std::vector<double> rhs) {
-    const std::size_t n = diag.size();
-    for (std::size_t i = 1; i < n; ++i) {
-        const double factor = sub[i] / diag[i - 1];
-        diag[i] -= factor * super[i - 1];
-        rhs[i] -= factor * rhs[i - 1];
+// The tridiagonal system of the not-a-knot spline through n >= 4 knots, in the interior moments
+// M_1 .. M_{n-2}: row r is the continuity of q' at knot r + 1. M_0 and M_{n-1} are substituted
+// from the not-a-knot conditions at knots 1 and n-2, which changes the first and the last row.
+// The coefficients depend only on the knots and are computed as the rows are eliminated.
+class NotAKnotRows {
+  public:
+    explicit NotAKnotRows(std::span<const double> knots) : m_knots(knots) {
+        const std::size_t last = rows() - 1;
+        const double h0 = h(0), h1 = h(1);
+        // Not-a-knot at knot 1: M_0 = ((h0 + h1) M_1 - h0 M_2) / h1, substituted into row 0.
+        m_firstDiag = 2.0 * (h0 + h1) + h0 * (h0 + h1) / h1;
+        m_firstSuper = h1 - h0 * h0 / h1;
+        // Not-a-knot at knot n-2: M_{n-1} = ((hl + hp) M_{n-2} - hl M_{n-3}) / hp.
+        const double hl = h(last + 1), hp = h(last);
+        m_lastDiag = 2.0 * (hp + hl) + hl * (hl + hp) / hp;
+        m_lastSub = hp - hl * hl / hp;
     }
-    std::vector<double> x(n);
-    x[n - 1] = rhs[n - 1] / diag[n - 1];
-    for (std::size_t i = n - 1; i-- > 0;) {
-        x[i] = (rhs[i] - super[i] * x[i + 1]) / diag[i];
+
+    std::size_t rows() const { return m_knots.size() - 2; }
+    double h(std::size_t i) const { return m_knots[i + 1] - m_knots[i]; }
+
+    double sub(std::size_t row) const { return row + 1 == rows() ? m_lastSub : h(row); }
+    double diag(std::size_t row) const {
+        if (row == 0) {
+            return m_firstDiag;
+        }
+        return row + 1 == rows() ? m_lastDiag : 2.0 * (h(row) + h(row + 1));
     }
-    return x;
+    double super(std::size_t row) const { return row == 0 ? m_firstSuper : h(row + 1); }
+
+    // The moments at the two end knots from the not-a-knot conditions.
+    double firstMoment(std::span<const double> moments) const {
+        return ((h(0) + h(1)) * moments[1] - h(0) * moments[2]) / h(1);
+    }
+    double lastMoment(std::span<const double> moments) const {
+        const std::size_t n = m_knots.size();
+        const double hl = h(n - 2), hp = h(n - 3);
+        return ((hl + hp) * moments[n - 2] - hl * moments[n - 3]) / hp;
+    }
+
+  private:
+    std::span<const double> m_knots;
+    double m_firstDiag = 0.0, m_firstSuper = 0.0, m_lastDiag = 0.0, m_lastSub = 0.0;
+};
+
+double slope(std::span<const double> values, const NotAKnotRows& system, std::size_t i) {
+    return (values[i + 1] - values[i]) / system.h(i);
 }
 
-// Moments (second derivatives at the knots) of the not-a-knot spline, n >= 4.
-std::vector<double> notAKnotMoments(const std::vector<double>& x, const std::vector<double>& y) {
-    const std::size_t n = x.size();
-    const std::size_t m = n - 2; // unknowns M_1 .. M_{n-2}
-    std::vector<double> h(n - 1);
-    for (std::size_t i = 0; i + 1 < n; ++i) {
-        h[i] = x[i + 1] - x[i];
+// Thomas algorithm on the rows, the right-hand side of each series 6 (slope_{r+1} - slope_r),
+// eliminated into moments[k][r + 1] and substituted back there. The pivots are the only
+// scratch: one elimination of the matrix serves every series.
+void solveInteriorMoments(const NotAKnotRows& system,
+                          std::span<const std::span<const double>> values,
+                          std::span<const std::span<double>> moments) {
+    const std::size_t rows = system.rows();
+    const std::size_t series = values.size();
+    // Uninitialised: each pivot is written before it is read.
+    const auto pivot = std::make_unique_for_overwrite<double[]>(rows);
+    std::vector<double> previousSlope(series);
+    pivot[0] = system.diag(0);
+    for (std::size_t k = 0; k < series; ++k) {
+        previousSlope[k] = slope(values[k], system, 1);
+        moments[k][1] = 6.0 * (previousSlope[k] - slope(values[k], system, 0));
     }
-    std::vector<double> sub(m, 0.0), diag(m), super(m, 0.0), rhs(m);
-    for (std::size_t row = 0; row < m; ++row) {
-        const std::size_t i = row + 1;
-        sub[row] = h[i - 1];
-        diag[row] = 2.0 * (h[i - 1] + h[i]);
-        super[row] = h[i];
-        rhs[row] = 6.0 * ((y[i + 1] - y[i]) / h[i] - (y[i] - y[i - 1]) / h[i - 1]);
+    for (std::size_t row = 1; row < rows; ++row) {
+        const double factor = system.sub(row) / pivot[row - 1];
+        pivot[row] = system.diag(row) - factor * system.super(row - 1);
+        for (std::size_t k = 0; k < series; ++k) {
+            const double next = slope(values[k], system, row + 1);
+            moments[k][row + 1] = 6.0 * (next - previousSlope[k]) - factor * moments[k][row];
+            previousSlope[k] = next;
+        }
     }
-    // Not-a-knot at knot 1: M_0 = ((h0 + h1) M_1 - h0 M_2) / h1, substituted into row 0.
-    diag[0] += h[0] * (h[0] + h[1]) / h[1];
-    super[0] -= h[0] * h[0] / h[1];
-    // Not-a-knot at knot n-2: M_{n-1} = ((h_{n-2} + h_{n-3}) M_{n-2} - h_{n-2} M_{n-3}) / h_{n-3}.
-    const double hl = h[n - 2];
-    const double hp = h[n - 3];
-    diag[m - 1] += hl * (hl + hp) / hp;
-    sub[m - 1] -= hl * hl / hp;
-    if (m == 1) {
-        // Both substitutions hit the same single row; the system is just the parabola through
-        // three points, handled by the caller.
-        return {};
+    for (std::size_t k = 0; k < series; ++k) {
+        moments[k][rows] = moments[k][rows] / pivot[rows - 1];
     }
-    // Moved, not copied: four n-vectors per fit matter at a million samples (benchmarked).
-    const std::vector<double> inner =
-        solveTridiagonal(std::move(sub), std::move(diag), std::move(super), std::move(rhs));
-    std::vector<double> moments(n);
-    for (std::size_t row = 0; row < m; ++row) {
-        moments[row + 1] = inner[row];
+    for (std::size_t row = rows - 1; row-- > 0;) {
+        const double super = system.super(row);
+        for (std::size_t k = 0; k < series; ++k) {
+            moments[k][row + 1] = (moments[k][row + 1] - super * moments[k][row + 2]) / pivot[row];
+        }
     }
-    moments[0] = ((h[0] + h[1]) * moments[1] - h[0] * moments[2]) / h[1];
-    moments[n - 1] = ((hl + hp) * moments[n - 2] - hl * moments[n - 3]) / hp;
-    return moments;
 }
 
 } // namespace
+
+void notAKnotMoments(std::span<const double> knots, std::span<const std::span<const double>> values,
+                     std::span<const std::span<double>> moments) {
+    const std::size_t n = knots.size();
+    if (n == 2) {
+        for (const std::span<double> m : moments) {
+            m[0] = m[1] = 0.0;
+        }
+        return;
+    }
+    if (n == 3) {
+        // The not-a-knot spline through three points is their parabola: constant moment.
+        for (std::size_t k = 0; k < values.size(); ++k) {
+            const std::span<const double> y = values[k];
+            const double d0 = (y[1] - y[0]) / (knots[1] - knots[0]);
+            const double d1 = (y[2] - y[1]) / (knots[2] - knots[1]);
+            const double moment = 2.0 * (d1 - d0) / (knots[2] - knots[0]);
+            moments[k][0] = moments[k][1] = moments[k][2] = moment;
+        }
+        return;
+    }
+    const NotAKnotRows system(knots);
+    solveInteriorMoments(system, values, moments);
+    for (const std::span<double> m : moments) {
+        m[0] = system.firstMoment(m);
+        m[n - 1] = system.lastMoment(m);
+    }
+}
 
 CubicSpline::CubicSpline(std::span<const double> knots, std::span<const double> values)
     : m_knots(knots.begin(), knots.end()), m_values(values.begin(), values.end()) {
@@ -85,57 +138,11 @@ CubicSpline::CubicSpline(std::span<const double> knots, std::span<const double> 
             return;
         }
     }
-    if (n == 2) {
-        m_second.assign(2, 0.0);
-    } else if (n == 3) {
-        // The not-a-knot spline through three points is their parabola: constant moment.
-        const double d0 = (m_values[1] - m_values[0]) / (m_knots[1] - m_knots[0]);
-        const double d1 = (m_values[2] - m_values[1]) / (m_knots[2] - m_knots[1]);
-        m_second.assign(3, 2.0 * (d1 - d0) / (m_knots[2] - m_knots[0]));
-    } else {
-        m_second = notAKnotMoments(m_knots, m_values);
-    }
+    m_second.resize(n);
+    const std::span<const double> series[] = {m_values};
+    const std::span<double> moments[] = {m_second};
+    notAKnotMoments(m_knots, series, moments);
     m_valid = true;
-}
-
-double CubicSpline::value(std::size_t i, double x) const {
-    const double h = m_knots[i + 1] - m_knots[i];
-    const double a = m_knots[i + 1] - x;
-    const double b = x - m_knots[i];
-    return m_second[i] * a * a * a / (6.0 * h) + m_second[i + 1] * b * b * b / (6.0 * h) +
-           (m_values[i] / h - m_second[i] * h / 6.0) * a +
-           (m_values[i + 1] / h - m_second[i + 1] * h / 6.0) * b;
-}
-
-double CubicSpline::firstDerivative(std::size_t i, double x) const {
-    const double h = m_knots[i + 1] - m_knots[i];
-    const double a = m_knots[i + 1] - x;
-    const double b = x - m_knots[i];
-    return -m_second[i] * a * a / (2.0 * h) + m_second[i + 1] * b * b / (2.0 * h) +
-           (m_values[i + 1] - m_values[i]) / h - (m_second[i + 1] - m_second[i]) * h / 6.0;
-}
-
-double CubicSpline::secondDerivative(std::size_t i, double x) const {
-    const double h = m_knots[i + 1] - m_knots[i];
-    return (m_second[i] * (m_knots[i + 1] - x) + m_second[i + 1] * (x - m_knots[i])) / h;
-}
-
-double CubicSpline::thirdDerivative(std::size_t i) const {
-    return (m_second[i + 1] - m_second[i]) / (m_knots[i + 1] - m_knots[i]);
-}
-
-double CubicSpline::firstDerivativeAtKnot(std::size_t i) const {
-    const std::size_t interval = i + 1 < m_knots.size() ? i : i - 1;
-    return firstDerivative(interval, m_knots[i]);
-}
-
-double CubicSpline::secondDerivativeAtKnot(std::size_t i) const {
-    return m_second[i];
-}
-
-double CubicSpline::thirdDerivativeAtKnot(std::size_t i) const {
-    const std::size_t interval = i + 1 < m_knots.size() ? i : i - 1;
-    return thirdDerivative(interval);
 }
 
 } // namespace bladeaxis::geometry

@@ -1,10 +1,13 @@
 #include "core/analysis/derivatives.h"
+#include "core/geometry/cubic_spline.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace bladeaxis::analysis {
@@ -123,6 +126,152 @@ TEST(AbsPercentile, RanksNanAboveEveryNumber) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const std::vector<double> values{nan, 1.0, -2.0, nan, 3.0};
     EXPECT_DOUBLE_EQ(absPercentile(values, 0.5), 3.0);
+}
+
+// Random axes over one random grid: a wavy one, a noisy one, one with a jump and a still one.
+std::vector<std::vector<double>> randomAxes(std::mt19937& rng, const std::vector<double>& s) {
+    std::uniform_real_distribution<double> noise(-1.0, 1.0);
+    std::vector<std::vector<double>> axes(4);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        axes[0].push_back(std::sin(0.7 * s[i]));
+        axes[1].push_back(noise(rng));
+        axes[2].push_back(i < s.size() / 2 ? 0.0 : 3.0);
+        axes[3].push_back(2.5);
+    }
+    return axes;
+}
+
+// Every other sample a knot, plus the last.
+std::vector<std::size_t> everyOtherSample(std::size_t n) {
+    std::vector<std::size_t> knots;
+    for (std::size_t i = 0; i + 1 < n; i += 2) {
+        knots.push_back(i);
+    }
+    knots.push_back(n - 1);
+    return knots;
+}
+
+void expectSameSeries(const AxisSeries& a, const AxisSeries& b) {
+    EXPECT_EQ(a.position, b.position);
+    EXPECT_EQ(a.velocity, b.velocity);
+    EXPECT_EQ(a.acceleration, b.acceleration);
+    EXPECT_EQ(a.jerk, b.jerk);
+    EXPECT_EQ(a.peakVelocity, b.peakVelocity);
+    EXPECT_EQ(a.peakAcceleration, b.peakAcceleration);
+    EXPECT_EQ(a.peakJerk, b.peakJerk);
+    EXPECT_EQ(a.p999Velocity, b.p999Velocity);
+    EXPECT_EQ(a.p999Acceleration, b.p999Acceleration);
+}
+
+TEST(DifferentiateAxes, GiveEachAxisExactlyWhatDifferentiateAxisGives) {
+    std::mt19937 rng(29);
+    for (int count : {2, 3, 4, 7, 300}) {
+        const std::vector<double> s = randomGrid(rng, count);
+        const std::vector<std::vector<double>> axes = randomAxes(rng, s);
+        const std::vector<std::size_t> knots = everyOtherSample(s.size());
+        for (DerivativeMethod method :
+             {DerivativeMethod::Spline, DerivativeMethod::RawSpline,
+              DerivativeMethod::FiniteDifference, DerivativeMethod::Filtered}) {
+            const std::vector<Result<AxisSeries>> together =
+                differentiateAxes(s, axes, 3.0, method, 0.008, knots);
+            ASSERT_EQ(together.size(), axes.size());
+            for (std::size_t k = 0; k < axes.size(); ++k) {
+                const Result<AxisSeries> alone =
+                    differentiateAxis(s, axes[k], 3.0, method, 0.008, knots);
+                ASSERT_TRUE(alone.has_value() && together[k].has_value()) << count << " " << k;
+                expectSameSeries(*together[k], *alone);
+            }
+        }
+    }
+}
+
+TEST(DifferentiateAxes, ReportErrorsPerAxis) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<double> s{0.0, 1.0, 2.0, 3.0};
+    const std::vector<std::vector<double>> axes{
+        {0.0, 1.0, 4.0, 9.0}, {0.0, nan, 1.0, 2.0}, {1.0, 1.0, 1.0, 1.0}, {0.0, 1.0}};
+    const std::vector<Result<AxisSeries>> results =
+        differentiateAxes(s, axes, 1.0, DerivativeMethod::Spline);
+    ASSERT_EQ(results.size(), 4u);
+    EXPECT_TRUE(results[0].has_value());
+    ASSERT_FALSE(results[1].has_value());
+    EXPECT_NE(results[1].error().message.find("sample 1"), std::string::npos);
+    EXPECT_TRUE(results[2].has_value());
+    EXPECT_FALSE(results[3].has_value());
+    // Knots that miss the last sample fail every moving axis; a still axis needs no knots.
+    const std::vector<std::size_t> badKnots{0, 2};
+    const std::vector<Result<AxisSeries>> knotted =
+        differentiateAxes(s, {axes[0], axes[2]}, 1.0, DerivativeMethod::Spline, 0.008, badKnots);
+    EXPECT_FALSE(knotted[0].has_value());
+    EXPECT_TRUE(knotted[1].has_value());
+}
+
+// The peak velocity is the largest |q'| at the samples and at 4 interior points per interval,
+// whatever intervals the evaluation skips as unable to raise it.
+TEST(SplineDerivatives, PeakVelocityIsTheLargestAtSamplesAndInteriorPoints) {
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<double> noise(-1.0, 1.0);
+    const double feed = 4.0;
+    for (int trial = 0; trial < 200; ++trial) {
+        const std::vector<double> s = randomGrid(rng, 5 + trial % 20);
+        std::vector<double> q;
+        for (double x : s) {
+            q.push_back(trial % 2 == 0 ? noise(rng) : std::sin(x) + 1e-3 * noise(rng));
+        }
+        const Result<AxisSeries> series = differentiateAxis(s, q, feed, DerivativeMethod::Spline);
+        ASSERT_TRUE(series.has_value());
+        const geometry::CubicSpline spline(s, q);
+        double expected = 0.0;
+        for (double v : series->velocity) {
+            expected = std::max(expected, std::abs(v));
+        }
+        double interior = 0.0;
+        for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+            for (int k = 1; k <= 4; ++k) {
+                const double x = s[i] + 0.2 * k * (s[i + 1] - s[i]);
+                interior = std::max(interior, std::abs(spline.firstDerivative(i, x)));
+            }
+        }
+        EXPECT_EQ(series->peakVelocity, std::max(expected, interior * feed)) << trial;
+    }
+}
+
+// The sorted-copy definition of absPercentile, to check the heap that keeps the largest ones.
+double sortedAbsPercentile(std::vector<double> values, double p) {
+    for (double& v : values) {
+        v = std::isnan(v) ? HUGE_VAL : std::abs(v);
+    }
+    std::ranges::sort(values);
+    const double position = std::min(p, 1.0) * static_cast<double>(values.size() - 1);
+    const auto k = static_cast<std::size_t>(position);
+    const double fraction = position - static_cast<double>(k);
+    if (fraction == 0.0 || k + 1 >= values.size()) {
+        return values[k];
+    }
+    return values[k] + fraction * (values[k + 1] - values[k]);
+}
+
+TEST(AbsPercentile, MatchesTheSortedCopyExactly) {
+    std::mt19937 rng(37);
+    std::uniform_real_distribution<double> value(-10.0, 10.0);
+    std::uniform_int_distribution<int> small(-2, 2);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (int count : {1, 2, 3, 10, 1001, 5000}) {
+        std::vector<double> values;
+        for (int i = 0; i < count; ++i) {
+            const int kind = i % 7;
+            values.push_back(kind == 0 ? small(rng) : kind == 1 && i % 3 == 0 ? nan : value(rng));
+        }
+        for (double p : {0.0, 0.1, 0.5, 0.9, 0.999, 1.0}) {
+            const double expected = sortedAbsPercentile(values, p);
+            const double actual = absPercentile(values, p);
+            if (std::isnan(expected)) {
+                EXPECT_TRUE(std::isnan(actual)) << count << " " << p;
+            } else {
+                EXPECT_EQ(actual, expected) << count << " " << p;
+            }
+        }
+    }
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace bladeaxis::geometry {
@@ -127,6 +128,52 @@ TEST(CubicSpline, RejectsInvalidKnotsAndValues) {
     EXPECT_FALSE(CubicSpline(four, std::vector<double>{1.0, 2.0, 3.0, nan}).isValid());
     EXPECT_FALSE(CubicSpline(four, std::vector<double>{1.0, 2.0, 3.0, inf}).isValid());
     EXPECT_TRUE(CubicSpline(four, four).isValid());
+}
+
+TEST(NotAKnotMoments, SharedKnotsGiveEachSeriesTheMomentsOfItsOwnSpline) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> value(-5.0, 5.0);
+    for (int count : {2, 3, 4, 5, 9, 100}) {
+        const std::vector<double> knots = randomKnots(rng, count);
+        std::vector<std::vector<double>> values(3);
+        for (std::vector<double>& series : values) {
+            for (int i = 0; i < count; ++i) {
+                series.push_back(value(rng));
+            }
+        }
+        std::vector<std::vector<double>> moments(values.size(), std::vector<double>(knots.size()));
+        const std::vector<std::span<const double>> valueSpans(values.begin(), values.end());
+        const std::vector<std::span<double>> momentSpans(moments.begin(), moments.end());
+        notAKnotMoments(knots, valueSpans, momentSpans);
+        for (std::size_t k = 0; k < values.size(); ++k) {
+            const CubicSpline own(knots, values[k]);
+            ASSERT_TRUE(own.isValid());
+            for (std::size_t i = 0; i < knots.size(); ++i) {
+                EXPECT_EQ(moments[k][i], own.secondDerivativeAtKnot(i)) << count << " " << k;
+            }
+        }
+    }
+}
+
+TEST(CubicSplineInterval, FirstDerivativeBoundHoldsAcrossTheInterval) {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> exponent(-300, 300);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const double scale = std::ldexp(1.0, exponent(rng) / 2);
+        CubicSplineInterval piece;
+        piece.left = unit(rng) * scale;
+        piece.right = piece.left + (1.5 + unit(rng)) * scale;
+        piece.leftValue = unit(rng) * std::ldexp(1.0, exponent(rng));
+        piece.rightValue = unit(rng) * std::ldexp(1.0, exponent(rng));
+        piece.leftMoment = unit(rng) * std::ldexp(1.0, exponent(rng));
+        piece.rightMoment = trial % 3 == 0 ? -piece.leftMoment : unit(rng) * scale;
+        const double bound = piece.firstDerivativeBound();
+        for (int k = 0; k <= 50; ++k) {
+            const double x = k == 50 ? piece.right : piece.left + 0.02 * k * piece.width();
+            EXPECT_LE(std::abs(piece.firstDerivative(x)), bound) << trial << " " << k;
+        }
+    }
 }
 
 } // namespace

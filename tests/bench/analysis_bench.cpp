@@ -1,6 +1,7 @@
 // Axis-motion analysis on a million-record program: must stay O(n) and well under 1 s.
 
 #include "core/analysis/axis_profile.h"
+#include "tests/bench/bench_size.h"
 
 #include <benchmark/benchmark.h>
 
@@ -33,8 +34,13 @@ struct HelixProgram {
     }
 };
 
+// A million records (a hundredth in a smoke run).
+std::size_t recordCount() {
+    return bench::scaled<std::size_t>(1'000'000);
+}
+
 void BM_AnalyseMillionRecords(benchmark::State& state) {
-    const HelixProgram program(1'000'000);
+    const HelixProgram program(recordCount());
     analysis::AxisProfileOptions options;
     for (auto _ : state) {
         auto profile = analysis::analyseAxisMotion(program.axes, program.records, options);
@@ -44,19 +50,19 @@ void BM_AnalyseMillionRecords(benchmark::State& state) {
             break;
         }
     }
-    state.SetItemsProcessed(state.iterations() * 1'000'000);
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(recordCount()));
 }
 BENCHMARK(BM_AnalyseMillionRecords)->Unit(benchmark::kMillisecond);
 
 void BM_AnalyseMillionRecordsFiniteDifference(benchmark::State& state) {
-    const HelixProgram program(1'000'000);
+    const HelixProgram program(recordCount());
     analysis::AxisProfileOptions options;
     options.method = analysis::DerivativeMethod::FiniteDifference;
     for (auto _ : state) {
         auto profile = analysis::analyseAxisMotion(program.axes, program.records, options);
         benchmark::DoNotOptimize(profile);
     }
-    state.SetItemsProcessed(state.iterations() * 1'000'000);
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(recordCount()));
 }
 BENCHMARK(BM_AnalyseMillionRecordsFiniteDifference)->Unit(benchmark::kMillisecond);
 

@@ -42,8 +42,8 @@ Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInpu
     for (const ClRecord& record : records) {
         poses.push_back({record.tip, record.axis});
     }
-    auto solved = kinematics::inverseKinematicsAlong(input.machine->chain, poses,
-                                                     input.originalAxes->front().a);
+    auto solved = kinematics::inverseKinematicsAlong(
+        input.machine->chain, poses, input.originalAxes->front().a, input.parameters.threads);
     if (solved.failedIndex) {
         Error error = solved.failure;
         error.where = {input.program->path().sourceFile, passOf(input)[*solved.failedIndex].line,

@@ -1,7 +1,9 @@
 #include "core/kinematics/kinematics.h"
 
+#include "core/base/parallel.h"
 #include "core/geometry/angles.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace bladeaxis::kinematics {
@@ -13,23 +15,84 @@ Vec3 spindleDirection(double bMath) {
     return {std::sin(bMath), 0.0, std::cos(bMath)};
 }
 
+// The mathematical tilt and the wrapped table angle of a tool axis: the part of the inverse
+// kinematics that needs no neighbour, so a whole path can be solved on several threads.
+struct AxisAngles {
+    double bMath = 0.0;
+    double aMathWrapped = 0.0;
+};
+
+Result<AxisAngles> axisAngles(const ToolPose& pose) {
+    if (!pose.tip.allFinite() || !pose.axis.allFinite()) {
+        return makeError(ErrorCode::Geometry, "tool pose is not finite (NaN or infinity)");
+    }
+    const double length = pose.axis.norm();
+    if (length < 1e-12) {
+        return makeError(ErrorCode::Geometry, "tool axis has zero length");
+    }
+    const Vec3 v = pose.axis / length;
+    const double inPlane = std::hypot(v.y(), v.z());
+    if (inPlane < 1e-9) {
+        return makeError(ErrorCode::Geometry,
+                         "tool axis is parallel to the A axis: A is undefined (B would be 90 deg)");
+    }
+    return AxisAngles{std::asin(std::clamp(v.x(), -1.0, 1.0)), std::atan2(v.y(), v.z())};
+}
+
+// The programmed axes once the table angle is unwrapped (aMath on the chosen branch).
+MachineAxes axesAt(const TableAHeadB& chain, const ToolPose& pose, double bMath, double aMath) {
+    const Vec3 tipMachine = rotationX(aMath) * pose.tip + chain.tableOffset;
+    const Vec3 programmed =
+        chain.tipInWorkpiece
+            ? pose.tip
+            : Vec3(tipMachine + chain.pivotLength * spindleDirection(bMath) + chain.headOffset);
+    MachineAxes axes;
+    axes.x = programmed.x();
+    axes.y = programmed.y();
+    axes.z = programmed.z();
+    axes.a = chain.aSign * aMath;
+    axes.b = chain.bSign * bMath;
+    return axes;
+}
+
 } // namespace
 
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const ToolPose> poses,
-                                     double aStart) {
+                                     double aStart, unsigned threads) {
     IkAlongResult result;
-    result.axes.reserve(poses.size());
-    double reference = aStart;
-    for (std::size_t i = 0; i < poses.size(); ++i) {
-        auto axes = inverseKinematics(chain, poses[i], reference);
-        if (!axes) {
-            result.failedIndex = i;
-            result.failure = axes.error();
-            return result;
-        }
-        result.axes.push_back(*axes);
-        reference = axes->a;
+    const std::size_t n = poses.size();
+    // The angles of every pose at once (they need no neighbour), the earliest failure wins.
+    std::vector<AxisAngles> angles(n);
+    std::vector<std::size_t> firstFailure(rangeCount(n, threads), n);
+    forEachRangeOf(n, firstFailure.size(),
+                   [&](std::size_t range, std::size_t begin, std::size_t end) {
+                       for (std::size_t i = begin; i < end; ++i) {
+                           auto solved = axisAngles(poses[i]);
+                           if (!solved) {
+                               firstFailure[range] = i;
+                               return;
+                           }
+                           angles[i] = *solved;
+                       }
+                   });
+    if (const std::size_t failed = *std::min_element(firstFailure.begin(), firstFailure.end());
+        failed < n) {
+        result.failedIndex = failed;
+        result.failure = axisAngles(poses[failed]).error();
+        return result;
     }
+    // A continuous: each angle on the branch nearest the previous one, in order.
+    double reference = chain.aSign * aStart;
+    for (AxisAngles& pose : angles) {
+        pose.aMathWrapped = geometry::unwrapNear(pose.aMathWrapped, reference);
+        reference = pose.aMathWrapped;
+    }
+    result.axes.resize(n);
+    forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            result.axes[i] = axesAt(chain, poses[i], angles[i].bMath, angles[i].aMathWrapped);
+        }
+    });
     return result;
 }
 
@@ -54,35 +117,12 @@ ToolPose forwardKinematics(const TableAHeadB& chain, const MachineAxes& axes) {
 
 Result<MachineAxes> inverseKinematics(const TableAHeadB& chain, const ToolPose& pose,
                                       double aReference) {
-    if (!pose.tip.allFinite() || !pose.axis.allFinite()) {
-        return makeError(ErrorCode::Geometry, "tool pose is not finite (NaN or infinity)");
+    auto angles = axisAngles(pose);
+    if (!angles) {
+        return std::unexpected(angles.error());
     }
-    const double length = pose.axis.norm();
-    if (length < 1e-12) {
-        return makeError(ErrorCode::Geometry, "tool axis has zero length");
-    }
-    const Vec3 v = pose.axis / length;
-    const double inPlane = std::hypot(v.y(), v.z());
-    if (inPlane < 1e-9) {
-        return makeError(ErrorCode::Geometry,
-                         "tool axis is parallel to the A axis: A is undefined (B would be 90 deg)");
-    }
-    const double bMath = std::asin(std::clamp(v.x(), -1.0, 1.0));
-    const double aMathRaw = std::atan2(v.y(), v.z());
-    const double aMath = geometry::unwrapNear(aMathRaw, chain.aSign * aReference);
-
-    const Vec3 tipMachine = rotationX(aMath) * pose.tip + chain.tableOffset;
-    const Vec3 programmed =
-        chain.tipInWorkpiece
-            ? pose.tip
-            : Vec3(tipMachine + chain.pivotLength * spindleDirection(bMath) + chain.headOffset);
-    MachineAxes axes;
-    axes.x = programmed.x();
-    axes.y = programmed.y();
-    axes.z = programmed.z();
-    axes.a = chain.aSign * aMath;
-    axes.b = chain.bSign * bMath;
-    return axes;
+    const double aMath = geometry::unwrapNear(angles->aMathWrapped, chain.aSign * aReference);
+    return axesAt(chain, pose, angles->bMath, aMath);
 }
 
 } // namespace bladeaxis::kinematics

@@ -27,14 +27,16 @@ Result<MachineAxes> inverseKinematics(const TableAHeadB& chain, const ToolPose& 
                                       double aReference = 0.0);
 
 // IK of consecutive poses with A continuous: the first pose is solved nearest `aStart`, every
-// later one nearest the A of the one before. A failed pose is reported as `failedIndex`.
+// later one nearest the A of the one before. A failed pose (the first one) is reported as
+// `failedIndex`, with no axes. The poses are solved on up to `threads` threads (0 = all); only the unwrapping
+// runs in order, so the result is the one-thread result bit for bit.
 struct IkAlongResult {
     std::vector<MachineAxes> axes;
     std::optional<std::size_t> failedIndex;
     Error failure; // meaningful when failedIndex is set
 };
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const ToolPose> poses,
-                                     double aStart);
+                                     double aStart, unsigned threads = 1);
 
 // Tool axis for a given programmed A and B, in W (spec §6.1 with the sign conventions).
 Vec3 toolAxisFor(const TableAHeadB& chain, double a, double b);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 namespace bladeaxis::kinematics {
 namespace {
@@ -128,6 +129,56 @@ TEST(InverseKinematics, RejectsNanZeroAndAxisParallelToA) {
     const auto parallel = inverseKinematics({}, {Vec3::Zero(), Vec3::UnitX()});
     ASSERT_FALSE(parallel.has_value());
     EXPECT_NE(parallel.error().message.find("parallel to the A axis"), std::string::npos);
+}
+
+// A spiral of poses turning several times, long enough to be split over threads.
+std::vector<ToolPose> spiralPoses(std::size_t count) {
+    TableAHeadB chain;
+    chain.pivotLength = 250.0;
+    chain.tableOffset = Vec3(0.0, 10.0, -5.0);
+    std::vector<ToolPose> poses;
+    for (std::size_t i = 0; i < count; ++i) {
+        const double a = 1e-3 * static_cast<double>(i);
+        const MachineAxes axes{1e-4 * static_cast<double>(i), 30.0 * std::cos(7.0 * a),
+                               40.0 + 5.0 * std::sin(3.0 * a), a, degToRad(5.0)};
+        poses.push_back(forwardKinematics(chain, axes));
+    }
+    return poses;
+}
+
+TEST(InverseKinematicsAlong, SeveralThreadsGiveTheOneThreadResultBitForBit) {
+    TableAHeadB chain;
+    chain.pivotLength = 250.0;
+    chain.tableOffset = Vec3(0.0, 10.0, -5.0);
+    const std::vector<ToolPose> poses = spiralPoses(100'000);
+    const IkAlongResult serial = inverseKinematicsAlong(chain, poses, 0.0, 1);
+    const IkAlongResult parallel = inverseKinematicsAlong(chain, poses, 0.0, 3);
+    ASSERT_FALSE(serial.failedIndex || parallel.failedIndex);
+    ASSERT_EQ(serial.axes.size(), poses.size());
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        ASSERT_TRUE(
+            serial.axes[i].a == parallel.axes[i].a && serial.axes[i].x == parallel.axes[i].x &&
+            serial.axes[i].y == parallel.axes[i].y && serial.axes[i].z == parallel.axes[i].z &&
+            serial.axes[i].b == parallel.axes[i].b)
+            << i;
+        // One call at a time with the previous A as reference is the definition.
+        if (i % 9973 == 0) {
+            const double reference = i == 0 ? 0.0 : serial.axes[i - 1].a;
+            EXPECT_EQ(inverseKinematics(chain, poses[i], reference)->a, serial.axes[i].a) << i;
+        }
+    }
+    EXPECT_NEAR(serial.axes.back().a, 1e-3 * 99'999.0, 1e-9); // unwrapped over 15 turns
+}
+
+TEST(InverseKinematicsAlong, ReportsTheFirstFailingPoseWhateverTheThreads) {
+    std::vector<ToolPose> poses = spiralPoses(100'000);
+    poses[90'000].axis = Vec3::Zero();
+    poses[60'000].axis = Vec3::UnitX(); // parallel to A: the first failure
+    const IkAlongResult result = inverseKinematicsAlong({}, poses, 0.0, 4);
+    ASSERT_TRUE(result.failedIndex.has_value());
+    EXPECT_EQ(*result.failedIndex, 60'000u);
+    EXPECT_NE(result.failure.message.find("parallel to the A axis"), std::string::npos);
+    EXPECT_TRUE(result.axes.empty());
 }
 
 } // namespace

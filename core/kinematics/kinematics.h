@@ -28,8 +28,8 @@ Result<MachineAxes> inverseKinematics(const TableAHeadB& chain, const ToolPose& 
 
 // IK of consecutive poses with A continuous: the first pose is solved nearest `aStart`, every
 // later one nearest the A of the one before. A failed pose (the first one) is reported as
-// `failedIndex`, with no axes. The poses are solved on up to `threads` threads (0 = all); only the unwrapping
-// runs in order, so the result is the one-thread result bit for bit.
+// `failedIndex`, with no axes. The poses are solved on up to `threads` threads (0 = all); only the
+// unwrapping runs in order, so the result is the one-thread result bit for bit.
 struct IkAlongResult {
     std::vector<MachineAxes> axes;
     std::optional<std::size_t> failedIndex;

@@ -3,13 +3,14 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 
 namespace bladeaxis {
 
-std::optional<double> parseNumber(std::string_view token) {
-    if (token.empty()) {
-        return std::nullopt;
-    }
+namespace {
+
+// Any decimal, through from_chars: exponents, long digit strings, range errors.
+std::optional<double> parseAnyDecimal(std::string_view token) {
     // from_chars accepts neither a leading '+' nor a bare leading '.', which NC files use.
     std::string_view body = token;
     bool negative = false;
@@ -43,6 +44,20 @@ std::optional<double> parseNumber(std::string_view token) {
         return std::nullopt;
     }
     return negative ? -value : value;
+}
+
+} // namespace
+
+std::optional<double> parseNumber(std::string_view token) {
+    if (token.empty()) {
+        return std::nullopt;
+    }
+    // Nearly every number in a program is a short plain decimal, several times faster to read
+    // directly than through from_chars.
+    if (const PlainDecimal plain = readPlainDecimal(token); plain.length == token.size()) {
+        return plain.value;
+    }
+    return parseAnyDecimal(token);
 }
 
 std::string formatFixed(double value, int decimals) {

@@ -26,6 +26,7 @@ namespace {
 
 // Markers are looked for in the head of the program, where posts write their set-up blocks.
 constexpr std::size_t kHeadBytes = 256 * 1024;
+constexpr std::string_view kBeginProgram = "BEGIN PGM";
 
 std::string upperCopy(std::string_view text) {
     std::string out(text);
@@ -89,12 +90,16 @@ std::optional<NcDialect> dialectOfContent(std::string_view text) {
     while (begin < head.size()) {
         std::size_t end = head.find('\n', begin);
         end = end == std::string_view::npos ? head.size() : end;
-        const std::string line = upperCopy(withoutBlockNumber(head.substr(begin, end - begin)));
+        const std::string_view content = withoutBlockNumber(head.substr(begin, end - begin));
         begin = end + 1;
-        if (line.starts_with("BEGIN PGM")) {
+        // The start of a line decides for most lines: the whole line is upper-cased only for
+        // those that begin with "L ", not for every line of the head.
+        const std::string start = upperCopy(content.substr(0, kBeginProgram.size()));
+        if (start.starts_with(kBeginProgram)) {
             return NcDialect::Heidenhain;
         }
-        heidenhainLines += looksLikeHeidenhainLine(line) && line.starts_with("L ") ? 1 : 0;
+        heidenhainLines +=
+            start.starts_with("L ") && looksLikeHeidenhainLine(upperCopy(content)) ? 1 : 0;
     }
     if (heidenhainLines > 0) {
         return NcDialect::Heidenhain;

@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <clocale>
+#include <cmath>
 #include <cstdlib>
+#include <random>
+#include <string>
 
 namespace bladeaxis {
 namespace {
@@ -22,6 +26,79 @@ TEST(ParseNumber, RejectsGarbageNanAndInfinity) {
     for (const char* bad : {"", "-", "+", ".", "1.2.3", "12a", "nan", "NaN", "inf", "-inf", "1,5",
                             "0x10", " 1", "1 ", "e5", "1e999"}) {
         EXPECT_FALSE(parseNumber(bad).has_value()) << "accepted '" << bad << "'";
+    }
+}
+
+TEST(ParseNumber, KeepsTheSignOfZero) {
+    EXPECT_TRUE(std::signbit(*parseNumber("-0.0")));
+    EXPECT_TRUE(std::signbit(*parseNumber("-.0")));
+    EXPECT_FALSE(std::signbit(*parseNumber("+0")));
+}
+
+// Short plain decimals take a direct path; it must give the same double as from_chars, the
+// correctly rounded one, for every digit count and point position it covers and just beyond.
+TEST(ParseNumber, AgreesWithFromCharsOnPlainDecimals) {
+    std::mt19937_64 random(12345);
+    for (int trial = 0; trial < 200000; ++trial) {
+        const int digitCount = 1 + static_cast<int>(random() % 18);
+        std::string digits;
+        for (int i = 0; i < digitCount; ++i) {
+            digits += static_cast<char>('0' + random() % 10);
+        }
+        const auto point = static_cast<std::size_t>(random() % (digits.size() + 2));
+        std::string text = digits;
+        if (point <= digits.size()) {
+            text.insert(point, ".");
+        }
+        const std::string spelled = text.front() == '.' ? "0" + text : text;
+        double expected = 0.0;
+        const auto [end, ec] =
+            std::from_chars(spelled.data(), spelled.data() + spelled.size(), expected);
+        ASSERT_EQ(ec, std::errc{}) << text;
+        ASSERT_EQ(end, spelled.data() + spelled.size()) << text;
+        const std::optional<double> parsed = parseNumber(text);
+        ASSERT_TRUE(parsed.has_value()) << text;
+        ASSERT_EQ(*parsed, expected) << text;
+        ASSERT_EQ(parseNumber("-" + text), -expected) << text;
+    }
+}
+
+TEST(ReadPlainDecimal, ReadsTheNumberAtTheStartAndHowItIsWritten) {
+    const PlainDecimal number = readPlainDecimal("-012.250Y3");
+    EXPECT_EQ(number.value, -12.25);
+    EXPECT_EQ(number.length, 8u) << "stops before the next word";
+    EXPECT_EQ(number.integerDigits, 3u);
+    EXPECT_EQ(number.fractionDigits, 3u);
+    EXPECT_TRUE(number.hasPoint);
+    EXPECT_FALSE(number.integerPartZero);
+
+    const PlainDecimal fraction = readPlainDecimal("+.5");
+    EXPECT_EQ(fraction.value, 0.5);
+    EXPECT_EQ(fraction.length, 3u);
+    EXPECT_EQ(fraction.integerDigits, 0u);
+    EXPECT_TRUE(fraction.integerPartZero);
+
+    const PlainDecimal whole = readPlainDecimal("5.");
+    EXPECT_EQ(whole.value, 5.0);
+    EXPECT_EQ(whole.length, 2u);
+    EXPECT_TRUE(whole.hasPoint);
+    EXPECT_EQ(whole.fractionDigits, 0u);
+
+    const PlainDecimal zero = readPlainDecimal("00.0");
+    EXPECT_TRUE(zero.integerPartZero);
+    EXPECT_TRUE(std::signbit(readPlainDecimal("-0").value));
+}
+
+TEST(ReadPlainDecimal, StopsWhereThePlainSpellingEnds) {
+    EXPECT_EQ(readPlainDecimal("1.2.3").length, 3u) << "a second point is the caller's to judge";
+    EXPECT_EQ(readPlainDecimal("1.5e3").length, 3u) << "so is an exponent";
+    EXPECT_EQ(readPlainDecimal("123456789012345").length, 15u) << "15 digits are exact";
+}
+
+TEST(ReadPlainDecimal, HasNoLengthForWhatIsNotAPlainDecimal) {
+    for (const char* other : {"", "-", "+", ".", "-.", "e5", "X1", " 1", "1234567890123456",
+                              "0.000000000000001", "12345678.12345678"}) {
+        EXPECT_EQ(readPlainDecimal(other).length, 0u) << "read '" << other << "'";
     }
 }
 

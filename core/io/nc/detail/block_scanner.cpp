@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <expected>
 
 namespace bladeaxis::io::nc::detail {
 
@@ -72,10 +73,20 @@ bool looksNumeric(std::string_view token) {
     return digits > 0 && points <= 1;
 }
 
-} // namespace
+// Whether the number token goes on at `end` (a second point, an exponent), so that a plain
+// decimal read up to there is not the whole token.
+bool numberGoesOn(std::string_view line, std::size_t end) {
+    if (end == line.size()) {
+        return false;
+    }
+    const char c = line[end];
+    return isDigit(c) || c == '.' || c == 'e' || c == 'E';
+}
 
-std::optional<ScanIssue> readNumber(std::string_view line, std::size_t begin, char letter,
-                                    WordSpan& word) {
+// The number of a word in any spelling the plain-decimal path leaves (exponents, long or
+// malformed numbers, magnitudes out of range), with the message for one that cannot be read.
+std::optional<ScanIssue> readAnyNumber(std::string_view line, std::size_t begin, char letter,
+                                       WordSpan& word) {
     const std::size_t end = numberEnd(line, begin);
     const std::string_view token = line.substr(begin, end - begin);
     // Built on the error paths only: this function runs for every word of the program.
@@ -108,6 +119,134 @@ std::optional<ScanIssue> readNumber(std::string_view line, std::size_t begin, ch
     return std::nullopt;
 }
 
+// The ISO scanner's loop runs on the internal functions below, which the compiler inlines into
+// it; it would not inline an exported function, the library being built position-independent.
+// The exported names forward to them for the Sinumerik and Heidenhain scanners.
+
+// Whether `plain`, read at `begin`, is the word's whole number and within range, as nearly every
+// word's is; any other spelling is readAnyNumber's.
+inline bool isPlainWordNumber(std::string_view line, std::size_t begin, const PlainDecimal& plain) {
+    return plain.length > 0 && !numberGoesOn(line, begin + plain.length) &&
+           std::abs(plain.value) <= kMaxWordMagnitude;
+}
+
+// Field by field, in place: a word (or its style) built whole and copied in is read back with
+// wide loads from narrow stores, which the processor cannot forward, and that stalled every
+// word.
+inline void setPlainNumber(WordSpan& word, std::string_view line, std::size_t begin,
+                           const PlainDecimal& plain) {
+    word.valueBegin = static_cast<std::uint32_t>(begin);
+    word.valueEnd = static_cast<std::uint32_t>(begin + plain.length);
+    word.value = plain.value;
+    setPlainDecimalStyle(word.plainStyle.emplace(), line.substr(begin), plain);
+}
+
+ScanIssue repeatedWordIssue(char letter, std::uint32_t offset) {
+    return issueAt(offset,
+                   std::string("word '") + letter + "' repeated in one block: expected it once");
+}
+
+// The block's place for a word of `letter` (not G or M), marked present; refused when the block
+// already has one.
+inline std::expected<WordSpan*, ScanIssue> claimWord(char letter, std::uint32_t letterOffset,
+                                                     ScannedBlock& block) {
+    const int index = letter - 'A';
+    if ((block.present >> index) & 1u) {
+        return std::unexpected(repeatedWordIssue(letter, letterOffset));
+    }
+    block.present |= 1u << index;
+    block.hasWords = true;
+    return &block.words[static_cast<std::size_t>(index)];
+}
+
+// Where an ISO word read up to `valueEnd` goes: its place among the block's words or G codes,
+// or none for an M word, which only marks the block. Refused when the block has too many G
+// codes or this letter already.
+inline std::expected<WordSpan*, ScanIssue> placeIsoWord(char letter, std::uint32_t letterOffset,
+                                                        double value, std::size_t valueEnd,
+                                                        ScannedBlock& block) {
+    block.codeEnd = static_cast<std::uint32_t>(valueEnd);
+    block.hasWords = true;
+    if (letter == 'M') {
+        // Kept verbatim; several M words may share a block. M2/M30 are noted so that a reader
+        // can tell a complete program from a truncated one.
+        block.programEnd = block.programEnd || value == 2.0 || value == 30.0;
+        if (value == 98.0 || value == 99.0) {
+            block.subprogramWord = letterOffset;
+        }
+        return nullptr;
+    }
+    if (letter == 'G') {
+        if (block.gCount == kMaxGCodesPerBlock) {
+            return std::unexpected(issueAt(letterOffset, "too many G codes in one block"));
+        }
+        return &block.gCodes[static_cast<std::size_t>(block.gCount++)];
+    }
+    return claimWord(letter, letterOffset, block);
+}
+
+// An ISO word whose number is not a plain decimal (an exponent, many digits) or is missing.
+std::optional<ScanIssue> scanGeneralIsoWord(std::string_view line, std::size_t& i, char letter,
+                                            std::uint32_t letterOffset, ScannedBlock& block) {
+    WordSpan word;
+    word.letter = letterOffset;
+    if (auto issue = readAnyNumber(line, i, letter, word)) {
+        return issue;
+    }
+    i = word.valueEnd;
+    std::expected<WordSpan*, ScanIssue> place =
+        placeIsoWord(letter, letterOffset, word.value, word.valueEnd, block);
+    if (!place) {
+        return std::move(place.error());
+    }
+    if (*place != nullptr) {
+        **place = word;
+    }
+    return std::nullopt;
+}
+
+// One ISO word (letter, blanks, number) starting at the letter; advances `i` past it.
+inline std::optional<ScanIssue> scanIsoWord(std::string_view line, std::size_t& i,
+                                            ScannedBlock& block) {
+    const char letter = upper(line[i] == ':' ? 'O' : line[i]);
+    const auto letterOffset = static_cast<std::uint32_t>(i);
+    ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) {
+        ++i;
+    }
+    const std::size_t valueBegin = i;
+    const PlainDecimal plain = readPlainDecimal(line.substr(valueBegin));
+    if (!isPlainWordNumber(line, valueBegin, plain)) {
+        return scanGeneralIsoWord(line, i, letter, letterOffset, block);
+    }
+    i = valueBegin + plain.length;
+    std::expected<WordSpan*, ScanIssue> place =
+        placeIsoWord(letter, letterOffset, plain.value, i, block);
+    if (!place) {
+        return std::move(place.error());
+    }
+    if (*place != nullptr) {
+        WordSpan& word = **place;
+        word.letter = letterOffset;
+        word.form = RotaryForm::Plain;
+        setPlainNumber(word, line, valueBegin, plain);
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+std::optional<ScanIssue> readNumber(std::string_view line, std::size_t begin, char letter,
+                                    WordSpan& word) {
+    const PlainDecimal plain = readPlainDecimal(line.substr(begin));
+    if (isPlainWordNumber(line, begin, plain)) {
+        setPlainNumber(word, line, begin, plain);
+        return std::nullopt;
+    }
+    word.plainStyle.reset();
+    return readAnyNumber(line, begin, letter, word);
+}
+
 std::optional<ScanIssue> checkCommentBytes(std::string_view line, std::size_t begin,
                                            std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
@@ -137,50 +276,16 @@ ScanIssue unexpectedCharacter(std::string_view line, std::size_t i) {
                           "': expected a word (a letter followed by a number)");
 }
 
-// Scans one word starting at the letter; advances `i` past its number.
 std::optional<ScanIssue> scanWord(std::string_view line, std::size_t& i, ScannedBlock& block) {
-    const char letter = upper(line[i] == ':' ? 'O' : line[i]);
-    const std::size_t letterOffset = i;
-    ++i;
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) {
-        ++i;
-    }
-    WordSpan word;
-    word.letter = static_cast<std::uint32_t>(letterOffset);
-    if (auto issue = readNumber(line, i, letter, word)) {
-        return issue;
-    }
-    i = word.valueEnd;
-    block.codeEnd = word.valueEnd;
-    block.hasWords = true;
-    if (letter == 'M') {
-        // Kept verbatim; several M words may share a block. M2/M30 are noted so that a reader
-        // can tell a complete program from a truncated one.
-        block.programEnd = block.programEnd || word.value == 2.0 || word.value == 30.0;
-        if (word.value == 98.0 || word.value == 99.0) {
-            block.subprogramWord = static_cast<std::uint32_t>(letterOffset);
-        }
-        return std::nullopt;
-    }
-    if (letter == 'G') {
-        if (block.gCount == kMaxGCodesPerBlock) {
-            return issueAt(letterOffset, "too many G codes in one block");
-        }
-        block.gCodes[static_cast<std::size_t>(block.gCount++)] = word;
-        return std::nullopt;
-    }
-    return storeWord(letter, word, block);
+    return scanIsoWord(line, i, block);
 }
 
 std::optional<ScanIssue> storeWord(char letter, const WordSpan& word, ScannedBlock& block) {
-    const int index = letter - 'A';
-    if ((block.present >> index) & 1u) {
-        return issueAt(word.letter, std::string("word '") + letter +
-                                        "' repeated in one block: expected it once");
+    std::expected<WordSpan*, ScanIssue> claimed = claimWord(letter, word.letter, block);
+    if (!claimed) {
+        return std::move(claimed.error());
     }
-    block.present |= 1u << index;
-    block.words[static_cast<std::size_t>(index)] = word;
-    block.hasWords = true;
+    **claimed = word;
     return std::nullopt;
 }
 
@@ -252,7 +357,7 @@ std::optional<ScanIssue> scanBlock(std::string_view line, ScannedBlock& block) {
                 return issue;
             }
         } else if (isLetter(c) || (c == ':' && !block.hasWords)) {
-            if (auto issue = scanWord(line, i, block)) {
+            if (auto issue = scanIsoWord(line, i, block)) {
                 return issue;
             }
         } else if (c == '%' && !block.hasWords) {

@@ -5,6 +5,7 @@
 // the same words (sinumerik_scanner.h, heidenhain_scanner.h), with the dialect's instructions
 // that matter to a four-axis reader as BlockControl bits.
 
+#include "core/io/nc/detail/number_style.h"
 #include "core/io/nc/gcode_program.h"
 #include "core/io/read_options.h"
 
@@ -28,6 +29,9 @@ struct WordSpan {
     std::uint32_t valueEnd = 0;
     RotaryForm form = RotaryForm::Plain; // "A=DC(45)" is Shortest; ISO words are Plain
     double value = 0.0;
+    // How a plain decimal ("-12.5", no exponent) is written, noted while reading it so that the
+    // axis style need not read the text again; empty for other spellings.
+    std::optional<WordTextStyle> plainStyle;
 
     std::string_view text(std::string_view line) const {
         return line.substr(valueBegin, valueEnd - valueBegin);

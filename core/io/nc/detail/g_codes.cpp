@@ -45,11 +45,18 @@ constexpr std::array<Rejected, 16> kRejectedCodes{{
 
 } // namespace
 
-std::optional<int> gCodeTimesTen(double value) {
+int gCodeTimesTen(double value) {
+    // Whole codes (G1, G90) are nearly all of them and need no rounding (a library call here).
+    if (value >= 0.0 && value < 10000.0) {
+        const auto whole = static_cast<int>(value);
+        if (static_cast<double>(whole) == value) {
+            return whole * 10;
+        }
+    }
     const double scaled = value * 10.0;
     const double rounded = std::round(scaled);
     if (value < 0.0 || value >= 10000.0 || std::abs(scaled - rounded) > 1e-6) {
-        return std::nullopt;
+        return kNotAGCode;
     }
     return static_cast<int>(rounded);
 }

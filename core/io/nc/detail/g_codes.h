@@ -2,7 +2,6 @@
 // What each G code means to a four-axis reader. Codes are held as ten times their number, so
 // that G1 = 10, G43.4 = 434 and G54.1 = 541.
 
-#include <optional>
 #include <string>
 
 namespace bladeaxis::io::nc::detail {
@@ -28,8 +27,13 @@ struct GCodeInfo {
     const char* reason = nullptr; // for Unsupported: why, and what to do instead
 };
 
-// nullopt when the value is not a G number at all (negative, or more than one decimal).
-std::optional<int> gCodeTimesTen(double value);
+// What gCodeTimesTen gives for a value that is no G number (negative, or more than one decimal).
+inline constexpr int kNotAGCode = -1;
+
+// Ten times a G word's value (G1 = 10, G43.4 = 434), or kNotAGCode. An int rather than an
+// optional: GCC builds a returned std::optional<int> in memory and reads it back wider than it
+// wrote it, a stall on every G word of a program.
+int gCodeTimesTen(double value);
 
 GCodeInfo classifyGCode(int codeTimesTen);
 

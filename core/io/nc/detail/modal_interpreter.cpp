@@ -18,12 +18,28 @@ constexpr std::uint8_t kBBit = 1u << 4;
 constexpr std::uint8_t kRequiredAxes = 0x0F; // X Y Z A; B may default to 0
 // Letters that have no meaning in a four-axis Fanuc program (arc centres, extra axes...).
 constexpr std::string_view kUnsupportedLetters = "EIJKUVW";
+// The same as ScannedBlock::present bits, to pass a block that has none with one test.
+constexpr std::uint32_t kUnsupportedLetterBits = [] {
+    std::uint32_t bits = 0;
+    for (const char letter : kUnsupportedLetters) {
+        bits |= 1u << (letter - 'A');
+    }
+    return bits;
+}();
 
 bool isRotaryIndex(std::size_t axis) {
     return axis >= 3;
 }
 
+bool hasExponent(std::string_view number) {
+    return std::any_of(number.begin(), number.end(), [](char c) { return c == 'e' || c == 'E'; });
+}
+
 } // namespace
+
+// The steps of apply() are defined inline: they run for every block of a program, and as calls
+// they cost a tenth of the reader's time. The library is built position-independent, where GCC
+// inlines no function that is exported and not inline; these are only used in this file.
 
 ModalInterpreter::ModalInterpreter(GcodeProgram& program, const kinematics::MachineModel& machine,
                                    ErrorList& errors, std::optional<AngleUnit> angleUnit)
@@ -101,7 +117,7 @@ void ModalInterpreter::apply(const ScannedBlock& block, std::string_view line,
     addRecord(at, axisWords);
 }
 
-bool ModalInterpreter::applyControls(const Context& at) {
+inline bool ModalInterpreter::applyControls(const Context& at) {
     const std::uint16_t controls = at.block.controls;
     if (controls & (kToolTipOn | kToolTipOff)) {
         m_toolTip = (controls & kToolTipOn) != 0;
@@ -143,7 +159,7 @@ void ModalInterpreter::noteStatedTool(const ScannedBlock& block) {
     }
 }
 
-bool ModalInterpreter::readGCodes(const Context& at, BlockCodes& codes) {
+inline bool ModalInterpreter::readGCodes(const Context& at, BlockCodes& codes) {
     for (int i = 0; i < at.block.gCount; ++i) {
         if (!applyGCode(at, at.block.gCodes[static_cast<std::size_t>(i)], codes)) {
             return false;
@@ -152,14 +168,15 @@ bool ModalInterpreter::readGCodes(const Context& at, BlockCodes& codes) {
     return true;
 }
 
-bool ModalInterpreter::applyGCode(const Context& at, const WordSpan& word, BlockCodes& codes) {
-    const std::optional<int> code = gCodeTimesTen(word.value);
-    if (!code) {
+inline bool ModalInterpreter::applyGCode(const Context& at, const WordSpan& word,
+                                         BlockCodes& codes) {
+    const int code = gCodeTimesTen(word.value);
+    if (code == kNotAGCode) {
         return fail(at, word.valueBegin,
                     "expected a G code number, found 'G" + std::string(word.text(at.line)) + "'");
     }
-    const GCodeInfo info = m_program.dialect == NcDialect::Sinumerik ? classifySinumerikGCode(*code)
-                                                                     : classifyGCode(*code);
+    const GCodeInfo info = m_program.dialect == NcDialect::Sinumerik ? classifySinumerikGCode(code)
+                                                                     : classifyGCode(code);
     switch (info.kind) {
     case GKind::Rapid:
     case GKind::Linear:
@@ -190,14 +207,17 @@ bool ModalInterpreter::applyGCode(const Context& at, const WordSpan& word, Block
     case GKind::Unsupported:
         break;
     }
-    const std::string name = gCodeName(*code);
+    const std::string name = gCodeName(code);
     return fail(at, word.letter,
                 info.reason != nullptr
                     ? std::string(info.reason)
                     : "unsupported G code " + name + ": expected G0, G1 and modal settings only");
 }
 
-bool ModalInterpreter::checkLetters(const Context& at) {
+inline bool ModalInterpreter::checkLetters(const Context& at) {
+    if ((at.block.present & kUnsupportedLetterBits) == 0) {
+        return true;
+    }
     for (char letter : kUnsupportedLetters) {
         if (at.block.has(letter)) {
             return fail(at, at.block.word(letter).letter,
@@ -209,7 +229,7 @@ bool ModalInterpreter::checkLetters(const Context& at) {
     return true;
 }
 
-bool ModalInterpreter::applyFeedWord(const Context& at) {
+inline bool ModalInterpreter::applyFeedWord(const Context& at) {
     m_blockInverseTime.reset();
     if (!at.block.has('F')) {
         return true;
@@ -227,7 +247,7 @@ bool ModalInterpreter::applyFeedWord(const Context& at) {
     return true;
 }
 
-bool ModalInterpreter::applyCWord(const Context& at) {
+inline bool ModalInterpreter::applyCWord(const Context& at) {
     if (!at.block.has('C')) {
         return true;
     }
@@ -258,15 +278,21 @@ void ModalInterpreter::applyOneShot(const Context& at, GKind kind, std::uint8_t 
     }
 }
 
-bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axisWords) {
+inline bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axisWords) {
     for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
         const std::uint8_t bit = static_cast<std::uint8_t>(1u << axis);
         if (!(axisWords & bit)) {
             continue;
         }
         const WordSpan& word = at.block.word(kAxisLetters[axis]);
-        noteAxisWord(m_program.axisStyles[axis], word.text(at.line));
-        const double value = axisWordValue(at, axis, word);
+        const WordTextStyle style =
+            word.plainStyle ? *word.plainStyle : styleOfWord(word.text(at.line));
+        noteAxisWord(m_program.axisStyles[axis], style);
+        // "10." and "1e3" are decimal numbers to the control, "10" a whole number it may scale.
+        // A plain decimal has no exponent.
+        const bool decimal =
+            style.hasPoint || (!word.plainStyle && hasExponent(word.text(at.line)));
+        const double value = axisWordValue(at, axis, word, decimal);
         if (bit == kBBit && !m_machine.hasB && value != 0.0) {
             return fail(at, word.letter,
                         "B" + std::string(word.text(at.line)) + ": the machine '" + m_machine.name +
@@ -306,7 +332,7 @@ bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axisWords)
 
 // How a rotary word reaches its value: its own form (Sinumerik DC, ACP...), or for A the
 // shortest way while Heidenhain's M126 is on.
-RotaryForm ModalInterpreter::effectiveForm(const WordSpan& word, std::size_t axis) const {
+inline RotaryForm ModalInterpreter::effectiveForm(const WordSpan& word, std::size_t axis) const {
     if (word.form != RotaryForm::Plain) {
         return word.form;
     }
@@ -316,7 +342,7 @@ RotaryForm ModalInterpreter::effectiveForm(const WordSpan& word, std::size_t axi
 // The axis position a word of the given form reaches from the current one. The modulo forms
 // (DC, ACP, ACN, M126) turn by less than a full turn; before the axis is known they go to the
 // value itself.
-double ModalInterpreter::reachedBy(RotaryForm form, std::size_t axis, double value) const {
+inline double ModalInterpreter::reachedBy(RotaryForm form, std::size_t axis, double value) const {
     const double from = m_position[axis];
     switch (form) {
     case RotaryForm::Plain:
@@ -332,9 +358,8 @@ double ModalInterpreter::reachedBy(RotaryForm form, std::size_t axis, double val
 
 // The word's value in mm or rad: the control's rule for a number without a decimal point, then
 // inch and the angle unit.
-double ModalInterpreter::axisWordValue(const Context& at, std::size_t axis, const WordSpan& word) {
-    const std::string_view text = word.text(at.line);
-    const bool hasPoint = text.find_first_of(".eE") != std::string_view::npos;
+inline double ModalInterpreter::axisWordValue(const Context& at, std::size_t axis,
+                                              const WordSpan& word, bool hasPoint) {
     double value = word.value;
     if (value != 0.0) {
         int& first = hasPoint ? m_firstPointLine : m_firstIntegerLine;
@@ -384,14 +409,14 @@ void ModalInterpreter::finish() {
     }
 }
 
-bool ModalInterpreter::allAxesKnown() const {
+inline bool ModalInterpreter::allAxesKnown() const {
     if ((m_known & kRequiredAxes) != kRequiredAxes) {
         return false;
     }
     return (m_known & kBBit) || !m_bProgrammed;
 }
 
-bool ModalInterpreter::checkFeedAvailable(const Context& at) {
+inline bool ModalInterpreter::checkFeedAvailable(const Context& at) {
     if (m_inverseTime && !m_blockInverseTime) {
         return fail(at, 0, "expected an F word in every inverse-time (G93) feed block");
     }
@@ -411,21 +436,29 @@ std::uint32_t ModalInterpreter::firstAxisOffset(const Context& at, std::uint8_t 
     return first == kNoOffset ? 0 : first;
 }
 
-void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
-    RecordSource source;
+// The offset of the first axis word whose number begins beyond what RecordSource can point to;
+// kNoOffset when all fit.
+inline std::uint32_t ModalInterpreter::firstWordBeyondSource(const Context& at,
+                                                             std::uint8_t axisWords) const {
+    for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
+        if ((axisWords & (1u << axis)) && at.block.word(kAxisLetters[axis]).valueBegin >= kNoWord) {
+            return at.block.word(kAxisLetters[axis]).valueBegin;
+        }
+    }
+    return kNoOffset;
+}
+
+// Filled in place in the vector: a source built on the stack and copied in is read back with
+// wide loads from its narrow stores, which the processor cannot forward.
+inline void ModalInterpreter::fillSource(RecordSource& source, const Context& at,
+                                         std::uint8_t axisWords) {
     source.lineBegin = at.lineBegin;
     for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
-        if (!(axisWords & (1u << axis))) {
-            continue;
+        if (axisWords & (1u << axis)) {
+            const WordSpan& word = at.block.word(kAxisLetters[axis]);
+            source.wordBegin[axis] = static_cast<std::uint16_t>(word.valueBegin);
+            source.wordLength[axis] = static_cast<std::uint8_t>(word.valueEnd - word.valueBegin);
         }
-        const WordSpan& word = at.block.word(kAxisLetters[axis]);
-        if (word.valueBegin >= kNoWord) {
-            fail(at, word.valueBegin,
-                 "block too long: expected axis words within 65534 characters");
-            return;
-        }
-        source.wordBegin[axis] = static_cast<std::uint16_t>(word.valueBegin);
-        source.wordLength[axis] = static_cast<std::uint8_t>(word.valueEnd - word.valueBegin);
     }
     source.flags =
         static_cast<std::uint8_t>((m_incremental ? kIncremental : 0) | (m_inch ? kInch : 0) |
@@ -442,6 +475,14 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
                                      : (axis == 3 && m_shortestA) ? RotaryForm::Shortest
                                                                   : m_lastForms[rotary];
     }
+}
+
+void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
+    if (const std::uint32_t beyond = firstWordBeyondSource(at, axisWords); beyond != kNoOffset) {
+        fail(at, beyond, "block too long: expected axis words within 65534 characters");
+        return;
+    }
+    fillSource(m_program.sources.emplace_back(), at, axisWords);
     if (m_program.path.records.empty() && m_definedRadius) {
         m_program.path.toolRadius = *m_definedRadius;
     }
@@ -460,15 +501,16 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
     kinematics::TableAHeadB chain = m_machine.chain;
     chain.tipInWorkpiece = m_toolTip;
     const kinematics::ToolPose pose = kinematics::forwardKinematics(chain, axes);
-
-    toolpath::ClRecord record;
-    record.tip = pose.tip;
-    record.axis = pose.axis;
-    record.axes = axes;
-    record.motion =
+    const toolpath::MotionKind motion =
         m_motion == GKind::Linear ? toolpath::MotionKind::Feed : toolpath::MotionKind::Rapid;
-    record.feed = record.motion == toolpath::MotionKind::Feed ? feedOfRecord(pose.tip) : 0.0;
-    record.line = at.lineNumber;
+    m_program.path.records.push_back(toolpath::ClRecord{
+        .tip = pose.tip,
+        .axis = pose.axis,
+        .axes = axes,
+        .feed = motion == toolpath::MotionKind::Feed ? feedOfRecord(pose.tip) : 0.0,
+        .motion = motion,
+        .line = at.lineNumber,
+    });
     if (m_program.dialect == NcDialect::Iso &&
         m_machine.feedMeaning == kinematics::FeedMeaning::CombinedAxes) {
         const double fileFeed = m_feedPerMinuteMm.value_or(0.0) / (m_inch ? 25.4 : 1.0);
@@ -476,14 +518,12 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
     }
     m_lastRecordPosition = m_position;
     m_lastTip = pose.tip;
-    m_program.path.records.push_back(record);
-    m_program.sources.push_back(source);
 }
 
 // Whether F of a feed block is read over the combined axis move: ISO G94 on a control that
 // says so, without tool-tip programming (Sinumerik's FGROUP default and Heidenhain take F along
 // the linear path).
-bool ModalInterpreter::readsCombinedFeed() const {
+inline bool ModalInterpreter::readsCombinedFeed() const {
     return m_program.dialect == NcDialect::Iso && !m_inverseTime && !m_toolTip &&
            m_machine.feedMeaning == kinematics::FeedMeaning::CombinedAxes;
 }
@@ -491,7 +531,7 @@ bool ModalInterpreter::readsCombinedFeed() const {
 // Tip speed in mm/s. G94: F is mm/min, or over the combined move (then the block lasts that
 // move / F). G93: F is 1/min, the block lasts 1/F min. Either way the tip speed is the tip chord
 // over that time (0, unknown, for a first block without a start point).
-double ModalInterpreter::feedOfRecord(const Vec3& tip) const {
+inline double ModalInterpreter::feedOfRecord(const Vec3& tip) const {
     if (readsCombinedFeed()) {
         if (!m_lastTip || !m_lastRecordPosition) {
             return 0.0;

@@ -68,9 +68,11 @@ class ModalInterpreter {
     bool applyCWord(const Context& at);
     void applyOneShot(const Context& at, GKind kind, std::uint8_t axisWords);
     bool applyAxisWords(const Context& at, std::uint8_t axisWords);
-    double axisWordValue(const Context& at, std::size_t axis, const WordSpan& word);
+    double axisWordValue(const Context& at, std::size_t axis, const WordSpan& word, bool hasPoint);
     bool allAxesKnown() const;
     bool checkFeedAvailable(const Context& at);
+    std::uint32_t firstWordBeyondSource(const Context& at, std::uint8_t axisWords) const;
+    void fillSource(RecordSource& source, const Context& at, std::uint8_t axisWords);
     void addRecord(const Context& at, std::uint8_t axisWords);
     double feedOfRecord(const Vec3& tip) const;
     bool readsCombinedFeed() const;

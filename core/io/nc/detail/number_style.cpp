@@ -65,8 +65,7 @@ WordTextStyle styleOfWord(std::string_view text) {
     return style;
 }
 
-void noteAxisWord(AxisNumberStyle& axis, std::string_view text) {
-    const WordTextStyle word = styleOfWord(text);
+void noteAxisWord(AxisNumberStyle& axis, const WordTextStyle& word) {
     if (!axis.seen) {
         axis.seen = true;
         axis.minDecimals = word.decimals;

@@ -3,6 +3,7 @@
 #include "core/base/number_io.h"
 #include "core/io/nc/gcode_reader.h"
 #include "core/kinematics/machine_model.h"
+#include "tests/bench/bench_size.h"
 
 #include <benchmark/benchmark.h>
 
@@ -58,13 +59,14 @@ void parseOnce(benchmark::State& state, const std::string& text) {
 }
 
 void BM_ParseGcode(benchmark::State& state) {
-    static const std::string text = generateProgram(400000); // about 20 MB
+    static const std::string text =
+        generateProgram(bladeaxis::bench::scaled(400000)); // about 20 MB
     parseOnce(state, text);
 }
 BENCHMARK(BM_ParseGcode)->Unit(benchmark::kMillisecond);
 
 void BM_ParseGcodeMillionBlocks(benchmark::State& state) {
-    static const std::string text = generateProgram(1000000);
+    static const std::string text = generateProgram(bladeaxis::bench::scaled(1000000));
     parseOnce(state, text);
 }
 BENCHMARK(BM_ParseGcodeMillionBlocks)->Unit(benchmark::kMillisecond)->Iterations(3);

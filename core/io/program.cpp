@@ -227,6 +227,10 @@ const std::string& LoadedProgram::text() const {
                       document);
 }
 
+std::string LoadedProgram::releaseText() {
+    return std::visit([](auto& program) { return std::move(program.text); }, document);
+}
+
 std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t first,
                                     std::size_t count) {
     const auto* gcode = std::get_if<nc::GcodeProgram>(&program.document);
@@ -260,18 +264,11 @@ ProgramFormat LoadedProgram::format() const {
                                                             : ProgramFormat::Table;
 }
 
-Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,
-                                   ProgramFormat format, const kinematics::MachineModel& machine,
-                                   const ReadOptions& options) {
-    if (format == ProgramFormat::Gcode) {
-        auto program = nc::parseGcode(text, fileName, machine, options);
-        if (!program) {
-            return std::unexpected(program.error());
-        }
-        ReadOptions resolved = options;
-        resolved.angleUnit = program->angleUnit; // the written program is read back in it
-        return LoadedProgram{std::move(*program), resolved};
-    }
+namespace {
+
+// The formats whose readers keep a copy of their own: CL data and point tables.
+Result<LoadedProgram> parseTextFormat(std::string_view text, std::string_view fileName,
+                                      ProgramFormat format, const ReadOptions& options) {
     if (format == ProgramFormat::Table) {
         auto program = table::parsePointTable(text, fileName, options);
         if (!program) {
@@ -286,19 +283,57 @@ Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileN
     return LoadedProgram{std::move(*program), options};
 }
 
-Result<LoadedProgram> readProgramText(std::string_view text, const std::filesystem::path& path,
-                                      const kinematics::MachineModel& machine,
-                                      const ReadOptions& options) {
+} // namespace
+
+Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileName,
+                                        ProgramFormat format,
+                                        const kinematics::MachineModel& machine,
+                                        const ReadOptions& options) {
+    if (format != ProgramFormat::Gcode) {
+        return parseTextFormat(text, fileName, format, options);
+    }
+    auto program = nc::parseOwnedGcode(std::move(text), fileName, machine, options);
+    if (!program) {
+        return std::unexpected(program.error());
+    }
+    ReadOptions resolved = options;
+    resolved.angleUnit = program->angleUnit; // the written program is read back in it
+    return LoadedProgram{std::move(*program), resolved};
+}
+
+Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,
+                                   ProgramFormat format, const kinematics::MachineModel& machine,
+                                   const ReadOptions& options) {
+    if (format != ProgramFormat::Gcode) {
+        return parseTextFormat(text, fileName, format, options);
+    }
+    return parseOwnedProgram(std::string(text), fileName, format, machine, options);
+}
+
+namespace {
+
+Result<LoadedProgram> readOwnedProgramText(std::string text, const std::filesystem::path& path,
+                                           const kinematics::MachineModel& machine,
+                                           const ReadOptions& options) {
     auto probed = detectFormat(path, text);
     if (!probed) {
         return std::unexpected(probed.error());
     }
-    auto program = parseProgram(text, path.string(), probed->format, machine, options);
+    auto program =
+        parseOwnedProgram(std::move(text), path.string(), probed->format, machine, options);
     if (program && probed->warning) {
         program->mutablePath().warnings.insert(program->mutablePath().warnings.begin(),
                                                *probed->warning);
     }
     return program;
+}
+
+} // namespace
+
+Result<LoadedProgram> readProgramText(std::string_view text, const std::filesystem::path& path,
+                                      const kinematics::MachineModel& machine,
+                                      const ReadOptions& options) {
+    return readOwnedProgramText(std::string(text), path, machine, options);
 }
 
 Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
@@ -308,7 +343,7 @@ Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
     if (!text) {
         return std::unexpected(text.error());
     }
-    return readProgramText(*text, path, machine, options);
+    return readOwnedProgramText(std::move(*text), path, machine, options);
 }
 
 } // namespace bladeaxis::io

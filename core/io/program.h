@@ -45,6 +45,9 @@ struct LoadedProgram {
     // For the checks that normalise the input before scheduling (B noise snapped to its median).
     toolpath::Toolpath& mutablePath();
     const std::string& text() const; // the program as read, byte for byte
+    // The text moved out, for a caller that needs the records but no longer the document (the
+    // re-read check of a written program gives its text back to the writer's result).
+    std::string releaseText();
     ProgramFormat format() const;
     std::optional<NcDialect> dialect() const; // of a G-code family program
 };
@@ -65,6 +68,12 @@ Result<LoadedProgram> readProgramText(std::string_view text, const std::filesyst
 Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
                                   const kinematics::MachineModel& machine,
                                   const ReadOptions& options = {});
+
+// parseProgram of text the loaded program then keeps: a G-code program's text is not copied.
+Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileName,
+                                        ProgramFormat format,
+                                        const kinematics::MachineModel& machine,
+                                        const ReadOptions& options = {});
 
 // Parses text already in memory (the demo program is generated, never read from disk).
 Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,

@@ -90,10 +90,13 @@ struct WrittenProgram {
     std::vector<double> passFeeds; // mm/s
 };
 
-Result<WrittenProgram> readBackWritten(const RescheduleInput& input, const std::string& text) {
+// The text is lent to the re-read program, which keeps it without a copy (a million-block
+// program is 60 MB), and given back when the check is done.
+Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string& text) {
     const toolpath::Toolpath& original = input.program->path();
-    auto reread = io::parseProgram(text, original.sourceFile + " (re-scheduled)",
-                                   input.program->format(), *input.machine, input.program->options);
+    auto reread =
+        io::parseOwnedProgram(std::move(text), original.sourceFile + " (re-scheduled)",
+                              input.program->format(), *input.machine, input.program->options);
     if (!reread) {
         Error error = reread.error();
         error.code = ErrorCode::Internal;
@@ -116,6 +119,7 @@ Result<WrittenProgram> readBackWritten(const RescheduleInput& input, const std::
                          .norm());
         written.passFeeds.push_back(records[i].feed);
     }
+    text = reread->releaseText();
     return written;
 }
 

@@ -247,6 +247,12 @@ Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName
     return parseOwnedText(std::string(text), fileName, machine, options);
 }
 
+Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName,
+                                     const kinematics::MachineModel& machine,
+                                     const ReadOptions& options) {
+    return parseOwnedText(std::move(text), fileName, machine, options);
+}
+
 Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,
                                    const kinematics::MachineModel& machine,
                                    const ReadOptions& options) {

@@ -34,6 +34,7 @@
 #include "core/kinematics/machine_model.h"
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace bladeaxis::io::nc {
@@ -44,6 +45,11 @@ inline constexpr int kMaxParseErrors = 20;
 Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName,
                                 const kinematics::MachineModel& machine,
                                 const ReadOptions& options = {});
+
+// parseGcode of text the program then keeps as it is: a large program's text is not copied.
+Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName,
+                                     const kinematics::MachineModel& machine,
+                                     const ReadOptions& options = {});
 
 // Reads the whole file (FileNotFound / FileUnreadable) and parses it.
 Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+
 namespace bladeaxis::io {
 namespace {
 
@@ -53,6 +56,28 @@ TEST(FormatDetection, ATableNamedLikeGcodeIsReadAsATableWithTheWarningFirst) {
     EXPECT_EQ(program->format(), ProgramFormat::Table);
     ASSERT_FALSE(program->path().warnings.empty());
     EXPECT_NE(program->path().warnings.front().find("extension"), std::string::npos);
+}
+
+// The re-read check lends the written text to the reader and takes it back: the program it
+// reads must be the one a copied text gives, and the text must come back unchanged.
+TEST(OwnedText, AProgramReadFromOwnedTextEqualsTheCopiedOneAndGivesItsTextBack) {
+    const auto machine = kinematics::defaultBladeMachine();
+    const std::string gcode =
+        "%\nG21 G90 G94\nG1 X1. Y2. Z3. A40. B5. F1000.\nG1 X2. A60.\nM30\n%\n";
+    const std::string apt = "FEDRAT/1000\nGOTO/1,2,3,0,0,1\nGOTO/2,2,3,0,0,1\n";
+    for (const auto& [text, format] :
+         {std::pair{gcode, ProgramFormat::Gcode}, std::pair{apt, ProgramFormat::Apt}}) {
+        auto copied = parseProgram(text, "a", format, machine);
+        auto owned = parseOwnedProgram(std::string(text), "a", format, machine);
+        ASSERT_TRUE(copied.has_value()) << copied.error().toString();
+        ASSERT_TRUE(owned.has_value()) << owned.error().toString();
+        ASSERT_EQ(copied->path().records.size(), owned->path().records.size());
+        for (std::size_t i = 0; i < owned->path().records.size(); ++i) {
+            EXPECT_EQ(copied->path().records[i].tip, owned->path().records[i].tip);
+            EXPECT_EQ(copied->path().records[i].axis, owned->path().records[i].axis);
+        }
+        EXPECT_EQ(owned->releaseText(), text);
+    }
 }
 
 } // namespace

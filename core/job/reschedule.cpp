@@ -229,6 +229,15 @@ Status checkTravel(const RescheduleInput& input, const RescheduleOutcome& outcom
                      {input.program->path().sourceFile, passOf(input)[excess->index].line, 0});
 }
 
+// Between the stages of a large job (each a second or more on millions of blocks), so that an
+// interrupt takes effect at the next stage instead of at the end.
+Status checkCancelled(const CancelToken& cancel) {
+    if (cancel.isCancelled()) {
+        return makeError(ErrorCode::Cancelled, "the job was cancelled");
+    }
+    return {};
+}
+
 } // namespace
 
 bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::size_t count) {
@@ -261,12 +270,18 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     }
     RescheduleOutcome outcome = outcomeFrom(std::move(*schedule), passOf(input));
     outcome.stageSeconds.schedule = clock.lap();
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
     auto axes = newMachineAxes(input, outcome.records);
     if (!axes) {
         return std::unexpected(axes.error());
     }
     outcome.axes = std::move(*axes);
     outcome.stageSeconds.kinematics = clock.lap();
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
     // The analysis describes the program actually written. Its feeds are the input's unless
     // the pass is in inverse time (G93), where the same F over a new tip chord is a new tip
     // speed: then the analysis waits for the written program's feeds. Otherwise it needs only
@@ -281,6 +296,9 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     }
     outcome.programText = std::move(*text);
     outcome.stageSeconds.rewrite = clock.lap();
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
     auto written = input.verifyByRereading || feedsFromWritten
                        ? readBackWritten(input, outcome.programText)
                        : Result<WrittenProgram>(WrittenProgram{});

@@ -78,13 +78,25 @@ inline PlainDecimal readPlainDecimal(std::string_view text) {
     return number;
 }
 
+// A formatted number in a buffer of its own: the writer formats one or more numbers per block
+// and keeps only the few it writes, so the others cost no string.
+struct NumberText {
+    std::array<char, 64> chars; // the first `size` are written: no clearing per number
+    std::size_t size = 0;
+    // What parseNumber reads the text back as, when the formatting knows it without parsing.
+    std::optional<double> value;
+    std::string_view view() const { return {chars.data(), size}; }
+};
+
 // Fixed-point text with exactly `decimals` digits after the point, "-0.000" normalised to "0.000".
+NumberText fixedText(double value, int decimals);
 std::string formatFixed(double value, int decimals);
 
 // Shortest text that reads back to exactly the same double ("0.1", "1e-09").
 std::string formatShortest(double value);
 
 // Fixed-point text with up to `maxDecimals` digits, trailing zeros and a trailing point removed.
+NumberText trimmedText(double value, int maxDecimals);
 std::string formatTrimmed(double value, int maxDecimals);
 
 } // namespace bladeaxis

@@ -31,8 +31,14 @@ struct Edit {
     std::string text;
 };
 
+// The axes in kAxisLetters order. Built here rather than through MachineAxes::operator[], which
+// another library defines and the compiler cannot inline: this runs for every word.
+std::array<double, 5> axisValues(const MachineAxes& axes) {
+    return {axes.x, axes.y, axes.z, axes.a, axes.b};
+}
+
 double axisValue(const MachineAxes& axes, std::size_t axis) {
-    return axes[kinematics::kAllAxes[axis]];
+    return axisValues(axes)[axis];
 }
 
 Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> newAxes,
@@ -64,6 +70,33 @@ Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> ne
         }
     }
     return {};
+}
+
+// A word as the program wrote it: its value and how it is written.
+struct OldWord {
+    double value = 0.0;
+    detail::WordTextStyle style;
+};
+
+// Nearly every word is a plain decimal, whose value and style one pass reads, as the scanner
+// does; parseNumber and styleOfWord give the same for it, in two passes.
+OldWord readOldWord(std::string_view old) {
+    OldWord word;
+    if (const PlainDecimal plain = readPlainDecimal(old);
+        !old.empty() && plain.length == old.size()) {
+        word.value = plain.value;
+        detail::setPlainDecimalStyle(word.style, old, plain);
+    } else {
+        word.value = parseNumber(old).value_or(0.0);
+        word.style = detail::styleOfWord(old);
+    }
+    return word;
+}
+
+// A word's new number against its old one: a loop over a dozen characters, cheaper than the
+// memcmp call that comparing strings makes, for every changed word.
+bool sameText(std::string_view a, std::string_view b) {
+    return std::ranges::equal(a, b, [](char x, char y) { return x == y; });
 }
 
 bool isModuloForm(RotaryForm form) {
@@ -186,17 +219,27 @@ class Rewriter {
         return c.inch ? m_numbers.incrementInch : m_numbers.incrementMm;
     }
 
+    // What a word's number reads back as: known from its formatting, else parsed again.
+    static double readBack(const detail::WordNumber& number, double unreadable) {
+        return number.value ? *number.value : parseNumber(number.text).value_or(unreadable);
+    }
+
     // A modulo A written as "360.000" after rounding is written as 0 instead.
-    std::string wrapFormatted(const AxisContext& c, std::string text, double fileValue,
-                              std::string_view old) const {
+    detail::WordNumber wrapFormatted(const AxisContext& c, detail::WordNumber number,
+                                     double fileValue, std::string_view old) const {
         if (c.axis >= kAxisA && wrapsAbsolute(c) && !c.incremental &&
-            parseNumber(text).value_or(0.0) * wordScale(c, old) >= fullTurn()) {
+            readBack(number, 0.0) * wordScale(c, old) >= fullTurn()) {
             const AxisNumberStyle& style = m_program.axisStyles[c.axis];
             const double wrapped = (fileValue - fullTurn()) / wordScale(c, old);
-            return old.empty() ? detail::formatForInsertion(wrapped, style)
-                               : detail::formatLikeWord(wrapped, old, style);
+            return old.empty() ? detail::WordNumber{detail::formatForInsertion(wrapped, style), {}}
+                               : detail::numberLikeWord(wrapped, old, style);
         }
-        return text;
+        return number;
+    }
+    // An inserted word's text, wrapped like a rewritten one.
+    std::string wrappedInsertion(const AxisContext& c, double fileValue,
+                                 const AxisNumberStyle& style) const {
+        return wrapFormatted(c, {insertionText(fileValue, style), {}}, fileValue, "").text;
     }
 
     double increment(const AxisContext& c, double target, double before) const {
@@ -242,13 +285,10 @@ void Rewriter::feedEdit(std::size_t k, std::string_view line, const std::array<d
     const double programmed = m_program.programmedFeeds[k];
     double wanted = programmed;
     if ((source.flags & kCombinedFeed) && k > 0) {
-        const auto asArray = [](const MachineAxes& axes) {
-            return std::array<double, 5>{axes.x, axes.y, axes.z, axes.a, axes.b};
-        };
         const bool inch = (source.flags & kInch) != 0;
         const double oldLength =
-            detail::combinedAxisMove(asArray(*m_program.path.records[k - 1].axes),
-                                     asArray(*m_program.path.records[k].axes), inch);
+            detail::combinedAxisMove(axisValues(*m_program.path.records[k - 1].axes),
+                                     axisValues(*m_program.path.records[k].axes), inch);
         const double newLength = detail::combinedAxisMove(before, m_written, inch);
         if (oldLength > 1e-9 && newLength > 1e-9) {
             wanted = programmed * newLength / oldLength;
@@ -349,7 +389,8 @@ void Rewriter::editsFor(std::size_t k, std::string_view line, const MachineAxes&
         const std::string_view old =
             hasWord ? line.substr(source.wordBegin[axis], source.wordLength[axis]) : "";
         const double scale = wordScale(c, old);
-        const double oldFile = hasWord ? parseNumber(old).value_or(0.0) * scale : 0.0;
+        const OldWord oldWord = hasWord ? readOldWord(old) : OldWord{};
+        const double oldFile = hasWord ? oldWord.value * scale : 0.0;
         double before = m_written[axis];
         if (source.setOutside & (1u << axis)) {
             before =
@@ -363,19 +404,20 @@ void Rewriter::editsFor(std::size_t k, std::string_view line, const MachineAxes&
         if (hasWord) {
             writtenFile = oldFile;
             if (std::abs(fileValue - oldFile) > 1e-12 * std::max(1.0, std::abs(oldFile))) {
-                std::string text = wrapFormatted(
-                    c, detail::formatLikeWord(fileValue / scale, old, style), fileValue, old);
-                if (text != old) {
-                    writtenFile = parseNumber(text).value_or(fileValue / scale) * scale;
-                    edits.push_back({source.wordBegin[axis], source.wordLength[axis], text});
+                detail::WordNumber number = wrapFormatted(
+                    c, detail::numberInWordStyle(fileValue / scale, oldWord.style, style),
+                    fileValue, old);
+                if (!sameText(number.text, old)) {
+                    writtenFile = readBack(number, fileValue / scale) * scale;
+                    edits.push_back(
+                        {source.wordBegin[axis], source.wordLength[axis], std::move(number.text)});
                 }
             }
         } else {
-            std::string text = wrapFormatted(c, insertionText(fileValue, style), fileValue, "");
-            const std::string modal =
-                c.incremental ? insertionText(0.0, style)
-                              : wrapFormatted(c, insertionText(toFile(c, before, true), style),
-                                              toFile(c, before, true), "");
+            std::string text = wrappedInsertion(c, fileValue, style);
+            const std::string modal = c.incremental
+                                          ? insertionText(0.0, style)
+                                          : wrappedInsertion(c, toFile(c, before, true), style);
             if (text == modal) {
                 m_written[axis] = before;
                 continue;

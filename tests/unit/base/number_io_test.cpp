@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <charconv>
 #include <clocale>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace bladeaxis {
 namespace {
@@ -111,6 +114,90 @@ TEST(FormatFixed, WritesExactlyTheRequestedDecimals) {
 TEST(FormatFixed, NeverWritesNegativeZero) {
     EXPECT_EQ(formatFixed(-0.0001, 3), "0.000");
     EXPECT_EQ(formatFixed(-0.0, 2), "0.00");
+}
+
+// What formatFixed wrote when it always went through to_chars (the shortest form when 64
+// characters do not hold it): the reference its fast path must match byte for byte.
+std::string fixedThroughToChars(double value, int decimals) {
+    std::array<char, 64> buffer{};
+    auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                   std::chars_format::fixed, decimals);
+    if (ec != std::errc{}) {
+        end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
+    }
+    std::string text(buffer.data(), end);
+    if (text.front() == '-' && text.find_first_not_of("-0.") == std::string::npos) {
+        text.erase(0, 1);
+    }
+    return text;
+}
+
+void expectFixedLikeToChars(double value, int decimals) {
+    const NumberText text = fixedText(value, decimals);
+    ASSERT_EQ(text.view(), fixedThroughToChars(value, decimals))
+        << std::hexfloat << value << " to " << decimals << " decimals";
+    // The value it carries is the one reading the text back gives, without reading it.
+    if (text.value) {
+        ASSERT_EQ(*text.value, parseNumber(text.view()));
+        ASSERT_EQ(std::signbit(*text.value), std::signbit(*parseNumber(text.view())));
+    }
+}
+
+TEST(FormatFixed, AgreesWithToCharsOnRandomValues) {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> magnitude(-8.0, 8.0);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int trial = 0; trial < 2'000'000; ++trial) {
+        const double value = unit(random) * std::pow(10.0, magnitude(random));
+        expectFixedLikeToChars(value, static_cast<int>(random() % 9));
+    }
+}
+
+TEST(FormatFixed, AgreesWithToCharsOnHalfwayAndNearHalfwayValues) {
+    std::mt19937_64 random(11);
+    for (int trial = 0; trial < 1'000'000; ++trial) {
+        const int decimals = static_cast<int>(random() % 9);
+        // k + 1/2 units of the last place: a true tie when the double is exact (0.125 to 2),
+        // else its nearest doubles on either side.
+        const double units = static_cast<double>(random() % 2'000'000) + 0.5;
+        const double tie = units / std::pow(10.0, decimals);
+        for (const double value : {tie, std::nextafter(tie, 0.0), std::nextafter(tie, 1e300)}) {
+            expectFixedLikeToChars(value, decimals);
+            expectFixedLikeToChars(-value, decimals);
+        }
+    }
+}
+
+TEST(FormatFixed, AgreesWithToCharsOnEdgeValues) {
+    std::vector<double> values{0.0,     -0.0,
+                               0.125,   2.5,
+                               0.5,     1.5,
+                               -2.5,    0.005,
+                               1.005,   1e-300,
+                               5e-324,  1e15,
+                               1e16,    1e20,
+                               1e300,   -1e300,
+                               0x1p50,  0x1p53,
+                               0x1p63,  0x1p64,
+                               -0.0001, 0.49999999999999994};
+    for (int power = -10; power <= 22; ++power) {
+        const double ten = std::pow(10.0, power);
+        values.insert(values.end(), {ten, std::nextafter(ten, 0.0), std::nextafter(ten, 1e300)});
+    }
+    for (const double value : values) {
+        for (int decimals = 0; decimals <= 17; ++decimals) {
+            expectFixedLikeToChars(value, decimals);
+            expectFixedLikeToChars(-value, decimals);
+        }
+    }
+}
+
+TEST(FormatFixed, WritesNonFiniteValuesAsToCharsDoes) {
+    for (const double value :
+         {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::quiet_NaN()}) {
+        EXPECT_EQ(formatFixed(value, 3), fixedThroughToChars(value, 3));
+    }
 }
 
 TEST(FormatTrimmed, DropsTrailingZerosAndPoint) {

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -65,6 +68,34 @@ TEST(NumberStyle, NotedStyleAgreesWithTheTextForEveryShapeOfPlainDecimal) {
         }
         expectSameStyle(text);
     }
+}
+
+// The writer takes the value a rewritten word reads back as from numberLikeWord instead of
+// parsing the word again: it must be exactly what parsing gives, or nothing.
+TEST(NumberStyle, RewrittenWordCarriesTheValueItReadsBackAs) {
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const std::array<const char*, 8> oldWords{"1.500", ".5",  "+0.25", "10.",
+                                              "-3",    "0.0", "+.125", "-.0000"};
+    AxisNumberStyle fixedDecimals{.seen = true, .minDecimals = 3, .maxDecimals = 3};
+    AxisNumberStyle trimmed{.seen = true, .minDecimals = 0, .maxDecimals = 4, .leadingZero = false};
+    for (int trial = 0; trial < 200'000; ++trial) {
+        const double value = unit(random) * std::pow(10.0, static_cast<int>(random() % 8) - 4);
+        const char* old = oldWords[random() % oldWords.size()];
+        for (const AxisNumberStyle& axis : {fixedDecimals, trimmed}) {
+            const detail::WordNumber word = detail::numberLikeWord(value, old, axis);
+            ASSERT_EQ(word.text, detail::formatLikeWord(value, old, axis));
+            const std::optional<double> parsed = parseNumber(word.text);
+            if (word.value) {
+                ASSERT_EQ(word.value, parsed) << word.text;
+                ASSERT_EQ(std::signbit(*word.value), std::signbit(*parsed)) << word.text;
+            }
+        }
+    }
+    // "0." without its leading zero is "." alone, which reads as nothing.
+    const detail::WordNumber bare = detail::numberLikeWord(0.0, ".", trimmed);
+    EXPECT_EQ(bare.text, ".");
+    EXPECT_FALSE(bare.value.has_value());
 }
 
 } // namespace

@@ -12,25 +12,32 @@ namespace {
 // for 0.1 um and 0.0001 deg, more than the control resolves, so nothing is lost.
 constexpr int kDefaultDecimals = 4;
 
-// Applies leading-zero and sign conventions to a formatFixed/formatTrimmed result.
-std::string decorate(std::string text, bool leadingZero, bool explicitPlus) {
-    const bool negative = !text.empty() && text.front() == '-';
-    const std::size_t digits = negative ? 1 : 0;
-    if (!leadingZero && text.size() > digits + 1 && text[digits] == '0' &&
-        text[digits + 1] == '.') {
-        text.erase(digits, 1);
+// A formatted number (fixedText / trimmedText) in a word's style: a point added when `wantPoint`
+// and it has none, "0." shortened to "." without `leadingZero`, a '+' before a positive number
+// with `explicitPlus`. Built in one pass: it runs for every changed word.
+WordNumber decorated(const NumberText& number, bool wantPoint, bool leadingZero,
+                     bool explicitPlus) {
+    const std::string_view digits = number.view();
+    const bool negative = digits.starts_with('-');
+    const std::string_view body = negative ? digits.substr(1) : digits;
+    // A loop over a dozen characters, cheaper than the memchr call find() makes.
+    const bool addPoint =
+        wantPoint && std::ranges::none_of(body, [](char ch) { return ch == '.'; });
+    const bool pointAfterFirst = body.size() > 1 ? body[1] == '.' : addPoint;
+    const bool dropZero = !leadingZero && body.starts_with('0') && pointAfterFirst;
+    WordNumber word;
+    if (negative || explicitPlus) {
+        word.text += negative ? '-' : '+';
     }
-    if (explicitPlus && !negative) {
-        text.insert(text.begin(), '+');
+    word.text.append(dropZero ? body.substr(1) : body);
+    if (addPoint) {
+        word.text += '.';
     }
-    return text;
-}
-
-std::string withTrailingPoint(std::string text, bool wantPoint) {
-    if (wantPoint && text.find('.') == std::string::npos) {
-        text += '.';
-    }
-    return text;
+    // Neither the point nor a sign changes the value the digits read as; "." alone has no digit
+    // and parseNumber refuses it.
+    const bool lostTheOnlyDigit = dropZero && body.size() == 1;
+    word.value = lostTheOnlyDigit ? std::nullopt : number.value;
+    return word;
 }
 
 int trimmedDecimals(const AxisNumberStyle& axis) {
@@ -80,28 +87,35 @@ void noteAxisWord(AxisNumberStyle& axis, const WordTextStyle& word) {
     }
 }
 
+WordNumber numberLikeWord(double value, std::string_view old, const AxisNumberStyle& axis) {
+    return numberInWordStyle(value, styleOfWord(old), axis);
+}
+
+WordNumber numberInWordStyle(double value, const WordTextStyle& word, const AxisNumberStyle& axis) {
+    const NumberText number = axis.trimsZeros() ? trimmedText(value, trimmedDecimals(axis))
+                                                : fixedText(value, word.decimals);
+    return decorated(number, word.hasPoint, word.leadingZero.value_or(axis.leadingZero),
+                     word.explicitPlus);
+}
+
 std::string formatLikeWord(double value, std::string_view old, const AxisNumberStyle& axis) {
-    const WordTextStyle word = styleOfWord(old);
-    std::string text;
-    if (axis.trimsZeros()) {
-        text = withTrailingPoint(formatTrimmed(value, trimmedDecimals(axis)), word.hasPoint);
-    } else {
-        text = withTrailingPoint(formatFixed(value, word.decimals), word.hasPoint);
-    }
-    return decorate(std::move(text), word.leadingZero.value_or(axis.leadingZero),
-                    word.explicitPlus);
+    return numberLikeWord(value, old, axis).text;
 }
 
 std::string formatForInsertion(double value, const AxisNumberStyle& axis) {
-    std::string text;
     if (!axis.seen) {
-        text = formatFixed(value, kDefaultDecimals);
-    } else if (axis.trimsZeros()) {
-        text = withTrailingPoint(formatTrimmed(value, trimmedDecimals(axis)), axis.trailingPoint);
-    } else {
-        text = withTrailingPoint(formatFixed(value, axis.maxDecimals), axis.maxDecimals == 0);
+        return decorated(fixedText(value, kDefaultDecimals), false, axis.leadingZero,
+                         axis.explicitPlus)
+            .text;
     }
-    return decorate(std::move(text), axis.leadingZero, axis.explicitPlus);
+    if (axis.trimsZeros()) {
+        return decorated(trimmedText(value, trimmedDecimals(axis)), axis.trailingPoint,
+                         axis.leadingZero, axis.explicitPlus)
+            .text;
+    }
+    return decorated(fixedText(value, axis.maxDecimals), axis.maxDecimals == 0, axis.leadingZero,
+                     axis.explicitPlus)
+        .text;
 }
 
 } // namespace bladeaxis::io::nc::detail

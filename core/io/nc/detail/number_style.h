@@ -43,7 +43,16 @@ inline void setPlainDecimalStyle(WordTextStyle& style, std::string_view text,
 // Adds one word of an axis, written in `word` style, to what is known about that axis' style.
 void noteAxisWord(AxisNumberStyle& axis, const WordTextStyle& word);
 
+// A word's number and what parseNumber reads it back as, when that is known without parsing it.
+struct WordNumber {
+    std::string text;
+    std::optional<double> value;
+};
+
 // `value` (file units) written the way the word `old` was written, within the axis' style.
+WordNumber numberLikeWord(double value, std::string_view old, const AxisNumberStyle& axis);
+// The same for an old word whose style is known already (styleOfWord or setPlainDecimalStyle).
+WordNumber numberInWordStyle(double value, const WordTextStyle& word, const AxisNumberStyle& axis);
 std::string formatLikeWord(double value, std::string_view old, const AxisNumberStyle& axis);
 
 // `value` (file units) written as a new word of that axis.

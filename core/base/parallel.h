@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <exception>
 #include <thread>
 #include <vector>
 
@@ -28,20 +29,35 @@ inline std::size_t rangeCount(std::size_t count, unsigned threads) {
 }
 
 // Calls body(range, begin, end) for `ranges` contiguous ranges covering [0, count), one thread
-// per range (the calling thread takes the first).
+// per range (the calling thread takes the first). An exception in any range (out of memory) is
+// rethrown on the calling thread once every range has ended, as a serial loop would throw it,
+// instead of terminating the process from a worker thread.
 template <class Body>
 void forEachRangeOf(std::size_t count, std::size_t ranges, Body&& body) {
     const auto bounds = [count, ranges](std::size_t r) { return count * r / ranges; };
+    std::vector<std::exception_ptr> failures(ranges);
+    const auto run = [&](std::size_t r) {
+        try {
+            body(r, bounds(r), bounds(r + 1));
+        } catch (...) {
+            failures[r] = std::current_exception();
+        }
+    };
     std::vector<std::thread> pool;
     pool.reserve(ranges > 0 ? ranges - 1 : 0);
     for (std::size_t r = 1; r < ranges; ++r) {
-        pool.emplace_back([&body, &bounds, r] { body(r, bounds(r), bounds(r + 1)); });
+        pool.emplace_back(run, r);
     }
     if (ranges > 0) {
-        body(std::size_t{0}, bounds(0), bounds(1));
+        run(0);
     }
     for (std::thread& thread : pool) {
         thread.join();
+    }
+    for (const std::exception_ptr& failure : failures) {
+        if (failure) {
+            std::rethrow_exception(failure);
+        }
     }
 }
 

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <mutex>
+#include <new>
 #include <numeric>
 #include <set>
 #include <thread>
@@ -74,6 +75,17 @@ TEST(Parallel, EveryItemIsHandedOutOnce) {
     for (std::size_t i = 0; i < count; ++i) {
         EXPECT_EQ(visits[i].load(), 1) << i;
     }
+}
+
+TEST(Parallel, AnExceptionInAWorkerRangeReachesTheCaller) {
+    const std::size_t count = 4 * kMinParallelRange;
+    EXPECT_THROW(forEachRange(count, 4,
+                              [count](std::size_t begin, std::size_t) {
+                                  if (begin >= count / 2) {
+                                      throw std::bad_alloc();
+                                  }
+                              }),
+                 std::bad_alloc);
 }
 
 TEST(Parallel, ZeroThreadsMeansEveryHardwareThread) {

@@ -64,9 +64,7 @@ std::optional<double> parseNumber(std::string_view token) {
 
 namespace {
 
-constexpr int kMaxExactDecimals = 15;
-constexpr std::array<double, kMaxExactDecimals + 1> kPowersOfTen{
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+constexpr int kMaxExactDecimals = static_cast<int>(kMaxPlainDigits);
 // Below 2^50 the fraction of a scaled value is resolved to at least 1/8.
 constexpr double kMaxExactScaled = 0x1p50;
 
@@ -80,7 +78,7 @@ std::optional<std::uint64_t> exactlyRoundedDigits(double magnitude, int decimals
     if (decimals < 0 || decimals > kMaxExactDecimals) {
         return std::nullopt;
     }
-    const double scaled = magnitude * kPowersOfTen[static_cast<std::size_t>(decimals)];
+    const double scaled = magnitude * kExactPowersOfTen[static_cast<std::size_t>(decimals)];
     if (!(scaled < kMaxExactScaled)) { // also NaN and infinity
         return std::nullopt;
     }
@@ -143,7 +141,7 @@ NumberText fixedFromDigits(bool negative, std::uint64_t digits, int decimals) {
     NumberText text;
     // parseNumber reads these digits as one integer over a power of ten, correctly rounded like
     // this quotient of two exact doubles (or through from_chars past 15 digits, equally so).
-    const double magnitude = static_cast<double>(digits) / kPowersOfTen[fractionDigits];
+    const double magnitude = static_cast<double>(digits) / kExactPowersOfTen[fractionDigits];
     text.value = sign ? -magnitude : magnitude;
     // Written in place, back to front, once the length is known: no copy of a scratch buffer.
     const std::size_t integerDigits =

@@ -37,9 +37,12 @@ struct PlainDecimal {
 
 inline constexpr std::size_t kMaxPlainDigits = 15;
 
+// 10^k for k <= kMaxPlainDigits, each exactly a double: reading and formatting plain decimals
+// divide or multiply by them with a single rounding.
+inline constexpr std::array<double, kMaxPlainDigits + 1> kExactPowersOfTen{
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+
 inline PlainDecimal readPlainDecimal(std::string_view text) {
-    static constexpr std::array<double, kMaxPlainDigits + 1> kPowersOfTen{
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
     const auto isDigitAt = [text](std::size_t i) {
         return i < text.size() && text[i] >= '0' && text[i] <= '9';
     };
@@ -69,10 +72,11 @@ inline PlainDecimal readPlainDecimal(std::string_view text) {
     const std::size_t digits = number.integerDigits + number.fractionDigits;
     const bool plain = digits > 0 && digits <= kMaxPlainDigits;
     // A whole number needs no division, whose latency the next word would wait for.
-    const double magnitude = !plain                       ? 0.0
-                             : number.fractionDigits == 0 ? static_cast<double>(mantissa)
-                                                          : static_cast<double>(mantissa) /
-                                                                kPowersOfTen[number.fractionDigits];
+    const double magnitude =
+        !plain ? 0.0
+        : number.fractionDigits == 0
+            ? static_cast<double>(mantissa)
+            : static_cast<double>(mantissa) / kExactPowersOfTen[number.fractionDigits];
     number.value = negative ? -magnitude : magnitude;
     number.length = plain ? i : 0;
     return number;

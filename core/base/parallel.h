@@ -69,6 +69,24 @@ void forEachRange(std::size_t count, unsigned threads, Body&& body) {
                    [&body](std::size_t, std::size_t begin, std::size_t end) { body(begin, end); });
 }
 
+// A loop that stops at its first failure, over ranges: step(i) returns false for a failing i,
+// each range stops at its own first one, and the result is the first failing i of the whole
+// input (count when none). Every i before it has been stepped, as in the serial loop.
+template <class Step>
+std::size_t forEachUntilFirstFailure(std::size_t count, unsigned threads, Step&& step) {
+    std::vector<std::size_t> firstFailure(rangeCount(count, threads), count);
+    forEachRangeOf(count, firstFailure.size(),
+                   [&](std::size_t range, std::size_t begin, std::size_t end) {
+                       for (std::size_t i = begin; i < end; ++i) {
+                           if (!step(i)) {
+                               firstFailure[range] = i;
+                               return;
+                           }
+                       }
+                   });
+    return *std::min_element(firstFailure.begin(), firstFailure.end());
+}
+
 // Calls body(i) for every i in [0, count), items handed out one at a time to up to `threads`
 // threads (0 = all): for few items of uneven cost, such as the layers of a toolpath. `weight`
 // is the total work in points; below kMinParallelRange points all of it runs serially.

@@ -118,13 +118,6 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
     return io::readProgramText(*content, spec.program, machine, spec.read);
 }
 
-Status checkCancelled(const CancelToken& cancel) {
-    if (cancel.isCancelled()) {
-        return makeError(ErrorCode::Cancelled, "the job was cancelled");
-    }
-    return {};
-}
-
 Status analyse(JobResult& result, const JobSpec& spec) {
     const auto& records = result.program.path().records;
     result.pass = longestFeedRun(records);

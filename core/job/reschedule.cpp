@@ -229,16 +229,14 @@ Status checkTravel(const RescheduleInput& input, const RescheduleOutcome& outcom
                      {input.program->path().sourceFile, passOf(input)[excess->index].line, 0});
 }
 
-// Between the stages of a large job (each a second or more on millions of blocks), so that an
-// interrupt takes effect at the next stage instead of at the end.
+} // namespace
+
 Status checkCancelled(const CancelToken& cancel) {
     if (cancel.isCancelled()) {
         return makeError(ErrorCode::Cancelled, "the job was cancelled");
     }
     return {};
 }
-
-} // namespace
 
 bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::size_t count) {
     const auto* gcode = std::get_if<io::nc::GcodeProgram>(&program.document);

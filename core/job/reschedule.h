@@ -64,6 +64,10 @@ constexpr double kCentreDeviationLimitMm = 5e-3;
 // program's feeds from the written program read back.
 bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::size_t count);
 
+// ErrorCode::Cancelled once the token is set. A job checks it between its stages, each a second
+// or more on millions of blocks, so that an interrupt takes effect at the next stage.
+Status checkCancelled(const CancelToken& cancel);
+
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel);
 
 } // namespace bladeaxis::job

@@ -63,20 +63,14 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const T
     const std::size_t n = poses.size();
     // The angles of every pose at once (they need no neighbour), the earliest failure wins.
     std::vector<AxisAngles> angles(n);
-    std::vector<std::size_t> firstFailure(rangeCount(n, threads), n);
-    forEachRangeOf(n, firstFailure.size(),
-                   [&](std::size_t range, std::size_t begin, std::size_t end) {
-                       for (std::size_t i = begin; i < end; ++i) {
-                           auto solved = axisAngles(poses[i]);
-                           if (!solved) {
-                               firstFailure[range] = i;
-                               return;
-                           }
-                           angles[i] = *solved;
-                       }
-                   });
-    if (const std::size_t failed = *std::min_element(firstFailure.begin(), firstFailure.end());
-        failed < n) {
+    const std::size_t failed = forEachUntilFirstFailure(n, threads, [&](std::size_t i) {
+        auto solved = axisAngles(poses[i]);
+        if (solved) {
+            angles[i] = *solved;
+        }
+        return solved.has_value();
+    });
+    if (failed < n) {
         result.failedIndex = failed;
         result.failure = axisAngles(poses[failed]).error();
         return result;

@@ -45,20 +45,10 @@ Status validateInput(std::span<const Vec3> centres, std::span<const Vec3> axes, 
                                                          std::to_string(centres.size()) + " vs " +
                                                          std::to_string(axes.size()) + ")");
     }
-    // The first faulty point of the whole input: each range finds its own first, the earliest
-    // range with one wins.
     const std::size_t n = centres.size();
-    std::vector<std::size_t> firstFault(rangeCount(n, threads), n);
-    forEachRangeOf(n, firstFault.size(),
-                   [&](std::size_t range, std::size_t begin, std::size_t end) {
-                       for (std::size_t i = begin; i < end; ++i) {
-                           if (faultOf(centres[i], axes[i]) != PointFault::None) {
-                               firstFault[range] = i;
-                               return;
-                           }
-                       }
-                   });
-    const std::size_t i = *std::min_element(firstFault.begin(), firstFault.end());
+    const std::size_t i = forEachUntilFirstFailure(n, threads, [&](std::size_t k) {
+        return faultOf(centres[k], axes[k]) == PointFault::None;
+    });
     if (i == n) {
         return {};
     }

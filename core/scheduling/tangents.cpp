@@ -123,42 +123,37 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
     // point and gives bit-identical values. Point i reads the angle of j only when j has a
     // forward chord, and writes its own angle only when it has none, so ranges of points can
     // run at once.
-    std::vector<std::size_t> firstDegenerate(rangeCount(n, threads), n);
-    forEachRangeOf(
-        n, firstDegenerate.size(), [&](std::size_t range, std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const Chord backward = chordFrom(points, i, -1, field.chordLengthMm);
-                const bool hasForward = forwardEnd[i] != kNoChord;
-                if (!hasForward && !backward.found) {
-                    firstDegenerate[range] = i;
-                    return;
-                }
-                double minusAngle = 0.0;
-                if (backward.found) {
-                    minusAngle = forwardEnd[backward.end] == i ? field.forwardAngle[backward.end]
-                                                               : angleOf(backward.vector);
-                }
-                // [A] At the ends one side is missing: use the other, so tau = 0 there.
-                const double plusAngle = hasForward ? field.forwardAngle[i] : minusAngle;
-                const double plusNorm = hasForward ? field.curvature[i] : backward.norm;
-                if (!backward.found) {
-                    minusAngle = plusAngle;
-                }
-                const double minusNorm = backward.found ? backward.norm : plusNorm;
-                if (!hasForward) {
-                    field.forwardAngle[i] = plusAngle;
-                }
-                field.turning[i] = detail::wrapAngle(plusAngle - minusAngle);
-                // [A] Normalised curvature: the chords' directions are the tangents at their
-                // mid-points, so tau spans (|e+| + |e-|)/2 of arc. This keeps kappa_h in 1/mm
-                // independent of the point density (the literal sum of tau / w of §1.6 is not).
-                field.curvature[i] = 2.0 * field.turning[i] / (plusNorm + minusNorm);
-            }
-        });
-    if (const std::size_t i = *std::min_element(firstDegenerate.begin(), firstDegenerate.end());
-        i < n) {
+    const std::size_t degenerate = forEachUntilFirstFailure(n, threads, [&](std::size_t i) {
+        const Chord backward = chordFrom(points, i, -1, field.chordLengthMm);
+        const bool hasForward = forwardEnd[i] != kNoChord;
+        if (!hasForward && !backward.found) {
+            return false;
+        }
+        double minusAngle = 0.0;
+        if (backward.found) {
+            minusAngle = forwardEnd[backward.end] == i ? field.forwardAngle[backward.end]
+                                                       : angleOf(backward.vector);
+        }
+        // [A] At the ends one side is missing: use the other, so tau = 0 there.
+        const double plusAngle = hasForward ? field.forwardAngle[i] : minusAngle;
+        const double plusNorm = hasForward ? field.curvature[i] : backward.norm;
+        if (!backward.found) {
+            minusAngle = plusAngle;
+        }
+        const double minusNorm = backward.found ? backward.norm : plusNorm;
+        if (!hasForward) {
+            field.forwardAngle[i] = plusAngle;
+        }
+        field.turning[i] = detail::wrapAngle(plusAngle - minusAngle);
+        // [A] Normalised curvature: the chords' directions are the tangents at their
+        // mid-points, so tau spans (|e+| + |e-|)/2 of arc. This keeps kappa_h in 1/mm
+        // independent of the point density (the literal sum of tau / w of §1.6 is not).
+        field.curvature[i] = 2.0 * field.turning[i] / (plusNorm + minusNorm);
+        return true;
+    });
+    if (degenerate < n) {
         return makeError(ErrorCode::Geometry,
-                         "the projected path is degenerate at point " + std::to_string(i));
+                         "the projected path is degenerate at point " + std::to_string(degenerate));
     }
     // Unwrapped along the whole path (geometry::unwrap, with the fast wrap), in place: each
     // step reads the wrapped value at i before overwriting it.

@@ -88,6 +88,21 @@ TEST(Parallel, AnExceptionInAWorkerRangeReachesTheCaller) {
                  std::bad_alloc);
 }
 
+TEST(Parallel, TheFirstFailureOfTheWholeInputWinsAndEverythingBeforeItIsStepped) {
+    const std::size_t count = 4 * kMinParallelRange;
+    const std::size_t early = count / 2 + 5; // in a later range than the start
+    const std::size_t late = count - 3;
+    std::vector<char> stepped(count, 0);
+    const std::size_t failed = forEachUntilFirstFailure(count, 4, [&](std::size_t i) {
+        stepped[i] = 1;
+        return i != early && i != late;
+    });
+    EXPECT_EQ(failed, early);
+    EXPECT_TRUE(std::all_of(stepped.begin(), stepped.begin() + static_cast<long>(early + 1),
+                            [](char s) { return s == 1; }));
+    EXPECT_EQ(forEachUntilFirstFailure(count, 4, [](std::size_t) { return true; }), count);
+}
+
 TEST(Parallel, ZeroThreadsMeansEveryHardwareThread) {
     EXPECT_EQ(resolveThreadCount(0), std::max(1u, std::thread::hardware_concurrency()));
     EXPECT_EQ(resolveThreadCount(3), 3u);

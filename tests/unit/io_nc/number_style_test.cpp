@@ -84,7 +84,6 @@ TEST(NumberStyle, RewrittenWordCarriesTheValueItReadsBackAs) {
         const char* old = oldWords[random() % oldWords.size()];
         for (const AxisNumberStyle& axis : {fixedDecimals, trimmed}) {
             const detail::WordNumber word = detail::numberLikeWord(value, old, axis);
-            ASSERT_EQ(word.text, detail::formatLikeWord(value, old, axis));
             const std::optional<double> parsed = parseNumber(word.text);
             if (word.value) {
                 ASSERT_EQ(word.value, parsed) << word.text;

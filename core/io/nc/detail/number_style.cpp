@@ -98,24 +98,13 @@ WordNumber numberInWordStyle(double value, const WordTextStyle& word, const Axis
                      word.explicitPlus);
 }
 
-std::string formatLikeWord(double value, std::string_view old, const AxisNumberStyle& axis) {
-    return numberLikeWord(value, old, axis).text;
-}
-
 std::string formatForInsertion(double value, const AxisNumberStyle& axis) {
-    if (!axis.seen) {
-        return decorated(fixedText(value, kDefaultDecimals), false, axis.leadingZero,
-                         axis.explicitPlus)
-            .text;
-    }
-    if (axis.trimsZeros()) {
-        return decorated(trimmedText(value, trimmedDecimals(axis)), axis.trailingPoint,
-                         axis.leadingZero, axis.explicitPlus)
-            .text;
-    }
-    return decorated(fixedText(value, axis.maxDecimals), axis.maxDecimals == 0, axis.leadingZero,
-                     axis.explicitPlus)
-        .text;
+    const bool trims = axis.trimsZeros();
+    const NumberText number = !axis.seen ? fixedText(value, kDefaultDecimals)
+                              : trims    ? trimmedText(value, trimmedDecimals(axis))
+                                         : fixedText(value, axis.maxDecimals);
+    const bool wantPoint = axis.seen && (trims ? axis.trailingPoint : axis.maxDecimals == 0);
+    return decorated(number, wantPoint, axis.leadingZero, axis.explicitPlus).text;
 }
 
 } // namespace bladeaxis::io::nc::detail

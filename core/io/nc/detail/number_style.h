@@ -53,7 +53,6 @@ struct WordNumber {
 WordNumber numberLikeWord(double value, std::string_view old, const AxisNumberStyle& axis);
 // The same for an old word whose style is known already (styleOfWord or setPlainDecimalStyle).
 WordNumber numberInWordStyle(double value, const WordTextStyle& word, const AxisNumberStyle& axis);
-std::string formatLikeWord(double value, std::string_view old, const AxisNumberStyle& axis);
 
 // `value` (file units) written as a new word of that axis.
 std::string formatForInsertion(double value, const AxisNumberStyle& axis);

@@ -266,6 +266,19 @@ ProgramFormat LoadedProgram::format() const {
 
 namespace {
 
+// CL data and point tables give the tool in the program's workpiece frame, whose table axis is
+// X or Y as the machine's table turns; the engine's frame has it along x.
+void toEngineFrame(std::vector<toolpath::ClRecord>& records,
+                   const kinematics::MachineModel& machine) {
+    if (!machine.turnsAboutY()) {
+        return;
+    }
+    for (toolpath::ClRecord& record : records) {
+        record.tip = machine.toEngineFrame(record.tip);
+        record.axis = machine.toEngineFrame(record.axis);
+    }
+}
+
 // The formats whose readers keep a copy of their own: CL data and point tables.
 Result<LoadedProgram> parseTextFormat(std::string_view text, std::string_view fileName,
                                       ProgramFormat format, const ReadOptions& options) {
@@ -290,7 +303,11 @@ Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileN
                                         const kinematics::MachineModel& machine,
                                         const ReadOptions& options) {
     if (format != ProgramFormat::Gcode) {
-        return parseTextFormat(text, fileName, format, options);
+        auto program = parseTextFormat(text, fileName, format, options);
+        if (program) {
+            toEngineFrame(program->mutablePath().records, machine);
+        }
+        return program;
     }
     auto program = nc::parseOwnedGcode(std::move(text), fileName, machine, options);
     if (!program) {

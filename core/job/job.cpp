@@ -145,8 +145,9 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     if (const auto excess = kinematics::firstTravelExcess(result.axes, result.machine)) {
         result.warnings.push_back(
             result.program.path().sourceFile + ":" + std::to_string(pass[excess->index].line) +
-            ": the input program drives " + kinematics::describe(*excess) + " of the machine '" +
-            result.machine.name + "' (is the machine file the machine it runs on?)");
+            ": the input program drives " + kinematics::describe(*excess, result.machine) +
+            " of the machine '" + result.machine.name +
+            "' (is the machine file the machine it runs on?)");
     }
     analysis::AxisProfileOptions options = spec.analysis;
     options.blockTimes = passIsBlockTimed(result.program, result.pass.first, result.pass.count);
@@ -165,9 +166,21 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     return {};
 }
 
-Result<cad::CadShape> bladeShape(const JobSpec& spec) {
+// A CAD model is placed in the program's workpiece frame; on a machine whose table turns about
+// Y the engine's frame is that one turned a quarter turn about Z (MachineModel::toEngineFrame).
+cad::Placement placementInEngineFrame(const cad::Placement& placement,
+                                      const kinematics::MachineModel& machine) {
+    Mat3 toEngine;
+    for (int column = 0; column < 3; ++column) {
+        toEngine.col(column) = machine.toEngineFrame(Mat3::Identity().col(column));
+    }
+    return {toEngine * placement.rotation, toEngine * placement.translation};
+}
+
+Result<cad::CadShape> bladeShape(const JobSpec& spec, const kinematics::MachineModel& machine) {
     if (!spec.cad.file.empty()) {
-        return cad::readCadFile(spec.cad.file, cad::toPlacement(spec.cad.placement));
+        return cad::readCadFile(
+            spec.cad.file, placementInEngineFrame(cad::toPlacement(spec.cad.placement), machine));
     }
     auto blade = blade::demoBlade(); // the demo program was generated on it
     if (!blade) {
@@ -239,7 +252,7 @@ Result<CadCheckSpec> cadCheckSpec(const JobSpec& spec, std::optional<double> too
 
 Status cadCheckInto(JobResult& result, const JobSpec& spec, const CadCheckSpec& cadSpec,
                     ProgressSink& progress) {
-    auto shape = bladeShape(spec);
+    auto shape = bladeShape(spec, result.machine);
     if (!shape) {
         return std::unexpected(shape.error());
     }

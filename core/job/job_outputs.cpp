@@ -86,6 +86,10 @@ Result<std::string> rescheduledClText(const JobResult& result) {
     toolpath::Toolpath path = result.program.path();
     std::ranges::copy(result.rescheduled->records,
                       path.records.begin() + static_cast<std::ptrdiff_t>(result.pass.first));
+    for (toolpath::ClRecord& record : path.records) { // in the program's workpiece frame
+        record.tip = result.machine.toProgramFrame(record.tip);
+        record.axis = result.machine.toProgramFrame(record.axis);
+    }
     io::cl::AptEmitOptions options;
     options.toolRadius = result.toolRadius;
     options.comments = {"re-scheduled by BladeAxis from " +

@@ -77,6 +77,12 @@ Result<std::string> rewriteProgram(const RescheduleInput& input,
     }
     std::vector<ClRecord> records = all;
     std::copy(passRecords.begin(), passRecords.end(), records.begin() + input.passFirst);
+    if (input.machine->turnsAboutY()) { // back to the program's workpiece frame
+        for (ClRecord& record : records) {
+            record.tip = input.machine->toProgramFrame(record.tip);
+            record.axis = input.machine->toProgramFrame(record.axis);
+        }
+    }
     if (const auto* table = std::get_if<io::table::TableProgram>(&input.program->document)) {
         return io::table::rewritePointTable(*table, records);
     }
@@ -202,11 +208,12 @@ Status checkModuloSteps(const RescheduleInput& input, const RescheduleOutcome& o
     for (std::size_t i = 1; i < outcome.axes.size(); ++i) {
         const double step = std::abs(outcome.axes[i].a - outcome.axes[i - 1].a);
         if (step >= kHalfTurnRad) {
-            return makeError(ErrorCode::CheckFailed,
-                             "the re-scheduled A steps by " +
-                                 formatFixed(units::radToDeg(step), 3) +
-                                 " deg in one block: a modulo A axis would turn the short way",
-                             {input.program->path().sourceFile, passOf(input)[i].line, 0});
+            const std::string table(1, input.machine->letter(kinematics::AxisId::A));
+            return makeError(
+                ErrorCode::CheckFailed,
+                "the re-scheduled " + table + " steps by " + formatFixed(units::radToDeg(step), 3) +
+                    " deg in one block: a modulo " + table + " axis would turn the short way",
+                {input.program->path().sourceFile, passOf(input)[i].line, 0});
         }
     }
     return {};
@@ -221,8 +228,9 @@ Status checkTravel(const RescheduleInput& input, const RescheduleOutcome& outcom
         return {};
     }
     return makeError(ErrorCode::CheckFailed,
-                     "the re-scheduled block would drive " + kinematics::describe(*excess) +
-                         " of the machine '" + input.machine->name +
+                     "the re-scheduled block would drive " +
+                         kinematics::describe(*excess, *input.machine) + " of the machine '" +
+                         input.machine->name +
                          "'; nothing was written. Check that the machine file is the machine the "
                          "program runs on and that the program's zero is where the machine "
                          "expects it, or narrow the channel (--margin-deg) so the tool tilts less",

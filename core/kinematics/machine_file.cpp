@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <optional>
 
@@ -45,8 +47,9 @@ class MachineReader {
     }
     Result<double> number(const Json& object, std::string_view path, const char* key,
                           std::optional<double> fallback, bool positive) const;
-    Result<AxisLimits> axis(const Json& axes, AxisId id, bool rotary) const;
-    Status chain(const Json& root, TableAHeadB& chain, bool& hasB) const;
+    Result<AxisLimits> axis(const Json& axes, char letter, bool rotary) const;
+    Status chain(const Json& root, MachineModel& machine) const;
+    Status axes(const Json& root, MachineModel& machine) const;
     Status numberRules(const Json& root, NumberRules& rules) const;
 
     std::string_view m_text;
@@ -73,8 +76,8 @@ Result<double> MachineReader::number(const Json& object, std::string_view path, 
     return number;
 }
 
-Result<AxisLimits> MachineReader::axis(const Json& axes, AxisId id, bool rotary) const {
-    const std::string name = axisName(id);
+Result<AxisLimits> MachineReader::axis(const Json& axes, char letter, bool rotary) const {
+    const std::string name(1, letter);
     const std::string path = "axes." + name;
     if (!axes.contains(name) || !axes.at(name).is_object()) {
         return fail(path, name, "missing, expected an object with the axis limits");
@@ -126,19 +129,50 @@ Result<AxisLimits> MachineReader::axis(const Json& axes, AxisId id, bool rotary)
     return limits;
 }
 
-Status MachineReader::chain(const Json& root, TableAHeadB& chain, bool& hasB) const {
+struct LayoutName {
+    const char* type;
+    Layout layout;
+    const char* description;
+};
+constexpr std::array<LayoutName, 4> kLayouts{{
+    {"table_a_head_b", Layout::TableAHeadB, "rotary table A about X, head B about Y"},
+    {"table_a", Layout::TableA, "rotary table A about X, fixed head"},
+    {"table_b_head_a", Layout::TableBHeadA, "rotary table B about Y, head A about X"},
+    {"table_b", Layout::TableB, "rotary table B about Y, fixed head"},
+}};
+
+std::optional<Layout> layoutNamed(std::string_view type) {
+    for (const LayoutName& entry : kLayouts) {
+        if (type == entry.type) {
+            return entry.layout;
+        }
+    }
+    return std::nullopt;
+}
+
+std::string layoutChoices() {
+    std::string text;
+    for (const LayoutName& entry : kLayouts) {
+        text += (text.empty() ? "" : ", ") + std::string("\"") + entry.type + "\" (" +
+                entry.description + ")";
+    }
+    return text;
+}
+
+Status MachineReader::chain(const Json& root, MachineModel& machine) const {
     if (!root.contains("kinematics") || !root.at("kinematics").is_object()) {
         return fail("kinematics", "kinematics", "missing, expected an object");
     }
     const Json& object = root.at("kinematics");
     const std::string type = object.value("type", "");
-    if (type != "table_a_head_b" && type != "table_a") {
+    const std::optional<Layout> layout = layoutNamed(type);
+    if (!layout) {
         return fail("kinematics.type", "type",
-                    "expected \"table_a_head_b\" (rotary table A about X, head B about Y) or "
-                    "\"table_a\" (rotary table A about X, fixed head), got \"" +
-                        type + "\"");
+                    "expected one of " + layoutChoices() + ", got \"" + type + "\"");
     }
-    hasB = type == "table_a_head_b";
+    machine.layout = *layout;
+    machine.hasB = *layout == Layout::TableAHeadB || *layout == Layout::TableBHeadA;
+    TableAHeadB& chain = machine.chain;
     auto pivot = number(object, "kinematics", "pivot_length_mm", 0.0, false);
     if (!pivot) {
         return std::unexpected(pivot.error());
@@ -154,18 +188,59 @@ Status MachineReader::chain(const Json& root, TableAHeadB& chain, bool& hasB) co
             !value[1].is_number() || !value[2].is_number()) {
             return fail(std::string("kinematics.") + key, key, "expected [x, y, z] in mm");
         }
-        *target = Vec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
+        // Given in machine coordinates; the chain works in the engine's frame.
+        *target = machine.toEngineFrame(
+            Vec3(value[0].get<double>(), value[1].get<double>(), value[2].get<double>()));
     }
-    for (const auto& [key, target] :
-         {std::pair{"a_sign", &chain.aSign}, std::pair{"b_sign", &chain.bSign}}) {
+    // "a_sign" and "b_sign" name the program's letters: on a table-B machine b_sign is the
+    // table's and a_sign the head's.
+    for (const auto& [axis, target] :
+         {std::pair{AxisId::A, &chain.aSign}, std::pair{AxisId::B, &chain.bSign}}) {
+        const std::string key =
+            std::string(1, static_cast<char>(std::tolower(machine.letter(axis)))) + "_sign";
         // Compared as a double: a huge number converted to int first would be undefined.
         const double sign = !object.contains(key)        ? 1.0
                             : object.at(key).is_number() ? object.at(key).get<double>()
                                                          : 0.0;
         if (sign != 1.0 && sign != -1.0) {
-            return fail(std::string("kinematics.") + key, key, "expected 1 or -1");
+            return fail("kinematics." + key, key, "expected 1 or -1");
         }
         *target = sign > 0.0 ? 1 : -1;
+    }
+    return {};
+}
+
+// The file names axes by the program's letters; each becomes the engine axis its word drives.
+// A word read with the opposite sign (a table-B machine's X) has its travel mirrored.
+Status MachineReader::axes(const Json& root, MachineModel& machine) const {
+    if (!root.contains("axes") || !root.at("axes").is_object()) {
+        return fail("axes", "axes", "missing, expected an object with X, Y, Z and the rotary axes");
+    }
+    const std::string tilt(1, machine.letter(AxisId::B));
+    if (!machine.hasB && root.at("axes").contains(tilt)) {
+        return fail("axes." + tilt, tilt,
+                    "the machine has a fixed head: expected no " + tilt + " axis");
+    }
+    for (AxisId id : kAllAxes) {
+        if (id == AxisId::B && !machine.hasB) {
+            // Never binding: the tilt stays 0. The table's dynamics keep every ratio finite.
+            continue;
+        }
+        auto limits = axis(root.at("axes"), machine.letter(id), isRotary(id));
+        if (!limits) {
+            return std::unexpected(limits.error());
+        }
+        if (machine.programWord(id).sign < 0.0) {
+            std::swap(limits->min, limits->max);
+            limits->min = -limits->min;
+            limits->max = -limits->max;
+        }
+        machine.limit(id) = *limits;
+    }
+    if (!machine.hasB) {
+        machine.limit(AxisId::B) = machine.limit(AxisId::A);
+        machine.limit(AxisId::B).hasTravel = false;
+        machine.limit(AxisId::B).backlash = 0.0;
     }
     return {};
 }
@@ -217,28 +292,11 @@ Result<MachineModel> MachineReader::read(const Json& root) {
     MachineModel machine;
     machine.sourceFile = m_file;
     machine.name = root.value("name", "unnamed machine");
-    if (auto status = chain(root, machine.chain, machine.hasB); !status) {
+    if (auto status = chain(root, machine); !status) {
         return std::unexpected(status.error());
     }
-    if (!root.contains("axes") || !root.at("axes").is_object()) {
-        return fail("axes", "axes", "missing, expected an object with X, Y, Z, A, B");
-    }
-    if (!machine.hasB && root.at("axes").contains("B")) {
-        return fail("axes.B", "B", "a \"table_a\" machine has a fixed head: expected no B axis");
-    }
-    for (AxisId id : kAllAxes) {
-        if (id == AxisId::B && !machine.hasB) {
-            // Never binding: B stays 0. A's dynamics keep every ratio finite.
-            machine.limit(AxisId::B) = machine.limit(AxisId::A);
-            machine.limit(AxisId::B).hasTravel = false;
-            machine.limit(AxisId::B).backlash = 0.0;
-            continue;
-        }
-        auto limits = axis(root.at("axes"), id, isRotary(id));
-        if (!limits) {
-            return std::unexpected(limits.error());
-        }
-        machine.limit(id) = *limits;
+    if (auto status = axes(root, machine); !status) {
+        return std::unexpected(status.error());
     }
     if (auto status = numberRules(root, machine.numbers); !status) {
         return std::unexpected(status.error());
@@ -252,13 +310,14 @@ Result<MachineModel> MachineReader::read(const Json& root) {
         }
         machine.feedMeaning = meaning == "path" ? FeedMeaning::Path : FeedMeaning::CombinedAxes;
     }
-    const std::string mode = root.at("axes").at("A").value("mode", "continuous");
+    const std::string table(1, machine.letter(AxisId::A));
+    const std::string mode = root.at("axes").at(table).value("mode", "continuous");
     if (mode == "continuous") {
         machine.aMode = RotaryMode::Continuous;
     } else if (mode == "modulo") {
         machine.aMode = RotaryMode::Modulo;
     } else {
-        return fail("axes.A.mode", "mode",
+        return fail("axes." + table + ".mode", "mode",
                     "expected \"continuous\" or \"modulo\", got \"" + mode + "\"");
     }
     return machine;

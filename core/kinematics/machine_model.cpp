@@ -41,6 +41,53 @@ double& MachineAxes::operator[](AxisId axis) {
     return x;
 }
 
+ProgramWord MachineModel::programWord(AxisId axis) const {
+    const auto role = static_cast<std::size_t>(axis);
+    if (!turnsAboutY()) {
+        return {role, 1.0};
+    }
+    // Engine X Y Z A B <- program Y, -X, Z, B, -A.
+    static constexpr std::array<ProgramWord, 5> kTableB{
+        {{1, 1.0}, {0, -1.0}, {2, 1.0}, {4, 1.0}, {3, -1.0}}};
+    return kTableB[role];
+}
+
+AxisId MachineModel::axisOfWord(std::size_t index) const {
+    for (const AxisId axis : kAllAxes) {
+        if (programWord(axis).index == index) {
+            return axis;
+        }
+    }
+    return AxisId::X;
+}
+
+MachineAxes MachineModel::fromProgramValues(const std::array<double, 5>& values) const {
+    MachineAxes axes;
+    for (const AxisId axis : kAllAxes) {
+        const ProgramWord word = programWord(axis);
+        axes[axis] = word.sign * values[word.index];
+    }
+    return axes;
+}
+
+std::array<double, 5> MachineModel::programValues(const MachineAxes& axes) const {
+    std::array<double, 5> values{};
+    for (const AxisId axis : kAllAxes) {
+        const ProgramWord word = programWord(axis);
+        values[word.index] = word.sign * axes[axis];
+    }
+    return values;
+}
+
+// A quarter turn about Z: (x, y, z) -> (y, -x, z) puts the machine's Y on the engine's x.
+Vec3 MachineModel::toEngineFrame(const Vec3& v) const {
+    return turnsAboutY() ? Vec3(v.y(), -v.x(), v.z()) : v;
+}
+
+Vec3 MachineModel::toProgramFrame(const Vec3& v) const {
+    return turnsAboutY() ? Vec3(-v.y(), v.x(), v.z()) : v;
+}
+
 MachineModel defaultBladeMachine() {
     using units::degToRad;
     MachineModel machine;

@@ -1,7 +1,10 @@
 #pragma once
-// The machine: a rotary table A about X plus a pivoting spindle head B about Y (spec §6.3,
-// the Starrag LX451 kind of blade machine). Machine descriptions are data files
-// (resources/machines/*.json, schema in docs/machine-file.md) loaded by machine_file.h.
+// The machine: a rotary table carrying the blade plus a spindle head that tilts or is fixed.
+// The engine works on one chain, a rotary table A about X with a head B tilting about Y
+// (spec §6.3, the Starrag LX451 kind of blade machine); a machine whose table turns about Y
+// (B) is the same chain seen from a frame turned a quarter turn about Z, so its words are
+// mapped at the program's boundary (MachineModel::programWord). Machine descriptions are data
+// files (resources/machines/*.json, schema in docs/machine-file.md) loaded by machine_file.h.
 // Units: mm, rad, s.
 
 #include "core/geometry/vec.h"
@@ -11,6 +14,8 @@
 
 namespace bladeaxis::kinematics {
 
+// An axis of the engine's chain, by its role: x along the table's axis, A the rotary table, B
+// the head's tilt. On a table-A machine these are also the program's letters.
 enum class AxisId { X = 0, Y = 1, Z = 2, A = 3, B = 4 };
 constexpr std::array<AxisId, 5> kAllAxes{AxisId::X, AxisId::Y, AxisId::Z, AxisId::A, AxisId::B};
 const char* axisName(AxisId axis);
@@ -85,12 +90,31 @@ enum class FeedMeaning {
                   // a block lasts sqrt(dX^2 + dY^2 + dZ^2 + dA^2 + dB^2) / F
 };
 
+// Which rotary axis the table turns about, and whether the head tilts.
+enum class Layout {
+    TableAHeadB, // table A about X, head B about Y ("table_a_head_b")
+    TableA,      // table A about X, fixed head ("table_a")
+    TableBHeadA, // table B about Y, head A about X ("table_b_head_a")
+    TableB,      // table B about Y, fixed head ("table_b")
+};
+
+// The program's word for an axis of the engine's chain: its index in X Y Z A B order and the
+// sign from the program's value to the engine's.
+struct ProgramWord {
+    std::size_t index = 0;
+    double sign = 1.0;
+};
+
+// The letters X Y Z A B in the order of program words.
+inline constexpr std::array<char, 5> kProgramLetters{'X', 'Y', 'Z', 'A', 'B'};
+
 struct MachineModel {
     std::string name;
     std::string sourceFile; // where it was loaded from; empty for built-in models
-    TableAHeadB chain;
-    // false for a fixed head (machine file type "table_a"): B is 0, a program that tilts it is
-    // refused, and the B limits are placeholders that never bind.
+    TableAHeadB chain;      // in the engine's frame (offsets turned for a table-B layout)
+    Layout layout = Layout::TableAHeadB;
+    // false for a fixed head (machine file types "table_a", "table_b"): the tilt is 0, a program
+    // that tilts it is refused, and the tilt's limits are placeholders that never bind.
     bool hasB = true;
     std::array<AxisLimits, 5> limits{};
     RotaryMode aMode = RotaryMode::Continuous;
@@ -99,6 +123,22 @@ struct MachineModel {
 
     const AxisLimits& limit(AxisId axis) const { return limits[static_cast<int>(axis)]; }
     AxisLimits& limit(AxisId axis) { return limits[static_cast<int>(axis)]; }
+
+    // The program's word for an engine axis. Table A: the identity. Table B: the engine's x is
+    // the machine's Y, its y the machine's -X, the table is B and the head's A tilts the
+    // engine's B the other way (a right-handed turn about +X is one about the engine's -y).
+    ProgramWord programWord(AxisId axis) const;
+    char letter(AxisId axis) const { return kProgramLetters[programWord(axis).index]; }
+    // The engine axis a program word (index in X Y Z A B order) drives.
+    AxisId axisOfWord(std::size_t index) const;
+    // Program values (X Y Z A B order, mm / rad as programmed) to engine axes and back.
+    MachineAxes fromProgramValues(const std::array<double, 5>& values) const;
+    std::array<double, 5> programValues(const MachineAxes& axes) const;
+    // A point or direction of the program's workpiece frame (CL data, CAD models: the table's
+    // axis along X for table A, along Y for table B) in the engine's frame, and back.
+    Vec3 toEngineFrame(const Vec3& v) const;
+    Vec3 toProgramFrame(const Vec3& v) const;
+    bool turnsAboutY() const { return layout == Layout::TableBHeadA || layout == Layout::TableB; }
 };
 
 // The built-in default blade machine (the same values as resources/machines/blade_ab.json):

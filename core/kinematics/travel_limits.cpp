@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace bladeaxis::kinematics {
 
@@ -28,14 +29,18 @@ std::optional<TravelExcess> firstTravelExcess(std::span<const MachineAxes> axes,
     return std::nullopt;
 }
 
-std::string describe(const TravelExcess& excess) {
+std::string describe(const TravelExcess& excess, const MachineModel& machine) {
     const bool rotary = isRotary(excess.axis);
-    const double scale = rotary ? units::radToDeg(1.0) : 1.0;
+    const double sign = machine.programWord(excess.axis).sign;
+    const double scale = (rotary ? units::radToDeg(1.0) : 1.0) * sign;
+    // A mirrored word's travel [min, max] is the engine's [-max, -min].
+    const double low = sign > 0.0 ? excess.min : excess.max;
+    const double high = sign > 0.0 ? excess.max : excess.min;
     const char* unit = rotary ? "deg" : "mm";
     char text[200];
     std::snprintf(text, sizeof text, "%s = %.3f %s, %.3f %s beyond the travel [%.3f, %.3f] %s",
-                  axisName(excess.axis), excess.value * scale, unit, excess.amount * scale, unit,
-                  excess.min * scale, excess.max * scale, unit);
+                  std::string(1, machine.letter(excess.axis)).c_str(), excess.value * scale, unit,
+                  excess.amount * std::abs(scale), unit, low * scale, high * scale, unit);
     return text;
 }
 

@@ -26,7 +26,7 @@ std::optional<TravelExcess> firstTravelExcess(std::span<const MachineAxes> axes,
                                               const MachineModel& machine, double tolerance = 1e-6);
 
 // "X = 1450.000 mm, 50.000 mm beyond the travel [-1400.000, 1400.000] mm": display units
-// (mm, deg).
-std::string describe(const TravelExcess& excess);
+// (mm, deg), in the program's terms (its letter, its sign).
+std::string describe(const TravelExcess& excess, const MachineModel& machine);
 
 } // namespace bladeaxis::kinematics

@@ -4,6 +4,7 @@
 #include "core/base/units.h"
 #include "core/kinematics/kinematics.h"
 
+#include <array>
 #include <cmath>
 
 namespace bladeaxis::io::nc {
@@ -69,8 +70,9 @@ Result<std::vector<MachineAxes>> solveAxes(const toolpath::Toolpath& path,
 
 class BlockWriter {
   public:
-    BlockWriter(const GcodeEmitOptions& options, bool moduloA)
-        : m_options(options), m_moduloA(moduloA) {}
+    BlockWriter(const GcodeEmitOptions& options, const kinematics::MachineModel& machine)
+        : m_options(options), m_machine(machine),
+          m_moduloTable(machine.aMode == kinematics::RotaryMode::Modulo) {}
 
     void startBlock(std::string& out) {
         if (m_options.blockNumbers) {
@@ -81,12 +83,15 @@ class BlockWriter {
         }
     }
 
+    // In the program's letters and signs: X Y Z, then A and B, the table's modulo if it is.
     void axesWords(std::string& out, const MachineAxes& axes) const {
-        word(out, 'X', formatFixed(axes.x, m_options.linearDecimals));
-        word(out, 'Y', formatFixed(axes.y, m_options.linearDecimals));
-        word(out, 'Z', formatFixed(axes.z, m_options.linearDecimals));
-        word(out, 'A', angle(axes.a, m_moduloA));
-        word(out, 'B', angle(axes.b, false));
+        const std::array<double, 5> values = m_machine.programValues(axes);
+        const std::size_t table = m_machine.programWord(kinematics::AxisId::A).index;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            word(out, kinematics::kProgramLetters[i],
+                 i < 3 ? formatFixed(values[i], m_options.linearDecimals)
+                       : angle(values[i], m_moduloTable && i == table));
+        }
     }
 
     static void word(std::string& out, char letter, const std::string& value) {
@@ -111,7 +116,8 @@ class BlockWriter {
     }
 
     const GcodeEmitOptions& m_options;
-    bool m_moduloA = false;
+    const kinematics::MachineModel& m_machine;
+    bool m_moduloTable = false;
     int m_number = 0;
 };
 
@@ -132,7 +138,7 @@ Result<std::string> emitGcode(const toolpath::Toolpath& path,
     for (const std::string& comment : options.headerComments) {
         out += commentLine(comment);
     }
-    BlockWriter writer(options, machine.aMode == kinematics::RotaryMode::Modulo);
+    BlockWriter writer(options, machine);
     writer.startBlock(out);
     out += "G21 G90 G94\n";
     std::string lastFeed;

@@ -20,8 +20,8 @@ namespace {
 using kinematics::MachineAxes;
 using kinematics::MachineModel;
 
-constexpr std::array<char, 5> kAxisLetters{'X', 'Y', 'Z', 'A', 'B'};
-constexpr std::size_t kAxisA = 3;
+constexpr std::array<char, 5> kAxisLetters = kinematics::kProgramLetters;
+constexpr std::size_t kAxisA = 3; // the first rotary word
 
 // A replacement (length > 0) or an insertion (length 0) inside one line. Only changed blocks
 // create edits, so the string here is not a per-word cost of the whole program.
@@ -31,8 +31,8 @@ struct Edit {
     std::string text;
 };
 
-// The axes in kAxisLetters order. Built here rather than through MachineAxes::operator[], which
-// another library defines and the compiler cannot inline: this runs for every word.
+// The engine's axes in their own order. Built here rather than through MachineAxes::operator[],
+// which another library defines and the compiler cannot inline: this runs for every word.
 std::array<double, 5> axisValues(const MachineAxes& axes) {
     return {axes.x, axes.y, axes.z, axes.a, axes.b};
 }
@@ -40,6 +40,28 @@ std::array<double, 5> axisValues(const MachineAxes& axes) {
 double axisValue(const MachineAxes& axes, std::size_t axis) {
     return axisValues(axes)[axis];
 }
+
+// The engine's axes as the program's words (X Y Z A B order, the program's signs).
+class ProgramWords {
+  public:
+    explicit ProgramWords(const MachineModel& machine) {
+        for (const kinematics::AxisId axis : kinematics::kAllAxes) {
+            m_words[static_cast<std::size_t>(axis)] = machine.programWord(axis);
+        }
+    }
+    std::array<double, 5> of(const MachineAxes& axes) const {
+        const std::array<double, 5> engine = axisValues(axes);
+        std::array<double, 5> words{};
+        for (std::size_t axis = 0; axis < engine.size(); ++axis) {
+            words[m_words[axis].index] = m_words[axis].sign * engine[axis];
+        }
+        return words;
+    }
+    std::size_t tableWord() const { return m_words[3].index; }
+
+  private:
+    std::array<kinematics::ProgramWord, 5> m_words{};
+};
 
 Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> newAxes,
                     const MachineModel& machine) {
@@ -57,11 +79,12 @@ Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> ne
             }
         }
         if (!machine.hasB && std::abs(newAxes[k].b) > 1e-9) {
+            const std::string tilt(1, machine.letter(kinematics::AxisId::B));
             return makeError(ErrorCode::CheckFailed,
-                             "the new orientation tilts B by " +
+                             "the new orientation tilts " + tilt + " by " +
                                  formatTrimmed(units::radToDeg(newAxes[k].b), 4) +
                                  " deg, but the machine '" + machine.name +
-                                 "' has a fixed head (no B axis)",
+                                 "' has a fixed head (no " + tilt + " axis)",
                              {program.path.sourceFile, program.path.records[k].line, 0});
         }
         if (!program.path.records[k].axes) {
@@ -107,8 +130,8 @@ bool isModuloForm(RotaryForm form) {
 class Rewriter {
   public:
     Rewriter(const GcodeProgram& program, const MachineModel& machine)
-        : m_program(program), m_modulo(machine.aMode == kinematics::RotaryMode::Modulo),
-          m_numbers(machine.numbers) {
+        : m_program(program), m_words(machine), m_tableWord(m_words.tableWord()),
+          m_modulo(machine.aMode == kinematics::RotaryMode::Modulo), m_numbers(machine.numbers) {
         if (program.dialect != NcDialect::Iso) {
             m_numbers.integerWords = kinematics::IntegerWords::Units; // as the reader took them
         }
@@ -160,7 +183,7 @@ class Rewriter {
         return {axis, incremental, (source.flags & kInch) != 0, form};
     }
     bool wrapsAbsolute(const AxisContext& c) const {
-        return isModuloForm(c.form) || (c.axis == kAxisA && m_modulo);
+        return isModuloForm(c.form) || (c.axis == m_tableWord && m_modulo);
     }
 
     std::string_view lineAt(std::uint32_t begin) const {
@@ -244,8 +267,8 @@ class Rewriter {
 
     double increment(const AxisContext& c, double target, double before) const {
         double delta = target - before;
-        if (c.axis == kAxisA && m_modulo && c.form == RotaryForm::Plain) {
-            // A modulo axis holds A in [0, 360): the shortest rotation reaches the target.
+        if (c.axis == m_tableWord && m_modulo && c.form == RotaryForm::Plain) {
+            // A modulo table holds its angle in [0, 360): the shortest rotation reaches it.
             delta = std::remainder(delta, units::kTwoPi);
         }
         return delta;
@@ -266,6 +289,8 @@ class Rewriter {
     static void appendEdited(std::string& out, std::string_view line, std::vector<Edit>& edits);
 
     const GcodeProgram& m_program;
+    ProgramWords m_words;
+    std::size_t m_tableWord = kAxisA;
     bool m_modulo = false;
     kinematics::NumberRules m_numbers;
     std::array<double, 5> m_written{}; // what the controller holds after the previous record
@@ -287,8 +312,8 @@ void Rewriter::feedEdit(std::size_t k, std::string_view line, const std::array<d
     if ((source.flags & kCombinedFeed) && k > 0) {
         const bool inch = (source.flags & kInch) != 0;
         const double oldLength =
-            detail::combinedAxisMove(axisValues(*m_program.path.records[k - 1].axes),
-                                     axisValues(*m_program.path.records[k].axes), inch);
+            detail::combinedAxisMove(m_words.of(*m_program.path.records[k - 1].axes),
+                                     m_words.of(*m_program.path.records[k].axes), inch);
         const double newLength = detail::combinedAxisMove(before, m_written, inch);
         if (oldLength > 1e-9 && newLength > 1e-9) {
             wanted = programmed * newLength / oldLength;
@@ -381,7 +406,8 @@ std::string Rewriter::wordText(const AxisContext& c, std::string number) const {
 void Rewriter::editsFor(std::size_t k, std::string_view line, const MachineAxes& target,
                         std::vector<Edit>& edits) {
     const RecordSource& source = m_program.sources[k];
-    const MachineAxes& original = *m_program.path.records[k].axes;
+    const std::array<double, 5> original = m_words.of(*m_program.path.records[k].axes);
+    const std::array<double, 5> wantedWords = m_words.of(target);
     for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
         const AxisContext c = contextOf(axis, source);
         const AxisNumberStyle& style = m_program.axisStyles[axis];
@@ -393,10 +419,9 @@ void Rewriter::editsFor(std::size_t k, std::string_view line, const MachineAxes&
         const double oldFile = hasWord ? oldWord.value * scale : 0.0;
         double before = m_written[axis];
         if (source.setOutside & (1u << axis)) {
-            before =
-                axisValue(original, axis) - (c.incremental && hasWord ? fromFile(c, oldFile) : 0.0);
+            before = original[axis] - (c.incremental && hasWord ? fromFile(c, oldFile) : 0.0);
         }
-        const double wanted = axisValue(target, axis);
+        const double wanted = wantedWords[axis];
         checkModuloMove(k, c, before, wanted);
         const double fileValue = c.incremental ? toFile(c, increment(c, wanted, before), false)
                                                : toFile(c, wanted, true);

@@ -6,6 +6,7 @@
 #include "core/job/demo_program.h"
 #include "core/kinematics/kinematics.h"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -138,10 +139,12 @@ std::string gcodeText(const toolpath::Toolpath& path, const kinematics::MachineM
     std::string text = feedMode == FeedMode::PerMinute ? "(AWKWARD BLADE PROGRAM)\nG21 G90 G94\n"
                                                        : "(AWKWARD BLADE PROGRAM)\nG21 G90 G93\n";
     for (std::size_t i = 0; i < solved.axes.size(); ++i) {
-        const kinematics::MachineAxes& axes = solved.axes[i];
-        const double noise = (i % 2 == 0 ? 1.0 : -1.0) * units::degToRad(bNoiseDeg);
-        text += "G1 X" + number(axes.x, 4) + " Y" + number(axes.y, 4) + " Z" + number(axes.z, 4) +
-                " A" + rotary(axes.a) + " B" + rotary(axes.b + noise);
+        kinematics::MachineAxes axes = solved.axes[i];
+        axes.b += (i % 2 == 0 ? 1.0 : -1.0) * units::degToRad(bNoiseDeg);
+        // In the program's letters: a table-B machine's words are the engine's axes turned.
+        const std::array<double, 5> words = machine.programValues(axes);
+        text += "G1 X" + number(words[0], 4) + " Y" + number(words[1], 4) + " Z" +
+                number(words[2], 4) + " A" + rotary(words[3]) + " B" + rotary(words[4]);
         text += feedWord(path, i, feedMmPerMin, feedMode) + "\n";
     }
     return text + "M30\n";

@@ -1,10 +1,13 @@
 // Machine layouts other than the table-A / head-B blade machine: a rotary table A about X with a
-// fixed head ("table_a", no B axis). The synthetic family posted for it (B = 0) re-schedules
-// without reversals and with its ball centres kept; a program that tilts B is refused.
+// fixed head ("table_a", no B axis), and a rotary table B about Y with a head tilting about X
+// ("table_b_head_a") or a fixed one ("table_b"). The synthetic family posted for each
+// re-schedules without reversals and with its ball centres kept; a program that tilts a fixed
+// head is refused.
 
 #include "core/blade/blade.h"
 #include "core/blade/helical_path.h"
 #include "core/blade/presets.h"
+#include "core/io/cl/apt_reader.h"
 #include "core/kinematics/kinematics.h"
 #include "core/kinematics/machine_file.h"
 
@@ -30,6 +33,23 @@ namespace fs = std::filesystem;
 
 fs::path tableAMachineFile() {
     return fs::path(BLADEAXIS_SOURCE_DIR) / "resources/machines/table_a.json";
+}
+
+fs::path shippedMachine(const std::string& name) {
+    return fs::path(BLADEAXIS_SOURCE_DIR) / "resources/machines" / name;
+}
+
+// The family member's helical pass, generated in the engine's frame (blade along x). A fixed
+// head keeps the tool in the plane normal to the table's axis.
+toolpath::Toolpath familyPass(blade::FamilyMember member, bool fixedHead) {
+    if (fixedHead) {
+        member.path.tiltB0 = 0.0;
+    }
+    const auto model = blade::Blade::create(member.blade);
+    EXPECT_TRUE(model) << member.name;
+    const auto generated = blade::generateHelicalPath(*model, member.path);
+    EXPECT_TRUE(generated) << member.name;
+    return generated ? generated->path : toolpath::Toolpath{};
 }
 
 TEST(MachineLayouts, AFixedHeadMachineFileHasNoBAxis) {
@@ -76,6 +96,79 @@ TEST(MachineLayouts, TheFamilyOnAFixedHeadMachineReschedulesWithoutReversals) {
         EXPECT_EQ(result->rescheduled->programText.find(" B0.1"), std::string::npos) << member.name;
     }
     EXPECT_GT(reversalsBefore, 0); // the family has reversals to remove
+}
+
+// On a table-B machine the family's blade lies along Y and the table's word is B: the
+// re-scheduled program turns B monotonically, keeps the ball centres and stays in the travel.
+TEST(MachineLayouts, TheFamilyOnTableBMachinesReschedulesTheBWordWithoutReversals) {
+    for (const std::string name : {"table_b_head_a.json", "table_b.json"}) {
+        const auto machine = kinematics::loadMachineFile(shippedMachine(name));
+        ASSERT_TRUE(machine) << machine.error().toString();
+        const auto family = blade::syntheticFamily(20261126, 6);
+        ASSERT_TRUE(family) << family.error().message;
+        int reversalsBefore = 0;
+        for (const blade::FamilyMember& member : *family) {
+            const toolpath::Toolpath pass = familyPass(member, !machine->hasB);
+            JobSpec spec;
+            spec.program = member.name + ".nc";
+            spec.programText = gcodeText(pass, *machine, 3000.0, RotaryUnit::Degrees);
+            spec.machineFile = shippedMachine(name);
+            spec.toolRadius = member.path.toolRadius;
+            const auto result = runQuietly(spec);
+            ASSERT_TRUE(result) << name << " " << member.name << ": " << result.error().toString();
+            ASSERT_TRUE(result->rescheduled.has_value()) << member.name;
+            reversalsBefore += result->original.aReversals.count;
+            EXPECT_EQ(result->rescheduled->profile.aReversals.count, 0) << name << member.name;
+            EXPECT_LT(result->rescheduled->maxCentreDeviationMm, 1e-3) << name << member.name;
+            const std::string& written = result->rescheduled->programText;
+            EXPECT_NE(written, *spec.programText) << name << member.name;
+            if (!machine->hasB) {
+                EXPECT_EQ(written.find(" A0.1"), std::string::npos) << name << member.name;
+            }
+        }
+        EXPECT_GT(reversalsBefore, 0) << name; // the family has reversals to remove
+    }
+}
+
+// CL data for a table-B machine give the blade along Y of the workpiece frame; the job turns it
+// into the engine's frame and the written CL back, so re-reading the output gives the same
+// ball centres in the program's frame.
+TEST(MachineLayouts, ClDataForATableBMachineAreReadAndWrittenInTheProgramsFrame) {
+    const auto machine = kinematics::loadMachineFile(shippedMachine("table_b_head_a.json"));
+    ASSERT_TRUE(machine);
+    const auto family = blade::syntheticFamily(20261126, 2);
+    ASSERT_TRUE(family);
+    const blade::FamilyMember& member = family->front();
+    toolpath::Toolpath pass = familyPass(member, false);
+    for (toolpath::ClRecord& record : pass.records) { // as the CAM posts it: blade along Y
+        record.tip = machine->toProgramFrame(record.tip);
+        record.axis = machine->toProgramFrame(record.axis);
+    }
+    JobSpec spec;
+    spec.program = member.name + ".cl";
+    spec.programText = aptText(pass, member.path.toolRadius, 3000.0);
+    spec.machineFile = shippedMachine("table_b_head_a.json");
+    const auto result = runQuietly(spec);
+    ASSERT_TRUE(result) << result.error().toString();
+    ASSERT_TRUE(result->rescheduled.has_value());
+    EXPECT_GT(result->original.aReversals.count, 0);
+    EXPECT_EQ(result->rescheduled->profile.aReversals.count, 0);
+    EXPECT_LT(result->rescheduled->maxCentreDeviationMm, 1e-3);
+    // Read without any machine, the written CL keeps every ball centre of the input's frame.
+    const auto before = io::cl::parseApt(*spec.programText, "in.cl");
+    const auto after = io::cl::parseApt(result->rescheduled->programText, "out.cl");
+    ASSERT_TRUE(before && after);
+    ASSERT_EQ(before->path.records.size(), after->path.records.size());
+    double worst = 0.0;
+    const double radius = member.path.toolRadius;
+    for (std::size_t i = 0; i < before->path.records.size(); ++i) {
+        const auto& in = before->path.records[i];
+        const auto& out = after->path.records[i];
+        const Vec3 centreIn = in.tip + radius * in.axis.normalized();
+        const Vec3 centreOut = out.tip + radius * out.axis.normalized();
+        worst = std::max(worst, (centreOut - centreIn).norm());
+    }
+    EXPECT_LT(worst, 1e-3);
 }
 
 // The ball centre's speed in each feed block of a program on a combined-axes control, computed

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 namespace bladeaxis::kinematics {
@@ -30,6 +31,57 @@ TEST(MachineFile, RotaryLimitsAreConvertedFromDegreesToRadians) {
     ASSERT_TRUE(machine.has_value());
     EXPECT_NEAR(machine->limit(AxisId::A).velocity, units::degToRad(360.0), 1e-12);
     EXPECT_NEAR(machine->limit(AxisId::B).max, units::degToRad(87.0), 1e-12);
+}
+
+// A table-B machine names its axes by its own letters; each drives the engine axis of its role:
+// the table (B) is the engine's A, the head's A its B, Y its x and X its y with the travel
+// mirrored. The sign keys name letters too: b_sign is the table's.
+TEST(MachineFile, ATableBMachineMapsItsLettersOntoTheEnginesRoles) {
+    const auto machine = parseMachineJson(
+        R"({"schema": "bladeaxis-machine/1", "kinematics": {"type": "table_b_head_a",
+        "b_sign": -1, "a_sign": 1, "table_offset_mm": [1, 2, 3]}, "axes": {
+        "X": {"min_mm": -100, "max_mm": 300, "velocity_mm_s": 11, "acceleration_mm_s2": 1, "jerk_mm_s3": 1},
+        "Y": {"min_mm": -900, "max_mm": 900, "velocity_mm_s": 22, "acceleration_mm_s2": 1, "jerk_mm_s3": 1},
+        "Z": {"velocity_mm_s": 33, "acceleration_mm_s2": 1, "jerk_mm_s3": 1},
+        "A": {"min_deg": -80, "max_deg": 30, "velocity_deg_s": 44, "acceleration_deg_s2": 1, "jerk_deg_s3": 1},
+        "B": {"mode": "modulo", "velocity_deg_s": 55, "acceleration_deg_s2": 1, "jerk_deg_s3": 1}}})",
+        "b.json");
+    ASSERT_TRUE(machine) << machine.error().toString();
+    EXPECT_EQ(machine->layout, Layout::TableBHeadA);
+    EXPECT_TRUE(machine->hasB);
+    EXPECT_EQ(machine->letter(AxisId::A), 'B');
+    EXPECT_EQ(machine->letter(AxisId::B), 'A');
+    EXPECT_EQ(machine->letter(AxisId::X), 'Y');
+    EXPECT_EQ(machine->letter(AxisId::Y), 'X');
+    EXPECT_DOUBLE_EQ(machine->limit(AxisId::X).velocity, 22.0);
+    EXPECT_DOUBLE_EQ(machine->limit(AxisId::Y).velocity, 11.0);
+    EXPECT_DOUBLE_EQ(machine->limit(AxisId::Y).min, -300.0);
+    EXPECT_DOUBLE_EQ(machine->limit(AxisId::Y).max, 100.0);
+    EXPECT_NEAR(machine->limit(AxisId::A).velocity, units::degToRad(55.0), 1e-12);
+    EXPECT_NEAR(machine->limit(AxisId::B).min, units::degToRad(-30.0), 1e-12);
+    EXPECT_NEAR(machine->limit(AxisId::B).max, units::degToRad(80.0), 1e-12);
+    EXPECT_EQ(machine->aMode, RotaryMode::Modulo);
+    EXPECT_EQ(machine->chain.aSign, -1);
+    EXPECT_EQ(machine->chain.bSign, 1);
+    EXPECT_LT((machine->chain.tableOffset - Vec3(2.0, -1.0, 3.0)).norm(), 1e-15);
+    // Program values and engine axes convert both ways.
+    const std::array<double, 5> words{1.0, 2.0, 3.0, 0.4, 0.5};
+    EXPECT_EQ(machine->programValues(machine->fromProgramValues(words)), words);
+}
+
+TEST(MachineFile, AFixedHeadTableBMachineRefusesAnAAxis) {
+    const auto machine = parseMachineJson(
+        R"({"schema": "bladeaxis-machine/1", "kinematics": {"type": "table_b"}, "axes": {
+        "X": {"velocity_mm_s": 1, "acceleration_mm_s2": 1, "jerk_mm_s3": 1},
+        "Y": {"velocity_mm_s": 1, "acceleration_mm_s2": 1, "jerk_mm_s3": 1},
+        "Z": {"velocity_mm_s": 1, "acceleration_mm_s2": 1, "jerk_mm_s3": 1},
+        "A": {"velocity_deg_s": 1, "acceleration_deg_s2": 1, "jerk_deg_s3": 1},
+        "B": {"velocity_deg_s": 1, "acceleration_deg_s2": 1, "jerk_deg_s3": 1}}})",
+        "fixed.json");
+    ASSERT_FALSE(machine.has_value());
+    EXPECT_NE(machine.error().toString().find("axes.A: the machine has a fixed head"),
+              std::string::npos)
+        << machine.error().toString();
 }
 
 struct BadMachineCase {
@@ -103,7 +155,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadMachineCase{"no kinematics", R"({"schema": "bladeaxis-machine/1"})",
                        "kinematics: missing"},
         BadMachineCase{"wrong chain", kWrongType.c_str(),
-                       "kinematics.type: expected \"table_a_head_b\""},
+                       "kinematics.type: expected one of \"table_a_head_b\""},
         BadMachineCase{"bad sign", kBadSign.c_str(), "kinematics.a_sign: expected 1 or -1"},
         BadMachineCase{"bad offset", kBadOffset.c_str(),
                        "table_offset_mm: expected [x, y, z] in mm"},

@@ -28,7 +28,8 @@ TEST(TravelLimits, TheFirstSampleBeyondATravelIsNamedWithItsAxisAndAmount) {
     EXPECT_EQ(excess->axis, AxisId::X);
     EXPECT_EQ(excess->index, 1U);
     EXPECT_DOUBLE_EQ(excess->amount, 0.5);
-    EXPECT_EQ(describe(*excess), "X = 10.500 mm, 0.500 mm beyond the travel [-10.000, 10.000] mm");
+    EXPECT_EQ(describe(*excess, machineWithTravel()),
+              "X = 10.500 mm, 0.500 mm beyond the travel [-10.000, 10.000] mm");
 }
 
 TEST(TravelLimits, RotaryExcessIsDescribedInDegrees) {
@@ -36,7 +37,8 @@ TEST(TravelLimits, RotaryExcessIsDescribedInDegrees) {
     const auto excess = firstTravelExcess(axes, machineWithTravel());
     ASSERT_TRUE(excess.has_value());
     EXPECT_EQ(excess->axis, AxisId::B);
-    EXPECT_NE(describe(*excess).find("B = -34.377 deg"), std::string::npos) << describe(*excess);
+    EXPECT_NE(describe(*excess, machineWithTravel()).find("B = -34.377 deg"), std::string::npos)
+        << describe(*excess, machineWithTravel());
 }
 
 TEST(TravelLimits, AContinuousRotaryAxisIsNeverBeyondItsTravel) {
@@ -52,6 +54,19 @@ TEST(TravelLimits, ANotANumberAxisValueIsAnExcess) {
 TEST(TravelLimits, TheControlsResolutionIsNotAnExcess) {
     const std::vector<MachineAxes> axes{{.x = 10.0 + 1e-7}};
     EXPECT_FALSE(firstTravelExcess(axes, machineWithTravel()).has_value());
+}
+
+// On a table-B machine the engine's y is the program's -X: an excess is told as the program's
+// X word with its own value and travel.
+TEST(TravelLimits, AnExcessOnATableBMachineIsToldInTheProgramsLetterAndSign) {
+    MachineModel machine = defaultBladeMachine();
+    machine.layout = Layout::TableBHeadA;
+    machine.limit(AxisId::Y) = {.hasTravel = true, .min = -300.0, .max = 100.0}; // X in [-100, 300]
+    const std::vector<MachineAxes> axes{{.y = 0.0}, {.y = -301.0}};
+    const auto excess = firstTravelExcess(axes, machine);
+    ASSERT_TRUE(excess.has_value());
+    EXPECT_EQ(describe(*excess, machine),
+              "X = 301.000 mm, 1.000 mm beyond the travel [-100.000, 300.000] mm");
 }
 
 } // namespace

@@ -13,9 +13,7 @@ namespace bladeaxis::io::nc::detail {
 
 namespace {
 
-constexpr std::array<char, 5> kAxisLetters{'X', 'Y', 'Z', 'A', 'B'};
-constexpr std::uint8_t kBBit = 1u << 4;
-constexpr std::uint8_t kRequiredAxes = 0x0F; // X Y Z A; B may default to 0
+constexpr std::array<char, 5> kAxisLetters = kinematics::kProgramLetters;
 // Letters that have no meaning in a four-axis Fanuc program (arc centres, extra axes...).
 constexpr std::string_view kUnsupportedLetters = "EIJKUVW";
 // The same as ScannedBlock::present bits, to pass a block that has none with one test.
@@ -45,6 +43,13 @@ ModalInterpreter::ModalInterpreter(GcodeProgram& program, const kinematics::Mach
                                    ErrorList& errors, std::optional<AngleUnit> angleUnit)
     : m_program(program), m_machine(machine), m_errors(errors), m_angleUnit(angleUnit) {
     m_integerWords = machine.numbers.integerWords;
+    // Positions are kept per program word; the engine's axes are mapped from them per record.
+    for (const kinematics::AxisId axis : kinematics::kAllAxes) {
+        m_words[static_cast<std::size_t>(axis)] = machine.programWord(axis);
+    }
+    m_tableWord = m_words[3].index;
+    m_tiltBit = static_cast<std::uint8_t>(1u << m_words[4].index);
+    m_requiredAxes = static_cast<std::uint8_t>(0x1F & ~m_tiltBit);
     if (program.dialect != NcDialect::Iso) {
         m_angleUnit = AngleUnit::Degrees;
         m_integerWords = kinematics::IntegerWords::Units;
@@ -105,7 +110,8 @@ void ModalInterpreter::apply(const ScannedBlock& block, std::string_view line,
     if (!allAxesKnown()) {
         if (m_motion == GKind::Linear) {
             fail(at, firstAxisOffset(at, axisWords),
-                 "expected X, Y, Z and A to be programmed before the first feed move");
+                 std::string("expected X, Y, Z and ") + kAxisLetters[m_tableWord] +
+                     " to be programmed before the first feed move");
             return;
         }
         m_outside = static_cast<std::uint8_t>(m_outside | axisWords);
@@ -273,7 +279,7 @@ void ModalInterpreter::applyOneShot(const Context& at, GKind kind, std::uint8_t 
     // G28/G30 go to a reference point, G53 to machine coordinates: the named axes end up at
     // positions this reader cannot know in the workpiece frame, so they must be programmed again.
     m_known = static_cast<std::uint8_t>(m_known & ~axisWords);
-    if (axisWords & kBBit) {
+    if (axisWords & m_tiltBit) {
         m_bProgrammed = true;
     }
 }
@@ -293,11 +299,13 @@ inline bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axi
         const bool decimal =
             style.hasPoint || (!word.plainStyle && hasExponent(word.text(at.line)));
         const double value = axisWordValue(at, axis, word, decimal);
-        if (bit == kBBit && !m_machine.hasB && value != 0.0) {
+        if (bit == m_tiltBit && !m_machine.hasB && value != 0.0) {
+            const std::string tilt(1, kAxisLetters[axis]);
             return fail(at, word.letter,
-                        "B" + std::string(word.text(at.line)) + ": the machine '" + m_machine.name +
-                            "' has a fixed head (no B axis); expected no B word or B0, or the "
-                            "machine file of the machine this program was posted for");
+                        tilt + std::string(word.text(at.line)) + ": the machine '" +
+                            m_machine.name + "' has a fixed head (no " + tilt +
+                            " axis); expected no " + tilt + " word or " + tilt +
+                            "0, or the machine file of the machine this program was posted for");
         }
         const RotaryForm form = effectiveForm(word, axis);
         const bool relative =
@@ -323,20 +331,20 @@ inline bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axi
         }
         m_position[axis] = reachedBy(form, axis, value);
         m_known = static_cast<std::uint8_t>(m_known | bit);
-        if (bit == kBBit) {
+        if (bit == m_tiltBit) {
             m_bProgrammed = true;
         }
     }
     return true;
 }
 
-// How a rotary word reaches its value: its own form (Sinumerik DC, ACP...), or for A the
-// shortest way while Heidenhain's M126 is on.
+// How a rotary word reaches its value: its own form (Sinumerik DC, ACP...), or for the table
+// the shortest way while Heidenhain's M126 is on.
 inline RotaryForm ModalInterpreter::effectiveForm(const WordSpan& word, std::size_t axis) const {
     if (word.form != RotaryForm::Plain) {
         return word.form;
     }
-    return axis == 3 && m_shortestA ? RotaryForm::Shortest : RotaryForm::Plain;
+    return axis == m_tableWord && m_shortestA ? RotaryForm::Shortest : RotaryForm::Plain;
 }
 
 // The axis position a word of the given form reaches from the current one. The modulo forms
@@ -410,10 +418,10 @@ void ModalInterpreter::finish() {
 }
 
 inline bool ModalInterpreter::allAxesKnown() const {
-    if ((m_known & kRequiredAxes) != kRequiredAxes) {
+    if ((m_known & m_requiredAxes) != m_requiredAxes) {
         return false;
     }
-    return (m_known & kBBit) || !m_bProgrammed;
+    return (m_known & m_tiltBit) || !m_bProgrammed;
 }
 
 inline bool ModalInterpreter::checkFeedAvailable(const Context& at) {
@@ -472,8 +480,8 @@ inline void ModalInterpreter::fillSource(RecordSource& source, const Context& at
         const std::size_t axis = 3 + rotary;
         source.rotaryForms[rotary] = (axisWords >> axis) & 1u
                                          ? effectiveForm(at.block.word(kAxisLetters[axis]), axis)
-                                     : (axis == 3 && m_shortestA) ? RotaryForm::Shortest
-                                                                  : m_lastForms[rotary];
+                                     : (axis == m_tableWord && m_shortestA) ? RotaryForm::Shortest
+                                                                            : m_lastForms[rotary];
     }
 }
 
@@ -486,18 +494,24 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
     if (m_program.path.records.empty() && m_definedRadius) {
         m_program.path.toolRadius = *m_definedRadius;
     }
-    if (!(m_known & kBBit) && !m_warnedDefaultB && m_machine.hasB) {
+    if (!(m_known & m_tiltBit) && !m_warnedDefaultB && m_machine.hasB) {
         m_warnedDefaultB = true;
+        const char tilt = kAxisLetters[m_words[4].index];
         m_program.path.warnings.push_back(
-            SourceLocation{m_errors.fileName(), at.lineNumber, 0}.toString() +
-            ": B is not programmed before the first move: B = 0 assumed");
+            SourceLocation{m_errors.fileName(), at.lineNumber, 0}.toString() + ": " + tilt +
+            " is not programmed before the first move: " + tilt + " = 0 assumed");
     }
+    const auto word = [this](std::size_t axis) {
+        const kinematics::ProgramWord& w = m_words[axis];
+        const bool known = (m_known >> w.index) & 1u;
+        return known ? w.sign * m_position[w.index] : 0.0;
+    };
     kinematics::MachineAxes axes;
-    axes.x = m_position[0];
-    axes.y = m_position[1];
-    axes.z = m_position[2];
-    axes.a = m_position[3];
-    axes.b = (m_known & kBBit) ? m_position[4] : 0.0;
+    axes.x = word(0);
+    axes.y = word(1);
+    axes.z = word(2);
+    axes.a = word(3);
+    axes.b = word(4);
     kinematics::TableAHeadB chain = m_machine.chain;
     chain.tipInWorkpiece = m_toolTip;
     const kinematics::ToolPose pose = kinematics::forwardKinematics(chain, axes);

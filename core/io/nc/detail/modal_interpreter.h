@@ -86,16 +86,20 @@ class ModalInterpreter {
     bool m_inch = false;
     bool m_incremental = false;
     bool m_inverseTime = false;
-    std::optional<double> m_feedPerMinuteMm;  // G94 feed in mm/min, once programmed
-    std::optional<double> m_blockInverseTime; // G93 F of the current block (1/min)
-    std::array<double, 5> m_position{};       // mm / rad, as programmed
-    std::uint8_t m_known = 0;                 // bit per AxisId
+    std::optional<double> m_feedPerMinuteMm;          // G94 feed in mm/min, once programmed
+    std::optional<double> m_blockInverseTime;         // G93 F of the current block (1/min)
+    std::array<double, 5> m_position{};               // mm / rad, as programmed, in X Y Z A B order
+    std::array<kinematics::ProgramWord, 5> m_words{}; // the program word of each engine axis
+    std::size_t m_tableWord = 3;                      // the rotary table's word (A or B)
+    std::uint8_t m_tiltBit = 1u << 4;                 // the tilting head's word: may default to 0
+    std::uint8_t m_requiredAxes = 0x0F;               // the words a feed move needs
+    std::uint8_t m_known = 0;                         // bit per AxisId
     bool m_bProgrammed = false;
     bool m_warnedDefaultB = false;
     std::optional<double> m_c; // deg, the constant C
     std::uint8_t m_outside = 0x1F;
     bool m_toolTip = false;   // TRAORI / M128 / FUNCTION TCPM in effect
-    bool m_shortestA = false; // Heidenhain M126 in effect
+    bool m_shortestA = false; // Heidenhain M126 in effect (for the table)
     std::array<RotaryForm, 2> m_lastForms{RotaryForm::Plain, RotaryForm::Plain}; // A, B
     std::optional<double> m_autoFeed;      // mm/min, the feed of FAUTO (Heidenhain TOOL CALL F)
     std::optional<double> m_definedRadius; // Heidenhain TOOL DEF R of the tool called

@@ -67,12 +67,16 @@ Result<blade::HelicalPathSpec> pathSpecFor(const GenerateRequest& request) {
     return spec;
 }
 
+// The tilt is named and signed as the machine's program writes it (B, or A on a table-B one).
 std::vector<std::string> headerComments(const GenerateRequest& request,
-                                        const blade::HelicalPathSpec& path) {
+                                        const blade::HelicalPathSpec& path,
+                                        const kinematics::MachineModel& machine) {
+    const kinematics::ProgramWord tilt = machine.programWord(kinematics::AxisId::B);
     return {"BladeAxis synthetic blade program (" + request.profile + ", seed " +
                 std::to_string(request.seed) + ")",
-            "ball end R=" + formatTrimmed(path.toolRadius, 4) +
-                " mm, B=" + formatTrimmed(units::radToDeg(path.tiltB0), 4) + " deg, lead " +
+            "ball end R=" + formatTrimmed(path.toolRadius, 4) + " mm, " +
+                machine.letter(kinematics::AxisId::B) + "=" +
+                formatTrimmed(tilt.sign * units::radToDeg(path.tiltB0), 4) + " deg, lead " +
                 formatTrimmed(units::radToDeg(path.leadAngle), 4) + " deg, " +
                 std::to_string(path.revolutions) + " revolutions"};
 }
@@ -97,12 +101,17 @@ Result<GeneratedProgram> generateProgram(const GenerateRequest& request,
     if (!generated) {
         return std::unexpected(generated.error());
     }
-    const auto comments = headerComments(request, *pathSpec);
+    const auto comments = headerComments(request, *pathSpec, machine);
     if (request.format == "apt") {
         io::cl::AptEmitOptions options;
         options.toolRadius = pathSpec->toolRadius;
         options.comments = comments;
-        return GeneratedProgram{io::cl::emitApt(generated->path, options), pathSpec->toolRadius};
+        toolpath::Toolpath path = generated->path; // CL data are in the program's frame
+        for (toolpath::ClRecord& record : path.records) {
+            record.tip = machine.toProgramFrame(record.tip);
+            record.axis = machine.toProgramFrame(record.axis);
+        }
+        return GeneratedProgram{io::cl::emitApt(path, options), pathSpec->toolRadius};
     }
     if (request.format != "gcode") {
         return makeError(ErrorCode::InvalidArgument,

@@ -109,5 +109,26 @@ TEST(TableB, AModuloTableWritesItsBWordInsideOneTurn) {
     EXPECT_NE(text->find("Y3. B5."), std::string::npos) << *text;
 }
 
+// A Sinumerik program for a table-B machine programs the table as B=DC(..): the table's word
+// takes the shorter way, and a re-scheduled block writes its new B in the same form.
+TEST(TableB, ASinumerikTablesDirectBWordIsReadAndWrittenInItsForm) {
+    const auto machine = machineFile("table_b.json");
+    ReadOptions options;
+    options.dialect = NcDialect::Sinumerik;
+    const auto program =
+        parseGcode("N10 G71 G90 G94\nN20 G1 X0 Y0 Z50 B=DC(350.0) F3000\nN30 Y1 B=DC(10)\n"
+                   "N90 M30\n",
+                   "blade.mpf", machine, options);
+    ASSERT_TRUE(program) << program.error().toString();
+    ASSERT_EQ(program->path.records.size(), 2u);
+    EXPECT_NEAR(program->path.records[1].axes->a, degToRad(370.0), 1e-12);
+    std::vector<kinematics::MachineAxes> axes{*program->path.records[0].axes,
+                                              *program->path.records[1].axes};
+    axes[1].a = degToRad(365.0);
+    const auto text = rewriteGcode(*program, axes, machine);
+    ASSERT_TRUE(text) << text.error().toString();
+    EXPECT_NE(text->find("N30 Y1 B=DC(5)"), std::string::npos) << *text;
+}
+
 } // namespace
 } // namespace bladeaxis::io::nc

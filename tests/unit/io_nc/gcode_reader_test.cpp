@@ -113,10 +113,36 @@ TEST(GcodeReader, UnprogrammedBIsZeroWithAWarning) {
 }
 
 TEST(GcodeReader, ConstantCAndModalNoOpCodesAreAccepted) {
-    const auto program = parse("G17 G40 G49 G80 G54.1 G43.4 H1\nG0 X0 Y0 Z9 A0 B0 C0\n"
+    const auto program = parse("G17 G40 G49 G80 G54.1 G43 H1\nG0 X0 Y0 Z9 A0 B0 C0\n"
                                "G1 X1 C0. F100 M8\nG64 X2\n");
     ASSERT_TRUE(program.has_value()) << program.error().toString();
     EXPECT_EQ(program->path.records.size(), 3u);
+}
+
+// Fanuc's tool centre point control G43.4 programs the tip in the workpiece frame, as TRAORI
+// and M128 do; G49 ends it. Read as machine axes instead, the tip would be turned by A.
+TEST(GcodeReader, ToolCentrePointControlG434ProgramsTheTipInTheWorkpieceFrame) {
+    const auto program = parse("G21 G90 G94\nG43.4 H1\nG1 X10. Y20. Z5. A30. B10. F1000.\n"
+                               "G49\nG1 X11.\nM30\n");
+    ASSERT_TRUE(program.has_value()) << program.error().toString();
+    ASSERT_EQ(program->path.records.size(), 2u);
+    const toolpath::ClRecord& tcp = program->path.records[0];
+    EXPECT_LT((tcp.tip - Vec3(10.0, 20.0, 5.0)).norm(), 1e-12);
+    const Vec3 axis = rotationX(-units::degToRad(30.0)) *
+                      Vec3(std::sin(units::degToRad(10.0)), 0.0, std::cos(units::degToRad(10.0)));
+    EXPECT_LT((tcp.axis - axis).norm(), 1e-12);
+    EXPECT_NE(program->sources[0].flags & kToolTip, 0);
+    // After G49 X Y Z are machine axes again: the table's 30 deg turns the tip.
+    EXPECT_EQ(program->sources[1].flags & kToolTip, 0);
+    const Vec3 turned = rotationX(-units::degToRad(30.0)) * Vec3(11.0, 20.0, 5.0);
+    EXPECT_LT((program->path.records[1].tip - turned).norm(), 1e-12);
+}
+
+TEST(GcodeReader, ToolCentrePointControlWithAnIjkToolAxisIsRefused) {
+    const auto program = parse("G21 G90 G94\nG43.5 H1\nG1 X10. Y20. Z5. A30. B10. F1000.\n");
+    ASSERT_FALSE(program.has_value());
+    EXPECT_EQ(program.error().where.line, 2);
+    EXPECT_NE(program.error().message.find("G43.5"), std::string::npos);
 }
 
 TEST(GcodeReader, BlanksBetweenLetterAndNumberAreAccepted) {

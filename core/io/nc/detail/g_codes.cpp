@@ -9,9 +9,9 @@ namespace bladeaxis::io::nc::detail {
 namespace {
 
 // Modal or one-shot codes that change nothing a four-axis tip/axis reading depends on.
-constexpr std::array<int, 31> kNoOpCodes{50,  51,  80,  90,  150, 170, 180, 190, 400, 430, 434,
-                                         435, 490, 500, 501, 540, 541, 550, 560, 570, 580, 590,
-                                         610, 611, 620, 640, 670, 690, 800, 980, 990};
+constexpr std::array<int, 28> kNoOpCodes{50,  51,  80,  90,  150, 170, 180, 190, 400, 430,
+                                         500, 501, 540, 541, 550, 560, 570, 580, 590, 610,
+                                         611, 620, 640, 670, 690, 800, 980, 990};
 
 struct Rejected {
     int code;
@@ -22,7 +22,9 @@ constexpr const char* kMacroCall =
     "custom macro calls G65/G66 are not supported: BladeAxis reads a flat program; have the "
     "post-processor write every move";
 
-constexpr std::array<Rejected, 16> kRejectedCodes{{
+constexpr std::array<Rejected, 17> kRejectedCodes{{
+    {435, "tool centre point control G43.5 (the tool axis as I J K) is not supported: post the "
+          "orientation as A and B words, with G43.4 or without tool centre point control"},
     {650, kMacroCall},
     {660, kMacroCall},
     {661, kMacroCall},
@@ -86,6 +88,10 @@ GCodeInfo classifyGCode(int code) {
         return {GKind::InverseTime};
     case 940:
         return {GKind::PerMinute};
+    case 434:
+        return {GKind::ToolTipOn};
+    case 490:
+        return {GKind::ToolTipOff};
     default:
         break;
     }

@@ -18,6 +18,8 @@ enum class GKind {
     Incremental,        // G91
     InverseTime,        // G93
     PerMinute,          // G94
+    ToolTipOn,          // G43.4: tool centre point control, X Y Z the tip in the workpiece frame
+    ToolTipOff,         // G49: tool length compensation and tool centre point control off
     NoOp,               // plane, compensation cancel, work offsets, look-ahead...: no effect here
     Unsupported,        // rejected with a reason
 };

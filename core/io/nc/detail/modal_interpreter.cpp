@@ -208,6 +208,11 @@ inline bool ModalInterpreter::applyGCode(const Context& at, const WordSpan& word
     case GKind::PerMinute:
         m_inverseTime = info.kind == GKind::InverseTime;
         return true;
+    case GKind::ToolTipOn:
+    case GKind::ToolTipOff:
+        // Fanuc's G43.4 means what Sinumerik's TRAORI and Heidenhain's M128 mean.
+        m_toolTip = info.kind == GKind::ToolTipOn;
+        return true;
     case GKind::NoOp:
         return true;
     case GKind::Unsupported:

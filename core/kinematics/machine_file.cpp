@@ -171,7 +171,6 @@ Status MachineReader::chain(const Json& root, MachineModel& machine) const {
                     "expected one of " + layoutChoices() + ", got \"" + type + "\"");
     }
     machine.layout = *layout;
-    machine.hasB = *layout == Layout::TableAHeadB || *layout == Layout::TableBHeadA;
     TableAHeadB& chain = machine.chain;
     auto pivot = number(object, "kinematics", "pivot_length_mm", 0.0, false);
     if (!pivot) {
@@ -217,12 +216,12 @@ Status MachineReader::axes(const Json& root, MachineModel& machine) const {
         return fail("axes", "axes", "missing, expected an object with X, Y, Z and the rotary axes");
     }
     const std::string tilt(1, machine.letter(AxisId::B));
-    if (!machine.hasB && root.at("axes").contains(tilt)) {
+    if (!machine.hasB() && root.at("axes").contains(tilt)) {
         return fail("axes." + tilt, tilt,
                     "the machine has a fixed head: expected no " + tilt + " axis");
     }
     for (AxisId id : kAllAxes) {
-        if (id == AxisId::B && !machine.hasB) {
+        if (id == AxisId::B && !machine.hasB()) {
             // Never binding: the tilt stays 0. The table's dynamics keep every ratio finite.
             continue;
         }
@@ -237,7 +236,7 @@ Status MachineReader::axes(const Json& root, MachineModel& machine) const {
         }
         machine.limit(id) = *limits;
     }
-    if (!machine.hasB) {
+    if (!machine.hasB()) {
         machine.limit(AxisId::B) = machine.limit(AxisId::A);
         machine.limit(AxisId::B).hasTravel = false;
         machine.limit(AxisId::B).backlash = 0.0;

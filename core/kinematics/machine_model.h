@@ -113,9 +113,6 @@ struct MachineModel {
     std::string sourceFile; // where it was loaded from; empty for built-in models
     TableAHeadB chain;      // in the engine's frame (offsets turned for a table-B layout)
     Layout layout = Layout::TableAHeadB;
-    // false for a fixed head (machine file types "table_a", "table_b"): the tilt is 0, a program
-    // that tilts it is refused, and the tilt's limits are placeholders that never bind.
-    bool hasB = true;
     std::array<AxisLimits, 5> limits{};
     RotaryMode aMode = RotaryMode::Continuous;
     NumberRules numbers; // how its control reads numbers without a decimal point
@@ -139,6 +136,9 @@ struct MachineModel {
     Vec3 toEngineFrame(const Vec3& v) const;
     Vec3 toProgramFrame(const Vec3& v) const;
     bool turnsAboutY() const { return layout == Layout::TableBHeadA || layout == Layout::TableB; }
+    // false for a fixed head (machine file types "table_a", "table_b"): the tilt is 0, a program
+    // that tilts it is refused, and the tilt's limits are placeholders that never bind.
+    bool hasB() const { return layout == Layout::TableAHeadB || layout == Layout::TableBHeadA; }
 };
 
 // The built-in default blade machine (the same values as resources/machines/blade_ab.json):

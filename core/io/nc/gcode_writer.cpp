@@ -78,7 +78,7 @@ Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> ne
                                                                  " is not finite");
             }
         }
-        if (!machine.hasB && std::abs(newAxes[k].b) > 1e-9) {
+        if (!machine.hasB() && std::abs(newAxes[k].b) > 1e-9) {
             const std::string tilt(1, machine.letter(kinematics::AxisId::B));
             return makeError(ErrorCode::CheckFailed,
                              "the new orientation tilts " + tilt + " by " +

@@ -55,7 +55,7 @@ toolpath::Toolpath familyPass(blade::FamilyMember member, bool fixedHead) {
 TEST(MachineLayouts, AFixedHeadMachineFileHasNoBAxis) {
     const auto machine = kinematics::loadMachineFile(tableAMachineFile());
     ASSERT_TRUE(machine) << machine.error().toString();
-    EXPECT_FALSE(machine->hasB);
+    EXPECT_FALSE(machine->hasB());
     EXPECT_FALSE(machine->limit(kinematics::AxisId::B).hasTravel);
     const auto withB = kinematics::parseMachineJson(
         R"({"schema": "bladeaxis-machine/1", "kinematics": {"type": "table_a"}, "axes": {
@@ -108,7 +108,7 @@ TEST(MachineLayouts, TheFamilyOnTableBMachinesReschedulesTheBWordWithoutReversal
         ASSERT_TRUE(family) << family.error().message;
         int reversalsBefore = 0;
         for (const blade::FamilyMember& member : *family) {
-            const toolpath::Toolpath pass = familyPass(member, !machine->hasB);
+            const toolpath::Toolpath pass = familyPass(member, !machine->hasB());
             JobSpec spec;
             spec.program = member.name + ".nc";
             spec.programText = gcodeText(pass, *machine, 3000.0, RotaryUnit::Degrees);
@@ -122,7 +122,7 @@ TEST(MachineLayouts, TheFamilyOnTableBMachinesReschedulesTheBWordWithoutReversal
             EXPECT_LT(result->rescheduled->maxCentreDeviationMm, 1e-3) << name << member.name;
             const std::string& written = result->rescheduled->programText;
             EXPECT_NE(written, *spec.programText) << name << member.name;
-            if (!machine->hasB) {
+            if (!machine->hasB()) {
                 EXPECT_EQ(written.find(" A0.1"), std::string::npos) << name << member.name;
             }
         }

@@ -48,7 +48,7 @@ TEST(MachineFile, ATableBMachineMapsItsLettersOntoTheEnginesRoles) {
         "b.json");
     ASSERT_TRUE(machine) << machine.error().toString();
     EXPECT_EQ(machine->layout, Layout::TableBHeadA);
-    EXPECT_TRUE(machine->hasB);
+    EXPECT_TRUE(machine->hasB());
     EXPECT_EQ(machine->letter(AxisId::A), 'B');
     EXPECT_EQ(machine->letter(AxisId::B), 'A');
     EXPECT_EQ(machine->letter(AxisId::X), 'Y');

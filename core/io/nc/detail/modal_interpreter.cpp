@@ -304,7 +304,7 @@ inline bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axi
         const bool decimal =
             style.hasPoint || (!word.plainStyle && hasExponent(word.text(at.line)));
         const double value = axisWordValue(at, axis, word, decimal);
-        if (bit == m_tiltBit && !m_machine.hasB && value != 0.0) {
+        if (bit == m_tiltBit && !m_machine.hasB() && value != 0.0) {
             const std::string tilt(1, kAxisLetters[axis]);
             return fail(at, word.letter,
                         tilt + std::string(word.text(at.line)) + ": the machine '" +
@@ -499,7 +499,7 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
     if (m_program.path.records.empty() && m_definedRadius) {
         m_program.path.toolRadius = *m_definedRadius;
     }
-    if (!(m_known & m_tiltBit) && !m_warnedDefaultB && m_machine.hasB) {
+    if (!(m_known & m_tiltBit) && !m_warnedDefaultB && m_machine.hasB()) {
         m_warnedDefaultB = true;
         const char tilt = kAxisLetters[m_words[4].index];
         m_program.path.warnings.push_back(

@@ -127,34 +127,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             [this](bool clean) { setWindowModified(!clean); });
     setAcceptDrops(true);
     m_layers = new QTableWidget(0, kLayerColumns, this);
-    // Two-line headers (name over unit) keep the columns narrow enough for the before/after
-    // figures to fit beside the editor without scrolling.
-    m_layers->setHorizontalHeaderLabels(
-        {tr("Layer"), tr("Status"), tr("Edited"), tr("Rev.\nbefore"), tr("Rev.\nafter"),
-         tr("Peak A acc.\nbefore [°/s²]"), tr("Peak A acc.\nafter [°/s²]"),
-         tr("Min clearance\n[°]"), tr("Peak θ''\n[°/mm²]")});
-    const QStringList headerTips{
-        tr("Layer number, 0 first in feed order"),
-        tr("ok, or what the engine found: pinched, monotone infeasible (original kept), ..."),
-        tr("What you changed in this layer: settings, key points"),
-        tr("A reversals in the layer, original program"),
-        tr("A reversals in the layer, re-scheduled program (0 is the aim)"),
-        tr("Peak A acceleration in the layer at the programmed feed, original program"),
-        tr("Peak A acceleration in the layer, re-scheduled; green lower, red higher than before"),
-        tr("Smallest distance of the new orientation from the edge of the channel where the shank "
-           "touches the blade: the margin (3° by default) where the schedule runs along the "
-           "hull, less only where the layer is pinched"),
-        tr("Sharpest bend of the new θ(S); lower is smoother")};
-    for (int column = 0; column < kLayerColumns; ++column) {
-        m_layers->horizontalHeaderItem(column)->setToolTip(headerTips[column]);
-    }
+    setLayerHeaders(m_tableLetter);
     m_layers->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_layers->setSelectionMode(QAbstractItemView::SingleSelection);
     m_layers->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_layers->horizontalHeader()->setStretchLastSection(true);
     m_layers->verticalHeader()->setVisible(false);
-    m_layers->setToolTip(tr("Layers of the re-scheduled toolpath: status, A reversals and peak A "
-                            "acceleration before and after; selecting one selects it everywhere"));
     connect(m_layers, &QTableWidget::itemSelectionChanged, this,
             [this] { emit layerSelected(selectedLayer()); });
     connect(this, &MainWindow::layerSelected, this, &MainWindow::showSelectedLayer);
@@ -182,6 +160,53 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     buildStatusBar();
     resize(1200, 780);
     restoreSettings();
+}
+
+void MainWindow::setLayerHeaders(QChar table) {
+    // Two-line headers (name over unit) keep the columns narrow enough for the before/after
+    // figures to fit beside the editor without scrolling.
+    m_layers->setHorizontalHeaderLabels(
+        {tr("Layer"), tr("Status"), tr("Edited"), tr("Rev.\nbefore"), tr("Rev.\nafter"),
+         tr("Peak %1 acc.\nbefore [°/s²]").arg(table), tr("Peak %1 acc.\nafter [°/s²]").arg(table),
+         tr("Min clearance\n[°]"), tr("Peak θ''\n[°/mm²]")});
+    const QStringList headerTips{
+        tr("Layer number, 0 first in feed order"),
+        tr("ok, or what the engine found: pinched, monotone infeasible (original kept), ..."),
+        tr("What you changed in this layer: settings, key points"),
+        tr("%1 reversals in the layer, original program").arg(table),
+        tr("%1 reversals in the layer, re-scheduled program (0 is the aim)").arg(table),
+        tr("Peak %1 acceleration in the layer at the programmed feed, original program").arg(table),
+        tr("Peak %1 acceleration in the layer, re-scheduled; green lower, red higher than before")
+            .arg(table),
+        tr("Smallest distance of the new orientation from the edge of the channel where the shank "
+           "touches the blade: the margin (3° by default) where the schedule runs along the "
+           "hull, less only where the layer is pinched"),
+        tr("Sharpest bend of the new θ(S); lower is smoother")};
+    for (int column = 0; column < kLayerColumns; ++column) {
+        m_layers->horizontalHeaderItem(column)->setToolTip(headerTips[column]);
+    }
+    m_layers->setToolTip(tr("Layers of the re-scheduled toolpath: status, %1 reversals and peak "
+                            "%1 acceleration before and after; selecting one selects it "
+                            "everywhere")
+                             .arg(table));
+}
+
+void MainWindow::showAxisLetters(const kinematics::MachineModel& machine) {
+    std::array<char, 5> letters{};
+    for (kinematics::AxisId axis : kinematics::kAllAxes) {
+        letters[static_cast<std::size_t>(axis)] = machine.letter(axis);
+    }
+    m_plots->setAxisLetters(letters);
+    m_tableLetter = QLatin1Char(machine.letter(kinematics::AxisId::A));
+    setLayerHeaders(m_tableLetter);
+    const std::array<std::pair<QString, QString>, 2> texts{
+        std::pair{tr("Colour: &%1 speed").arg(m_tableLetter), tr("%1 speed").arg(m_tableLetter)},
+        std::pair{tr("Colour: %1 speed (&original)").arg(m_tableLetter),
+                  tr("%1 speed (original)").arg(m_tableLetter)}};
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+        m_speedColourings[i]->setText(texts[i].first);
+        m_speedColourings[i]->setIconText(texts[i].second);
+    }
 }
 
 MainWindow::~MainWindow() {
@@ -430,6 +455,7 @@ void MainWindow::onJobFinished() {
 
 void MainWindow::showResult(job::DisplayScene scene) {
     m_scene = std::move(scene);
+    showAxisLetters(m_result->machine);
     showLayers();
     if (m_result->comparison) {
         m_plots->setComparison(*m_result->comparison);
@@ -509,7 +535,7 @@ void MainWindow::explainLayerChange(int row, const report::LayerMotion& now,
     const auto layer = static_cast<std::size_t>(row);
     QString why;
     if (overrideOf(layer) != nullptr) {
-        why = tr("This layer's edit changed its peak A acceleration");
+        why = tr("This layer's edit changed its peak %1 acceleration").arg(m_tableLetter);
     } else {
         const bool previousEdited = layer > 0 && overrideOf(layer - 1) != nullptr;
         const bool nextEdited = overrideOf(layer + 1) != nullptr;

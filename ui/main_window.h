@@ -11,6 +11,7 @@
 
 #include <QMainWindow>
 #include <QUndoStack>
+#include <array>
 #include <optional>
 
 class QAction;
@@ -131,6 +132,10 @@ class MainWindow final : public QMainWindow {
     void onJobFinished();
     void showResult(job::DisplayScene scene);
     void showLayers();
+    // Names the rotary table by the program's letter (B on a table-B machine) in the layer
+    // table's headers, the plots and the colouring actions.
+    void showAxisLetters(const kinematics::MachineModel& machine);
+    void setLayerHeaders(QChar table);
     void showLayerRow(int row, const report::LayerMotion& motion);
     void rerunWith(job::JobSpec spec, const QString& message);
     void rerunWithToolRadius();
@@ -210,6 +215,8 @@ class MainWindow final : public QMainWindow {
     QAction* m_compareAction = nullptr;
     QAction* m_optimumAction = nullptr;
     QAction* m_darkAction = nullptr;
+    std::array<QAction*, 2> m_speedColourings{}; // by the table's speed, re-scheduled, original
+    QChar m_tableLetter = QLatin1Char('A');      // the program's letter of the rotary table
 };
 
 } // namespace bladeaxis::ui

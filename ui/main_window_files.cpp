@@ -150,6 +150,9 @@ void MainWindow::buildViewMenu() {
         action->setIconText(barText);
         action->setCheckable(true);
         action->setChecked(mode == ToolpathView::Colouring::Layer);
+        if (mode != ToolpathView::Colouring::Layer) { // renamed for a table-B machine's letter
+            m_speedColourings[mode == ToolpathView::Colouring::ASpeed ? 0 : 1] = action;
+        }
         colouring->addAction(action);
         m_view3dBar->addAction(action);
         connect(action, &QAction::triggered, this,

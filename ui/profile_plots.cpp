@@ -24,21 +24,31 @@ namespace {
 
 using kinematics::AxisId;
 
-// Titles with units, in the order of ProfilePlots::Quantity.
-QString quantityTitle(int quantity) {
+// Titles with units, in the order of ProfilePlots::Quantity; %1 is the axis's letter.
+QString titlePattern(int quantity) {
     switch (quantity) {
     case ProfilePlots::APosition:
-        return ProfilePlots::tr("A position [deg]");
+        return ProfilePlots::tr("%1 position [deg]");
     case ProfilePlots::AVelocity:
-        return ProfilePlots::tr("A velocity [deg/s]");
+        return ProfilePlots::tr("%1 velocity [deg/s]");
     case ProfilePlots::AAcceleration:
-        return ProfilePlots::tr("A acceleration [deg/s²]");
-    case ProfilePlots::XVelocity:
-        return ProfilePlots::tr("X velocity [mm/s]");
-    case ProfilePlots::YVelocity:
-        return ProfilePlots::tr("Y velocity [mm/s]");
+        return ProfilePlots::tr("%1 acceleration [deg/s²]");
     default:
-        return ProfilePlots::tr("Z velocity [mm/s]");
+        return ProfilePlots::tr("%1 velocity [mm/s]");
+    }
+}
+
+// The axis role a quantity shows.
+AxisId axisOf(int quantity) {
+    switch (quantity) {
+    case ProfilePlots::XVelocity:
+        return AxisId::X;
+    case ProfilePlots::YVelocity:
+        return AxisId::Y;
+    case ProfilePlots::ZVelocity:
+        return AxisId::Z;
+    default:
+        return AxisId::A;
     }
 }
 
@@ -143,6 +153,8 @@ double visibleDuration(const std::vector<ProfilePlots::Curve>& curves) {
 
 // What a plot draws beyond its curves.
 struct PlotOptions {
+    std::array<QString, ProfilePlots::kQuantityCount> titles; // with units
+    QString logTitle;                              // the A acceleration's title on the log axis
     std::optional<double> cursor;                  // s: the mouse readout's time line
     bool logAcceleration = false;                  // A acceleration as |a| on a log axis
     std::optional<std::pair<double, double>> span; // s: the selected layer's time span
@@ -190,8 +202,7 @@ class PlotPainter {
         }
         const QRectF plot = plotRect(area, metrics);
         m_p.setPen(m_palette.color(QPalette::Text));
-        const QString title = log ? ProfilePlots::tr("|A acceleration| [deg/s²], log scale")
-                                  : quantityTitle(quantity);
+        const QString title = log ? options.logTitle : options.titles[quantity];
         m_p.drawText(area.adjusted(plot.left() - area.left(), 0, 0, 0),
                      Qt::AlignLeft | Qt::AlignTop, title);
         if (!(xRange.high > 0.0) || !yRange.valid() || plot.width() < 10 || plot.height() < 10) {
@@ -367,6 +378,11 @@ class PlotCanvas final : public QWidget {
         options.span = m_owner.highlightedSpan();
         options.spanLabel = m_owner.highlightedSpanLabel();
         for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
+            options.titles[quantity] =
+                m_owner.quantityTitle(static_cast<ProfilePlots::Quantity>(quantity));
+        }
+        options.logTitle = m_owner.logAccelerationTitle();
+        for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
             plotter.draw(cellArea(quantity), quantity, m_owner.curves(), options);
         }
     }
@@ -435,11 +451,9 @@ ProfilePlots::ProfilePlots(QWidget* parent) : QWidget(parent) {
     m_legend->setContentsMargins(6, 2, 6, 0);
     m_legendArea->setWidget(legendRow);
     m_canvas = new detail::PlotCanvas(*this, this);
-    m_logBox = new QCheckBox(tr("log |A acc.|"), this);
+    m_logBox = new QCheckBox(this); // its text names the table's letter (setAxisLetters)
     m_logBox->setObjectName(QStringLiteral("accelerationLogScale"));
     m_logBox->setChecked(m_logAcceleration);
-    m_logBox->setToolTip(tr("A acceleration as its magnitude on a logarithmic axis, so the "
-                            "original's spikes and the new schedule are both readable"));
     connect(m_logBox, &QCheckBox::toggled, this, &ProfilePlots::setAccelerationLogScale);
     auto* top = new QHBoxLayout;
     top->setContentsMargins(0, 0, 6, 0);
@@ -449,6 +463,7 @@ ProfilePlots::ProfilePlots(QWidget* parent) : QWidget(parent) {
     layout->addWidget(m_canvas, 1);
     setAutoFillBackground(true);
     setBackgroundRole(QPalette::Base);
+    setAxisLetters(m_letters);
 }
 
 void ProfilePlots::setProfiles(const analysis::AxisProfile& original,
@@ -478,6 +493,26 @@ void ProfilePlots::addProfile(const QString& method, const analysis::AxisProfile
     }
     curves.push_back(curveOf(method, profile, method == QLatin1String("original")));
     setCurves(std::move(curves));
+}
+
+void ProfilePlots::setAxisLetters(const std::array<char, 5>& letters) {
+    m_letters = letters;
+    const QChar table = QLatin1Char(letters[static_cast<std::size_t>(AxisId::A)]);
+    m_logBox->setText(tr("log |%1 acc.|").arg(table));
+    m_logBox->setToolTip(tr("%1 acceleration as its magnitude on a logarithmic axis, so the "
+                            "original's spikes and the new schedule are both readable")
+                             .arg(table));
+    m_canvas->update();
+}
+
+QString ProfilePlots::quantityTitle(Quantity quantity) const {
+    const char letter = m_letters[static_cast<std::size_t>(axisOf(quantity))];
+    return titlePattern(quantity).arg(QLatin1Char(letter));
+}
+
+QString ProfilePlots::logAccelerationTitle() const {
+    return tr("|%1 acceleration| [deg/s²], log scale")
+        .arg(QLatin1Char(m_letters[static_cast<std::size_t>(AxisId::A)]));
 }
 
 void ProfilePlots::clear() {

@@ -61,6 +61,13 @@ class ProfilePlots final : public QWidget {
     // readout shown when the mouse hovers a plot.
     QString valuesAt(double time, Quantity quantity) const;
 
+    // The program's letter of each axis role (X Y Z A B role order, MachineModel::letter): the
+    // titles name the axes as the program does ("B velocity" on a table-B machine).
+    void setAxisLetters(const std::array<char, 5>& letters);
+    // A plot's title with its unit, e.g. "A velocity [deg/s]".
+    QString quantityTitle(Quantity quantity) const;
+    QString logAccelerationTitle() const;
+
     // A acceleration as |a| on a logarithmic axis (default): the original's spikes and a smooth
     // schedule's few hundred deg/s² are both readable, where a linear axis scaled to the spikes
     // shows the new schedule as a flat line.
@@ -87,6 +94,7 @@ class ProfilePlots final : public QWidget {
     void refreshLegendIcons();
 
     std::vector<Curve> m_curves;
+    std::array<char, 5> m_letters{'X', 'Y', 'Z', 'A', 'B'};
     std::vector<QString> m_hidden; // methods the user hid, kept across results
     QScrollArea* m_legendArea = nullptr;
     QHBoxLayout* m_legend = nullptr;

@@ -386,6 +386,8 @@ void ToolpathView::setSchedule(const scheduling::ScheduleResult& schedule) {
 
 void ToolpathView::setTimeline(const job::JobResult& result) {
     m_timeline = {};
+    m_tableLetter = QLatin1Char(result.machine.letter(kinematics::AxisId::A));
+    m_alongLetter = QChar(QLatin1Char(result.machine.letter(kinematics::AxisId::X))).toLower();
     const std::size_t first = result.pass.first, count = result.pass.count;
     const auto& records = result.program.path().records;
     const bool rescheduled = result.rescheduled.has_value();
@@ -646,7 +648,7 @@ QString ToolpathView::positionReadout(std::size_t passIndex) const {
     if (passIndex < t.seconds.size()) {
         parts << tr("t = %1 s").arg(QString::number(t.seconds[passIndex], 'f', 2));
     }
-    parts << tr("A = %1°").arg(signedNumber(t.aDegrees[passIndex], 1));
+    parts << tr("%1 = %2°").arg(m_tableLetter).arg(signedNumber(t.aDegrees[passIndex], 1));
     return parts.join(QStringLiteral(" · "));
 }
 

@@ -182,6 +182,10 @@ class ToolpathView final : public QWidget {
     int m_maxAxes = kDefaultMaxAxes;
     std::optional<std::size_t> m_toolRecord; // pass record of the tool shown
     Timeline m_timeline;
+    // The program's letters of the rotary table and of the axis along it (MachineModel::letter
+    // of the roles A and X), so the readout and the legend say "B = ..." on a table-B machine.
+    QChar m_tableLetter = QLatin1Char('A');
+    QChar m_alongLetter = QLatin1Char('x');
     QPointF m_pressPosition;
     QWidget* m_strip = nullptr;
     QSpinBox* m_densityBox = nullptr;

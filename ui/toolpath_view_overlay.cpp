@@ -65,7 +65,8 @@ QString ToolpathView::colourBarTitle() const {
     const bool original =
         m_colouring == Colouring::OriginalASpeed || scene.aSpeedRescheduled.empty();
     // The speeds stay rad/s inside; degrees are what the engineer reads everywhere else.
-    return original ? tr("|dA/dt| original (deg/s)") : tr("|dA/dt| re-scheduled (deg/s)");
+    return (original ? tr("|d%1/dt| original (deg/s)") : tr("|d%1/dt| re-scheduled (deg/s)"))
+        .arg(m_tableLetter);
 }
 
 std::vector<ToolpathView::LegendEntry> ToolpathView::legend() const {
@@ -87,8 +88,9 @@ std::vector<ToolpathView::LegendEntry> ToolpathView::legend() const {
     }
     if (m_selected >= 0 && !scene.layers[static_cast<std::size_t>(m_selected)].section.empty()) {
         entries.push_back(
-            {tr("blade section at layer %1 (x = %2 mm)")
+            {tr("blade section at layer %1 (%2 = %3 mm)")
                  .arg(m_selected)
+                 .arg(m_alongLetter)
                  .arg(signedNumber(scene.layers[static_cast<std::size_t>(m_selected)].sectionX, 1)),
              QColor(kSectionRgb), Swatch::Line});
     }

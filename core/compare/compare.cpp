@@ -226,6 +226,11 @@ Result<Comparison> compareMethods(EvaluationContext context, const CompareOption
         return std::unexpected(faithful.error());
     }
     Comparison comparison;
+    if (context.machine != nullptr) {
+        for (kinematics::AxisId axis : kinematics::kAllAxes) {
+            comparison.letters[static_cast<std::size_t>(axis)] = context.machine->letter(axis);
+        }
+    }
     comparison.reference = std::move(best->result);
     context.reference = &comparison.reference;
 

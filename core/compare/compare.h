@@ -6,6 +6,7 @@
 #include "core/compare/method_evaluation.h"
 #include "core/scheduling/schedule_parameters.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,9 @@ struct Comparison {
     // Why optimal-qp or optimal-lp is missing, one entry per missing method ("optimal-qp: layer
     // 3: ..."); empty when both were computed or not asked for.
     std::vector<std::string> optimumFailures;
+    // The program's letter of each axis role, in X Y Z A B role order (MachineModel::letter),
+    // for what a reader sees; metric names and machine-readable keys stay in roles.
+    std::array<char, 5> letters = kinematics::kProgramLetters;
 
     const MethodResult* find(std::string_view method) const;
     // Every figure the comparison could not compute, with the reason: the optimum's failures

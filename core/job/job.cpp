@@ -350,13 +350,21 @@ std::span<ClRecord> mutablePass(JobResult& result) {
         .subspan(result.pass.first, result.pass.count);
 }
 
+// The program's letters of the table and the tilt and the tilt's sign, for the program checks'
+// messages.
+RotaryLetters rotaryLetters(const kinematics::MachineModel& machine) {
+    return {machine.letter(kinematics::AxisId::A), machine.letter(kinematics::AxisId::B),
+            machine.programWord(kinematics::AxisId::B).sign};
+}
+
 // The four-axis condition on B before scheduling: a re-scheduling job refuses a varying tilt
 // (nothing would be right about the written program), an analysis only reports it. Noise within
 // the tolerance is snapped to the median after the original motion was analysed, so the
 // figures of the original describe the program as written.
 Status checkTilt(JobResult& result, const JobSpec& spec, ProgressSink& progress) {
     const std::string& file = result.program.path().sourceFile;
-    auto tilt = checkConstantTilt(mutablePass(result), file, spec.check);
+    const RotaryLetters letters = rotaryLetters(result.machine);
+    auto tilt = checkConstantTilt(mutablePass(result), file, spec.check, letters);
     if (!tilt) {
         if (spec.reschedule || spec.compare) {
             return std::unexpected(tilt.error());
@@ -369,12 +377,13 @@ Status checkTilt(JobResult& result, const JobSpec& spec, ProgressSink& progress)
         return {}; // the re-scheduling refuses an unknown radius with its own message
     }
     if (spec.reschedule || spec.compare) {
-        if (auto helical = checkHelical(mutablePass(result), *result.toolRadius, file); !helical) {
+        if (auto helical = checkHelical(mutablePass(result), *result.toolRadius, file, letters);
+            !helical) {
             return helical;
         }
     }
     tilt->snappedRecords = snapTilt(mutablePass(result), tilt->medianRad, *result.toolRadius);
-    if (const std::string note = describeSnap(*tilt, file); !note.empty()) {
+    if (const std::string note = describeSnap(*tilt, file, letters); !note.empty()) {
         result.warnings.push_back(note);
         progress.warning(note);
     }
@@ -409,7 +418,8 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     const std::span<const ClRecord> pass =
         std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
     return checkOrientationInChannel(result.rescheduled->schedule, pass,
-                                     result.program.path().sourceFile, spec.check);
+                                     result.program.path().sourceFile, spec.check,
+                                     rotaryLetters(result.machine));
 }
 
 } // namespace

@@ -20,6 +20,12 @@ namespace bladeaxis::job {
 
 namespace {
 
+// The program's letter for an axis role ("B" for the table of a table-B machine): every text a
+// person reads names the axis as the program and the machine's panel do.
+std::string letterOf(const kinematics::MachineModel& machine, kinematics::AxisId axis) {
+    return std::string(1, machine.letter(axis));
+}
+
 // "backlash     A 0.005 deg: 16 -> 0 reversals, 0.080 -> 0.000 deg lost motion", one line per
 // axis with play (before only when nothing was re-scheduled).
 std::string lostMotionSummary(const JobResult& result) {
@@ -34,7 +40,7 @@ std::string lostMotionSummary(const JobResult& result) {
             return formatFixed(report::toReportUnit(axis, value), decimals);
         };
         const std::string unit = std::string(" ") + report::unitOf(axis);
-        text += std::string("backlash     ") + kinematics::axisName(axis) + " " +
+        text += "backlash     " + letterOf(result.machine, axis) + " " +
                 shown(before[i].backlash, 4) + unit + ": " + std::to_string(before[i].reversals);
         if (i < after.size()) {
             text += " -> " + std::to_string(after[i].reversals);
@@ -218,11 +224,33 @@ nlohmann::json clearanceJson(const CadCheckResult& check, const std::string& fil
     return json;
 }
 
+bool lettersAreRoles(const kinematics::MachineModel& machine) {
+    return std::ranges::all_of(kinematics::kAllAxes, [&machine](kinematics::AxisId axis) {
+        return letterOf(machine, axis) == kinematics::axisName(axis);
+    });
+}
+
+// The report's keys name the engine's axis roles; "axis_letters" maps each role to the
+// program's letter, so that a consumer can label a table-B machine's figures as its operator
+// reads them. Written only where a letter differs, so a table-A report is as it always was.
+void addAxisLetters(nlohmann::json& json, const kinematics::MachineModel& machine) {
+    if (lettersAreRoles(machine)) {
+        return;
+    }
+    nlohmann::json letters = nlohmann::json::object();
+    for (kinematics::AxisId axis : kinematics::kAllAxes) {
+        letters[kinematics::axisName(axis)] = letterOf(machine, axis);
+    }
+    json["axis_letters"] = letters;
+    json["machine_layout"] = kinematics::layoutName(machine.layout);
+}
+
 nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
     nlohmann::json json;
     json["bladeaxis_version"] = projectVersion();
     json["bladeaxis_revision"] = projectRevision();
     json["input"] = inputJson(result);
+    addAxisLetters(json, result.machine);
     json["machine"] = {
         {"name", result.machine.name},
         {"file", result.machine.sourceFile.empty() ? "(built-in)" : result.machine.sourceFile}};
@@ -469,6 +497,7 @@ std::string rescheduledSummary(const JobResult& result) {
     const auto& after = outcome.profile;
     const auto& a0 = before.axis(AxisId::A);
     const auto& a1 = after.axis(AxisId::A);
+    const std::string table = letterOf(result.machine, AxisId::A);
     std::size_t flagged = 0;
     for (const auto& layer : outcome.schedule.layers) {
         flagged += scheduling::isFlagged(layer) ? 1 : 0;
@@ -476,12 +505,12 @@ std::string rescheduledSummary(const JobResult& result) {
     std::string text = "re-scheduled " + std::to_string(outcome.schedule.layers.size()) +
                        " layers (" + std::to_string(flagged) + " flagged, " +
                        std::to_string(outcome.layersKeptOriginal) + " kept original)\n";
-    text += "A reversals  " + std::to_string(before.aReversals.count) + " -> " +
+    text += table + " reversals  " + std::to_string(before.aReversals.count) + " -> " +
             std::to_string(after.aReversals.count) + "\n";
-    text += "A peak vel.  " + formatFixed(units::radToDeg(a0.peakVelocity), 1) + " -> " +
+    text += table + " peak vel.  " + formatFixed(units::radToDeg(a0.peakVelocity), 1) + " -> " +
             formatFixed(units::radToDeg(a1.peakVelocity), 1) + " deg/s " +
             change(a0.peakVelocity, a1.peakVelocity, "lower", "higher") + "\n";
-    text += "A peak acc.  " + formatFixed(units::radToDeg(a0.peakAcceleration), 0) + " -> " +
+    text += table + " peak acc.  " + formatFixed(units::radToDeg(a0.peakAcceleration), 0) + " -> " +
             formatFixed(units::radToDeg(a1.peakAcceleration), 0) + " deg/s^2 " +
             change(a0.peakAcceleration, a1.peakAcceleration, "lower", "higher") + "\n";
     text += "T1           " + formatFixed(result.constantFeed.time, 1) + " -> " +
@@ -515,9 +544,12 @@ std::string clearanceSummary(const CadCheckResult& check) {
     return text + ")\n";
 }
 
-std::string comparisonSummary(const compare::Comparison& comparison) {
+std::string comparisonSummary(const compare::Comparison& comparison,
+                              const kinematics::MachineModel& machine) {
     using kinematics::AxisId;
-    std::string text = "comparison   method            A rev.  A peak acc. (deg/s^2)  T1 (s)\n";
+    const std::string table = letterOf(machine, AxisId::A);
+    std::string text = "comparison   method            " + table + " rev.  " + table +
+                       " peak acc. (deg/s^2)  T1 (s)\n";
     for (const compare::MethodResult& method : comparison.methods) {
         std::string name = method.method;
         name.resize(std::max<std::size_t>(name.size(), 18), ' ');
@@ -553,26 +585,30 @@ std::string formatSummary(const JobResult& result) {
     text += "path         " + number(profile.pathLength, 1) + " mm at " +
             number(units::perSecondToPerMinute(profile.feed), 0) + " mm/min, " +
             number(profile.cycleTime, 1) + " s\n";
-    text += "A axis       " + std::to_string(profile.aReversals.count) + " reversals, travel " +
-            number(units::radToDeg(profile.aReversals.travel), 1) + " deg (" +
-            number(units::radToDeg(profile.aReversals.backwardTravel), 1) + " deg backwards)\n";
-    text += "A peaks      velocity " + number(units::radToDeg(a.peakVelocity), 1) +
+    const std::string table = letterOf(result.machine, AxisId::A);
+    text += table + " axis       " + std::to_string(profile.aReversals.count) +
+            " reversals, travel " + number(units::radToDeg(profile.aReversals.travel), 1) +
+            " deg (" + number(units::radToDeg(profile.aReversals.backwardTravel), 1) +
+            " deg backwards)\n";
+    text += table + " peaks      velocity " + number(units::radToDeg(a.peakVelocity), 1) +
             " deg/s, acceleration " + number(units::radToDeg(a.peakAcceleration), 0) + " deg/s^2\n";
-    for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z}) {
+    for (std::size_t word = 0; word < 3; ++word) { // X Y Z in the program's order
+        const AxisId axis = result.machine.axisOfWord(word);
         const auto& series = profile.axes[static_cast<int>(axis)];
-        text += std::string(kinematics::axisName(axis)) + " peaks      velocity " +
+        text += letterOf(result.machine, axis) + " peaks      velocity " +
                 number(series.peakVelocity, 1) + " mm/s, acceleration " +
                 number(series.peakAcceleration, 0) + " mm/s^2\n";
     }
     text += "T1           " + number(result.constantFeed.time, 1) + " s at an achievable feed of " +
             number(units::perSecondToPerMinute(result.constantFeed.achievableFeed), 0) +
-            " mm/min (bound by " + kinematics::axisName(result.constantFeed.bindingAxis) + ")\n";
+            " mm/min (bound by " + letterOf(result.machine, result.constantFeed.bindingAxis) +
+            ")\n";
     if (result.rescheduled) {
         text += rescheduledSummary(result);
     }
     text += lostMotionSummary(result);
     if (result.comparison) {
-        text += comparisonSummary(*result.comparison);
+        text += comparisonSummary(*result.comparison, result.machine);
     }
     if (result.cadCheck) {
         text += clearanceSummary(*result.cadCheck);

@@ -32,6 +32,33 @@ double outsideDistance(double theta, double low, double high) {
     return std::max({low - nearest, nearest - high, 0.0});
 }
 
+// The refusal of a varying tilt, in the program's letter and sign of the tilt (`tilts` and
+// `median` in the engine's, rad).
+std::string varyingTiltMessage(std::span<const toolpath::ClRecord> pass, std::vector<double> tilts,
+                               std::size_t offending, double median, const std::string& file,
+                               const ProgramCheckOptions& options, RotaryLetters letters) {
+    for (double& tilt : tilts) {
+        tilt *= letters.tiltSign;
+    }
+    median *= letters.tiltSign;
+    const auto [low, high] = std::minmax_element(tilts.begin(), tilts.end());
+    const auto lineOf = [&](auto it) {
+        return pass[static_cast<std::size_t>(it - tilts.begin())].line;
+    };
+    const std::string b(1, letters.tilt);
+    std::string message =
+        "not a four-axis blade pass: the tool tilt " + b + " is " + degrees(tilts[offending]) +
+        " here, " + degrees(tilts[offending] - median) + " from its median " + degrees(median) +
+        " along the cutting pass (" + b + " ranges from " + degrees(*low) + " at " +
+        at(file, lineOf(low)) + " to " + degrees(*high) + " at " + at(file, lineOf(high)) + ")";
+    message += "; a four-axis pass holds " + b + " within " + degrees(options.tiltToleranceRad, 4) +
+               ". BladeAxis re-schedules passes with a fixed " + b +
+               " head only, so nothing was written. If the variation is noise of "
+               "the post-processor, allow it with --b-tolerance-deg (" +
+               b + " is then snapped to its median); a five-axis program cannot be re-scheduled";
+    return message;
+}
+
 } // namespace
 
 double tiltOf(const Vec3& axis) {
@@ -39,7 +66,8 @@ double tiltOf(const Vec3& axis) {
 }
 
 Result<TiltCheck> checkConstantTilt(std::span<const toolpath::ClRecord> pass,
-                                    const std::string& file, const ProgramCheckOptions& options) {
+                                    const std::string& file, const ProgramCheckOptions& options,
+                                    RotaryLetters letters) {
     TiltCheck check;
     if (pass.empty()) {
         return check;
@@ -61,22 +89,10 @@ Result<TiltCheck> checkConstantTilt(std::span<const toolpath::ClRecord> pass,
     if (firstOffending == pass.size()) {
         return check;
     }
-    const auto [low, high] = std::minmax_element(tilts.begin(), tilts.end());
-    const auto lineOf = [&](auto it) {
-        return pass[static_cast<std::size_t>(it - tilts.begin())].line;
-    };
     const toolpath::ClRecord& offending = pass[firstOffending];
     return makeError(
         ErrorCode::Geometry,
-        "not a four-axis blade pass: the tool tilt B is " + degrees(tilts[firstOffending]) +
-            " here, " + degrees(tilts[firstOffending] - check.medianRad) + " from its median " +
-            degrees(check.medianRad) + " along the cutting pass (B ranges from " + degrees(*low) +
-            " at " + at(file, lineOf(low)) + " to " + degrees(*high) + " at " +
-            at(file, lineOf(high)) + "); a four-axis pass holds B within " +
-            degrees(options.tiltToleranceRad, 4) +
-            ". BladeAxis re-schedules passes with a fixed B head only, so nothing was written. "
-            "If the variation is noise of the post-processor, allow it with --b-tolerance-deg "
-            "(B is then snapped to its median); a five-axis program cannot be re-scheduled",
+        varyingTiltMessage(pass, tilts, firstOffending, check.medianRad, file, options, letters),
         {file, offending.line, 0});
 }
 
@@ -100,18 +116,20 @@ std::size_t snapTilt(std::span<toolpath::ClRecord> pass, double tiltRad, double 
     return snapped;
 }
 
-std::string describeSnap(const TiltCheck& tilt, const std::string& file) {
+std::string describeSnap(const TiltCheck& tilt, const std::string& file, RotaryLetters letters) {
     if (tilt.snappedRecords == 0 || tilt.largestDeviationRad <= kReportedTiltDeviationRad) {
         return {};
     }
-    return file + ": the tool tilt B varies by up to " + degrees(tilt.largestDeviationRad, 5) +
-           " from its median " + degrees(tilt.medianRad, 4) + " (within the tolerance); B of " +
-           std::to_string(tilt.snappedRecords) +
+    const std::string b(1, letters.tilt);
+    return file + ": the tool tilt " + b + " varies by up to " +
+           degrees(tilt.largestDeviationRad, 5) + " from its median " +
+           degrees(letters.tiltSign * tilt.medianRad, 4) + " (within the tolerance); " + b +
+           " of " + std::to_string(tilt.snappedRecords) +
            " cutting record(s) was snapped to the median, every ball centre kept";
 }
 
 Status checkHelical(std::span<const toolpath::ClRecord> pass, double toolRadius,
-                    const std::string& file) {
+                    const std::string& file, RotaryLetters letters) {
     if (pass.size() < 2) {
         return {};
     }
@@ -134,8 +152,9 @@ Status checkHelical(std::span<const toolpath::ClRecord> pass, double toolRadius,
                          at(file, pass.back().line) +
                          " (a helical pass turns 360 deg per layer, "
                          "at least " +
-                         degrees(kMinimumHelicalTurnRad, 0) +
-                         "). If the A and B words are in radians, give --angle-unit rad; check "
+                         degrees(kMinimumHelicalTurnRad, 0) + "). If the " +
+                         std::string(1, letters.table) + " and " + std::string(1, letters.tilt) +
+                         " words are in radians, give --angle-unit rad; check "
                          "that the machine file's rotary axis is the program's. Nothing was "
                          "written",
                      {file, pass.front().line, 0});
@@ -143,7 +162,7 @@ Status checkHelical(std::span<const toolpath::ClRecord> pass, double toolRadius,
 
 Status checkOrientationInChannel(const scheduling::ScheduleResult& schedule,
                                  std::span<const toolpath::ClRecord> pass, const std::string& file,
-                                 const ProgramCheckOptions& options) {
+                                 const ProgramCheckOptions& options, RotaryLetters letters) {
     double largest = 0.0;
     std::size_t layerOfLargest = 0;
     std::size_t recordOfLargest = 0;
@@ -178,7 +197,9 @@ Status checkOrientationInChannel(const scheduling::ScheduleResult& schedule,
             at(file, pass[recordOfLargest].line) + "), more than the " +
             degrees(options.channelToleranceRad, 1) +
             " allowed; the first such record is here. A four-axis blade program with a fixed lead "
-            "lies inside its channel: check the machine file (--machine: rotary axis, B head, "
+            "lies inside its channel: check the machine file (--machine: rotary axis, " +
+            std::string(1, letters.tilt) +
+            " head, "
             "sign conventions) and that the tool axis points away from the blade. Nothing was "
             "written; --channel-tolerance-deg accepts a larger distance",
         {file, pass[firstOffending].line, 0});

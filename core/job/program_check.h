@@ -34,6 +34,15 @@ struct ProgramCheckOptions {
     double channelToleranceRad = units::degToRad(30.0);
 };
 
+// The program's words of the rotary table and of the head's tilt, for the messages: A and B on
+// a table-A machine, B and A on a table-B one (MachineModel::letter), whose head's A tilts the
+// other way (tiltSign -1: the program's value of a tilt is tiltSign times the engine's).
+struct RotaryLetters {
+    char table = 'A';
+    char tilt = 'B';
+    double tiltSign = 1.0;
+};
+
 struct TiltCheck {
     double medianRad = 0.0;         // the tilt the pass is re-scheduled with
     double largestDeviationRad = 0; // max |B - median| over the pass
@@ -46,7 +55,8 @@ double tiltOf(const Vec3& axis);
 // Refuses (ErrorCode::Geometry) a pass whose B deviates from its median by more than the
 // tolerance, naming the first such record. Does not change the records.
 Result<TiltCheck> checkConstantTilt(std::span<const toolpath::ClRecord> pass,
-                                    const std::string& file, const ProgramCheckOptions& options);
+                                    const std::string& file, const ProgramCheckOptions& options,
+                                    RotaryLetters letters);
 
 // Tilt deviations up to this are the rounding of the file's numbers (a unit vector written at six
 // decimals), not noise worth a warning, rad.
@@ -59,7 +69,7 @@ inline constexpr double kReportedTiltDeviationRad = 1e-5;
 std::size_t snapTilt(std::span<toolpath::ClRecord> pass, double tiltRad, double toolRadius);
 
 // The warning that reports a snap, in degrees; empty when nothing was snapped.
-std::string describeSnap(const TiltCheck& tilt, const std::string& file);
+std::string describeSnap(const TiltCheck& tilt, const std::string& file, RotaryLetters letters);
 
 // The smallest turn of the ball centres about the rotary axis over the cutting pass that makes
 // it a helical pass, rad. A helical blade pass turns a whole revolution per layer; rotary words
@@ -70,12 +80,12 @@ inline constexpr double kMinimumHelicalTurnRad = units::kPi;
 // Refuses (ErrorCode::Geometry) a pass whose ball centres turn less than kMinimumHelicalTurnRad
 // about the rotary axis (x), naming its first and last record.
 Status checkHelical(std::span<const toolpath::ClRecord> pass, double toolRadius,
-                    const std::string& file);
+                    const std::string& file, RotaryLetters letters);
 
 // Refuses (ErrorCode::Geometry) a schedule whose CAM orientation (the input's theta) lies more
 // than the tolerance outside the raw channel of its layer, naming the first such record.
 Status checkOrientationInChannel(const scheduling::ScheduleResult& schedule,
                                  std::span<const toolpath::ClRecord> pass, const std::string& file,
-                                 const ProgramCheckOptions& options);
+                                 const ProgramCheckOptions& options, RotaryLetters letters);
 
 } // namespace bladeaxis::job

@@ -129,21 +129,20 @@ Result<AxisLimits> MachineReader::axis(const Json& axes, char letter, bool rotar
     return limits;
 }
 
-struct LayoutName {
-    const char* type;
+struct LayoutDescription {
     Layout layout;
     const char* description;
 };
-constexpr std::array<LayoutName, 4> kLayouts{{
-    {"table_a_head_b", Layout::TableAHeadB, "rotary table A about X, head B about Y"},
-    {"table_a", Layout::TableA, "rotary table A about X, fixed head"},
-    {"table_b_head_a", Layout::TableBHeadA, "rotary table B about Y, head A about X"},
-    {"table_b", Layout::TableB, "rotary table B about Y, fixed head"},
+constexpr std::array<LayoutDescription, 4> kLayouts{{
+    {Layout::TableAHeadB, "rotary table A about X, head B about Y"},
+    {Layout::TableA, "rotary table A about X, fixed head"},
+    {Layout::TableBHeadA, "rotary table B about Y, head A about X"},
+    {Layout::TableB, "rotary table B about Y, fixed head"},
 }};
 
 std::optional<Layout> layoutNamed(std::string_view type) {
-    for (const LayoutName& entry : kLayouts) {
-        if (type == entry.type) {
+    for (const LayoutDescription& entry : kLayouts) {
+        if (type == layoutName(entry.layout)) {
             return entry.layout;
         }
     }
@@ -152,8 +151,8 @@ std::optional<Layout> layoutNamed(std::string_view type) {
 
 std::string layoutChoices() {
     std::string text;
-    for (const LayoutName& entry : kLayouts) {
-        text += (text.empty() ? "" : ", ") + std::string("\"") + entry.type + "\" (" +
+    for (const LayoutDescription& entry : kLayouts) {
+        text += (text.empty() ? "" : ", ") + std::string("\"") + layoutName(entry.layout) + "\" (" +
                 entry.description + ")";
     }
     return text;

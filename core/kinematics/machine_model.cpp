@@ -41,6 +41,20 @@ double& MachineAxes::operator[](AxisId axis) {
     return x;
 }
 
+const char* layoutName(Layout layout) {
+    switch (layout) {
+    case Layout::TableAHeadB:
+        return "table_a_head_b";
+    case Layout::TableA:
+        return "table_a";
+    case Layout::TableBHeadA:
+        return "table_b_head_a";
+    case Layout::TableB:
+        return "table_b";
+    }
+    return "table_a_head_b";
+}
+
 ProgramWord MachineModel::programWord(AxisId axis) const {
     const auto role = static_cast<std::size_t>(axis);
     if (!turnsAboutY()) {

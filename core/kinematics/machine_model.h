@@ -98,6 +98,9 @@ enum class Layout {
     TableB,      // table B about Y, fixed head ("table_b")
 };
 
+// The machine file's "type" of a layout ("table_b_head_a").
+const char* layoutName(Layout layout);
+
 // The program's word for an axis of the engine's chain: its index in X Y Z A B order and the
 // sign from the program's value to the engine's.
 struct ProgramWord {

@@ -33,6 +33,44 @@ const char* accelerationUnit(AxisId axis) {
     return axis == AxisId::A ? "deg/s^2" : "mm/s^2";
 }
 
+// The program's letter of an axis role: what a reader of the table and the plots sees.
+std::string letterOf(const compare::Comparison& comparison, AxisId axis) {
+    return std::string(1, comparison.letters[static_cast<std::size_t>(axis)]);
+}
+
+// The role whose program letter is `letter` (the linear axes trade places on a table-B machine).
+AxisId roleOfLetter(const compare::Comparison& comparison, char letter) {
+    for (AxisId axis : kinematics::kAllAxes) {
+        if (comparison.letters[static_cast<std::size_t>(axis)] == letter) {
+            return axis;
+        }
+    }
+    return AxisId::X;
+}
+
+// The linear axes in the program's X Y Z order.
+std::array<AxisId, 3> linearAxesInProgramOrder(const compare::Comparison& comparison) {
+    return {roleOfLetter(comparison, 'X'), roleOfLetter(comparison, 'Y'),
+            roleOfLetter(comparison, 'Z')};
+}
+
+// The columns of the printed table: the linear axes in the program's order, then the table.
+std::array<AxisId, 4> printedAxes(const compare::Comparison& comparison) {
+    const auto linear = linearAxesInProgramOrder(comparison);
+    return {linear[0], linear[1], linear[2], AxisId::A};
+}
+
+// A metric named by role ("A peak acceleration") as a reader names it ("B peak acceleration"
+// on a table-B machine); the role name stays the metric's identifier in code and compare.json.
+std::string displayMetric(const compare::Comparison& comparison, const std::string& metric) {
+    for (AxisId axis : kinematics::kAllAxes) {
+        if (metric.starts_with(std::string(kinematics::axisName(axis)) + " ")) {
+            return letterOf(comparison, axis) + metric.substr(1);
+        }
+    }
+    return metric;
+}
+
 // The quaternion baseline is the paper's reference for Table 2; without it, the original is.
 const MethodResult& tableReference(const compare::Comparison& comparison) {
     const MethodResult* quaternion = comparison.find("quaternion");
@@ -134,9 +172,11 @@ std::pair<double, std::string> fairnessDisplayValue(const compare::FairnessEntry
 }
 
 // A fairness entry in display units: "A peak velocity: <setting> (203.45 deg/s)".
-std::string describeFairness(const compare::FairnessEntry& entry) {
+std::string describeFairness(const compare::Comparison& comparison,
+                             const compare::FairnessEntry& entry) {
     const auto [value, unit] = fairnessDisplayValue(entry);
-    return entry.metric + ": " + entry.setting + " (" + formatShortest(value) + " " + unit + ")";
+    return displayMetric(comparison, entry.metric) + ": " + entry.setting + " (" +
+           formatShortest(value) + " " + unit + ")";
 }
 
 // Which quaternion setting a reduction of `metric` is measured against (fairness rule).
@@ -144,7 +184,7 @@ std::string fairnessNote(const compare::Comparison& comparison, std::string_view
     for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
         if (entry.metric == metric) {
             return "against the best quaternion setting for this metric: " +
-                   describeFairness(entry);
+                   describeFairness(comparison, entry);
         }
     }
     return {};
@@ -153,10 +193,11 @@ std::string fairnessNote(const compare::Comparison& comparison, std::string_view
 std::string methodNote(const compare::Comparison& comparison, const MethodResult& method) {
     std::string note = "setting: " + method.setting;
     if (method.method == "quaternion" && !comparison.quaternionFairness.empty()) {
-        note += " (the setting with the lowest A peak acceleration)\nbest quaternion setting "
-                "per metric (fairness rule, spec 7.2):";
+        note += " (the setting with the lowest " + letterOf(comparison, AxisId::A) +
+                " peak acceleration)\nbest quaternion setting per metric (fairness rule, spec "
+                "7.2):";
         for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
-            note += "\n  " + describeFairness(entry);
+            note += "\n  " + describeFairness(comparison, entry);
         }
     }
     return note;
@@ -182,19 +223,20 @@ struct ColumnDefinition {
 };
 
 void addPeakColumns(const compare::Comparison& comparison, std::vector<ColumnDefinition>& columns) {
-    for (AxisId axis : kTableAxes) {
-        const std::string name = kinematics::axisName(axis);
+    for (AxisId axis : printedAxes(comparison)) {
+        const std::string name = kinematics::axisName(axis); // the key and the metric: the role
+        const std::string shown = letterOf(comparison, axis);
         columns.push_back(
-            {{name + "_peak_velocity", name + " peak vel. (" + velocityUnit(axis) + ")",
-              name + " peak velocity at the programmed feed", Better::Lower},
+            {{name + "_peak_velocity", shown + " peak vel. (" + velocityUnit(axis) + ")",
+              shown + " peak velocity at the programmed feed", Better::Lower},
              [&comparison, axis, name](const MethodResult& method) {
                  const double peak = method.profile.axis(axis).peakVelocity;
                  return numberCell(display(axis, peak), formatFixed(display(axis, peak), 2),
                                    peakNote(comparison, name + " peak velocity", peak));
              }});
         columns.push_back(
-            {{name + "_peak_acceleration", name + " peak acc. (" + accelerationUnit(axis) + ")",
-              name + " peak acceleration at the programmed feed", Better::Lower},
+            {{name + "_peak_acceleration", shown + " peak acc. (" + accelerationUnit(axis) + ")",
+              shown + " peak acceleration at the programmed feed", Better::Lower},
              [&comparison, axis, name](const MethodResult& method) {
                  const double peak = method.profile.axis(axis).peakAcceleration;
                  return numberCell(display(axis, peak), formatFixed(display(axis, peak), 1),
@@ -208,14 +250,15 @@ void addReductionColumns(const compare::Comparison& comparison,
     const MethodResult& reference = tableReference(comparison);
     const MethodResult& original = comparison.methods.front();
     const std::string against = reference.method;
-    for (AxisId axis : kTableAxes) {
-        const std::string name = kinematics::axisName(axis);
+    for (AxisId axis : printedAxes(comparison)) {
+        const std::string name = kinematics::axisName(axis); // the key and the metric: the role
+        const std::string shown = letterOf(comparison, axis);
         for (const auto& [quantity, shortName] :
              {std::pair<std::string, std::string>{"velocity", "vel."}, {"acceleration", "acc."}}) {
             const std::string metric = name + " peak " + quantity;
             columns.push_back(
                 {{name + "_" + quantity + "_reduction_vs_reference",
-                  name + " " + shortName + " reduction vs " + against,
+                  shown + " " + shortName + " reduction vs " + against,
                   "(reference - method) / reference; the quaternion reference is its best "
                   "setting for this metric",
                   Better::Higher},
@@ -229,7 +272,7 @@ void addReductionColumns(const compare::Comparison& comparison,
                 continue; // the reference already is the original
             }
             columns.push_back({{name + "_" + quantity + "_reduction_vs_original",
-                                name + " " + shortName + " reduction vs original",
+                                shown + " " + shortName + " reduction vs original",
                                 "(original - method) / original", Better::Higher},
                                [&original, metric](const MethodResult& method) {
                                    const double value =
@@ -243,12 +286,13 @@ void addReductionColumns(const compare::Comparison& comparison,
 
 void addTimeColumns(const compare::Comparison& comparison, std::vector<ColumnDefinition>& columns) {
     const MethodResult& original = comparison.methods.front();
-    columns.push_back(
-        {{"a_reversals", "A reversals", "sign changes of the A velocity", Better::Lower},
-         [](const MethodResult& method) {
-             const std::size_t count = method.profile.aReversals.count;
-             return numberCell(static_cast<double>(count), std::to_string(count));
-         }});
+    const std::string table = letterOf(comparison, AxisId::A);
+    columns.push_back({{"a_reversals", table + " reversals",
+                        "sign changes of the " + table + " velocity", Better::Lower},
+                       [](const MethodResult& method) {
+                           const std::size_t count = method.profile.aReversals.count;
+                           return numberCell(static_cast<double>(count), std::to_string(count));
+                       }});
     columns.push_back(
         {{"t1_s", "T1 (s)", "constant-feed machining time under the machine limits", Better::Lower},
          [](const MethodResult& method) {
@@ -365,7 +409,7 @@ PrintedTable printedTable(const CompareTable& table) {
 Plot axisPlot(const compare::Comparison& comparison, AxisId axis, int derivative) {
     static constexpr std::array<const char*, 3> kNames{"position", "velocity", "acceleration"};
     Plot plot;
-    plot.title = std::string(kinematics::axisName(axis)) + " " + kNames[derivative];
+    plot.title = letterOf(comparison, axis) + " " + kNames[derivative];
     plot.xLabel = "time at the programmed feed (s)";
     const bool rotary = axis == AxisId::A;
     const std::array<std::string, 3> units{rotary ? "deg" : "mm", velocityUnit(axis),
@@ -594,15 +638,19 @@ std::string compareCsv(const compare::Comparison& comparison) {
 std::string compareHtml(const compare::Comparison& comparison, const std::string& title) {
     HtmlPage page("BladeAxis comparison: " + title);
     const MethodResult& original = comparison.methods.front();
+    const std::string table = letterOf(comparison, AxisId::A);
     page.paragraph("Every method keeps the same ball centres and is evaluated by the same "
-                   "pipeline: inverse kinematics with A continuous, cubic-spline derivatives at "
+                   "pipeline: inverse kinematics with " +
+                   table +
+                   " continuous, cubic-spline derivatives at "
                    "the programmed feed of " +
                    formatFixed(units::perSecondToPerMinute(original.profile.feed), 0) +
                    " mm/min, T1 by constant-feed scaling to the machine limits. Reductions are "
                    "(reference - method) / reference.");
     page.heading("Peaks, reversals and machining time");
     if (!comparison.quaternionFairness.empty()) {
-        page.paragraph("The quaternion row is its setting with the lowest peak A acceleration; "
+        page.paragraph("The quaternion row is its setting with the lowest peak " + table +
+                       " acceleration; "
                        "every reduction against the quaternion baseline uses its best setting "
                        "for that metric (fairness rule, spec 7.2), listed below the table.");
     }
@@ -619,17 +667,19 @@ std::string compareHtml(const compare::Comparison& comparison, const std::string
         std::vector<std::vector<std::string>> fairness;
         for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
             const auto [value, unit] = fairnessDisplayValue(entry);
-            fairness.push_back({entry.metric, entry.setting, formatShortest(value) + " " + unit});
+            fairness.push_back({displayMetric(comparison, entry.metric), entry.setting,
+                                formatShortest(value) + " " + unit});
         }
         page.table({"metric", "best quaternion setting", "value"}, fairness);
     }
     if (!original.sweep.empty()) {
         page.heading("Machining time against the rotary-axis limits");
-        page.paragraph("The A-axis velocity, acceleration and jerk limits of the machine file "
+        page.paragraph("The " + table +
+                       "-axis velocity, acceleration and jerk limits of the machine file "
                        "scaled by the factor; the linear axes unchanged.");
         page.table(sweepHeader(original), sweepRows(comparison));
     }
-    page.heading("A axis against time");
+    page.heading(table + " axis against time");
     for (int derivative = 0; derivative < 3; ++derivative) {
         page.figure(axisPlot(comparison, AxisId::A, derivative));
     }
@@ -646,7 +696,7 @@ std::string compareHtml(const compare::Comparison& comparison, const std::string
         page.figure(channelPlot(comparison, layer), caption + ".");
     }
     page.heading("Linear axes");
-    for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z}) {
+    for (AxisId axis : linearAxesInProgramOrder(comparison)) {
         page.figure(axisPlot(comparison, axis, 1));
     }
     return page.str();

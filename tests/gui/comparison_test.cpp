@@ -268,6 +268,23 @@ class ComparisonTest final : public QObject {
                  qPrintable(QToolTip::text()));
     }
 
+    // On a table-B machine the titles and the log switch name the table B, the head A and the
+    // linear axes as the program does; the default is the roles' own letters.
+    void plotsNameTheAxesByTheProgramsLetters() {
+        ProfilePlots plots;
+        QCOMPARE(plots.quantityTitle(ProfilePlots::AVelocity),
+                 QStringLiteral("A velocity [deg/s]"));
+        auto* box = plots.findChild<QCheckBox*>(QStringLiteral("accelerationLogScale"));
+        QVERIFY(box != nullptr);
+        QCOMPARE(box->text(), QStringLiteral("log |A acc.|"));
+        plots.setAxisLetters({'Y', 'X', 'Z', 'B', 'A'}); // role X Y Z A B -> program letter
+        QCOMPARE(plots.quantityTitle(ProfilePlots::APosition), QStringLiteral("B position [deg]"));
+        QCOMPARE(plots.quantityTitle(ProfilePlots::XVelocity), QStringLiteral("Y velocity [mm/s]"));
+        QCOMPARE(plots.logAccelerationTitle(),
+                 QStringLiteral("|B acceleration| [deg/s²], log scale"));
+        QCOMPARE(box->text(), QStringLiteral("log |B acc.|"));
+    }
+
     void plotsFitANarrowWindow() {
         ProfilePlots plots;
         plots.setComparison(comparison());

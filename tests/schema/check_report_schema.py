@@ -123,6 +123,10 @@ def fresh_jobs(source_dir, folder):
         ("apt", ["--batch", str(data / "programs" / "turbine_2rev.cls")], "dir"),
         ("table", ["--batch", str(data / "awkward" / "points_with_feed.csv"),
                    "--tool-radius", "8"], "dir"),
+        # A table-B machine: the report adds axis_letters and machine_layout.
+        ("demo_table_b", ["--batch", "--demo", "--machine",
+                          str(source_dir / "resources" / "machines" / "table_b_head_a.json")],
+         "dir"),
     ]
 
 

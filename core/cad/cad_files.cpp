@@ -322,6 +322,17 @@ Status writeCadFile(const CadShape& shape, const fs::path& path, CadFormat forma
     return makeError(ErrorCode::WriteFailed, "cannot move the written model into place", where);
 }
 
+Result<CadShape> placedShape(const CadShape& shape, const Placement& placement) {
+    if (shape.isNull()) {
+        return makeError(ErrorCode::InvalidArgument, "nothing to place: the shape is empty");
+    }
+    if (Status ok = checkPlacement(placement); !ok) {
+        return std::unexpected(ok.error());
+    }
+    return catchOcct(ErrorCode::Geometry, "placing a shape",
+                     [&]() -> Result<CadShape> { return placeShape(occtShape(shape), placement); });
+}
+
 Placement toPlacement(const AxisRotationPlacement& placement) {
     const Vec3& angles = placement.rotationXyz;
     return {rotationZ(angles.z()) * rotationY(angles.y()) * rotationX(angles.x()),

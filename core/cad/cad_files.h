@@ -43,6 +43,10 @@ struct AxisRotationPlacement {
 
 Placement toPlacement(const AxisRotationPlacement& placement);
 
+// The shape moved rigidly: p' = rotation * p + translation. Errors: InvalidArgument (an empty
+// shape, or a placement that is not a rotation), Geometry (OpenCASCADE failed).
+Result<CadShape> placedShape(const CadShape& shape, const Placement& placement);
+
 // Errors: InvalidArgument (null or face-less shape), WriteFailed.
 Status writeCadFile(const CadShape& shape, const std::filesystem::path& path, CadFormat format,
                     LengthUnit unit = LengthUnit::Millimetre);

@@ -170,10 +170,7 @@ Status analyse(JobResult& result, const JobSpec& spec) {
 // Y the engine's frame is that one turned a quarter turn about Z (MachineModel::toEngineFrame).
 cad::Placement placementInEngineFrame(const cad::Placement& placement,
                                       const kinematics::MachineModel& machine) {
-    Mat3 toEngine;
-    for (int column = 0; column < 3; ++column) {
-        toEngine.col(column) = machine.toEngineFrame(Mat3::Identity().col(column));
-    }
+    const Mat3 toEngine = machine.engineFrameRotation();
     return {toEngine * placement.rotation, toEngine * placement.translation};
 }
 

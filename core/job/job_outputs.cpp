@@ -333,8 +333,17 @@ Status writeDemoCad(const JobSpec& spec, const JobResult& result) {
     if (!spec.demo || !result.cadCheck) {
         return {};
     }
-    return cad::writeCadFile(result.cadCheck->blade, spec.outputDir / "demo_blade.step",
-                             cad::CadFormat::Step);
+    // Written in the program's workpiece frame, where a CAD file given with the program is read.
+    cad::CadShape blade = result.cadCheck->blade;
+    if (result.machine.turnsAboutY()) {
+        const Mat3 toProgram = result.machine.engineFrameRotation().transpose();
+        auto placed = cad::placedShape(blade, {toProgram, Vec3::Zero()});
+        if (!placed) {
+            return std::unexpected(placed.error());
+        }
+        blade = std::move(*placed);
+    }
+    return cad::writeCadFile(blade, spec.outputDir / "demo_blade.step", cad::CadFormat::Step);
 }
 
 Status createOutputFolder(const JobSpec& spec) {

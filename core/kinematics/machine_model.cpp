@@ -98,6 +98,14 @@ Vec3 MachineModel::toEngineFrame(const Vec3& v) const {
     return turnsAboutY() ? Vec3(v.y(), -v.x(), v.z()) : v;
 }
 
+Mat3 MachineModel::engineFrameRotation() const {
+    Mat3 rotation;
+    for (int column = 0; column < 3; ++column) {
+        rotation.col(column) = toEngineFrame(Mat3::Identity().col(column));
+    }
+    return rotation;
+}
+
 Vec3 MachineModel::toProgramFrame(const Vec3& v) const {
     return turnsAboutY() ? Vec3(-v.y(), v.x(), v.z()) : v;
 }

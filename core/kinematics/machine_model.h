@@ -138,6 +138,8 @@ struct MachineModel {
     // axis along X for table A, along Y for table B) in the engine's frame, and back.
     Vec3 toEngineFrame(const Vec3& v) const;
     Vec3 toProgramFrame(const Vec3& v) const;
+    // The rotation of toEngineFrame, for rigid placements (a CAD model); its transpose turns back.
+    Mat3 engineFrameRotation() const;
     bool turnsAboutY() const { return layout == Layout::TableBHeadA || layout == Layout::TableB; }
     // false for a fixed head (machine file types "table_a", "table_b"): the tilt is 0, a program
     // that tilts it is refused, and the tilt's limits are placeholders that never bind.

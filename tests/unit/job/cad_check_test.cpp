@@ -191,6 +191,33 @@ TEST(CadCheck, CadNotSpanningTheProgramIsAGeometryError) {
     fs::remove_all(demo.outputDir);
 }
 
+// On a table-B machine the blade lies along the program's Y: the demo writes its blade there,
+// and a CAD file read with the program is turned into the engine's frame, so the blade the demo
+// wrote fits its program again (turned wrongly, it would lie across the path, 20 mm away).
+TEST(CadCheck, ATableBMachinesBladeIsWrittenAndReadInTheProgramsFrame) {
+    const fs::path machine =
+        fs::path(BLADEAXIS_SOURCE_DIR) / "resources/machines/table_b_head_a.json";
+    JobSpec demo = test::demoJob("bladeaxis_cad_check_table_b");
+    demo.machineFile = machine;
+    auto written = test::runQuietly(demo);
+    ASSERT_TRUE(written.has_value()) << written.error().toString();
+    ASSERT_TRUE(writeJobOutputs(demo, *written));
+    auto step = cad::readCadFile(demo.outputDir / "demo_blade.step");
+    ASSERT_TRUE(step.has_value()) << step.error().toString();
+    const cad::BoundingBox box = step->bounds();
+    EXPECT_GT(box.max.y() - box.min.y(), 19.0); // the 20 mm span along Y
+    JobSpec spec;
+    spec.demo = true;
+    spec.machineFile = machine;
+    spec.cad.file = demo.outputDir / "demo_blade.step";
+    auto result = test::runQuietly(spec);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    ASSERT_TRUE(result->cadCheck && result->cadCheck->rescheduled);
+    EXPECT_TRUE(result->cadCheck->original.issues.empty());
+    EXPECT_TRUE(result->cadCheck->rescheduled->issues.empty());
+    fs::remove_all(demo.outputDir);
+}
+
 // The clearance per layer reaches report.json (each layer's minima over its CL points), each
 // CL point's clearance layers.csv, and a one-line summary the batch output.
 TEST(CadCheck, DemoOutputsCarryTheClearancePerLayerAndPerPoint) {

@@ -87,6 +87,25 @@ std::size_t forEachUntilFirstFailure(std::size_t count, unsigned threads, Step&&
     return *std::min_element(firstFailure.begin(), firstFailure.end());
 }
 
+// Runs first() and second(), two independent pieces of serial work, at once on two threads when
+// `threads` allows two (0 = all), otherwise one after the other on the calling thread. An
+// exception in either is rethrown once both have ended, as in forEachRangeOf.
+template <class First, class Second>
+void runBoth(unsigned threads, First&& first, Second&& second) {
+    if (resolveThreadCount(threads) < 2) {
+        first();
+        second();
+        return;
+    }
+    forEachRangeOf(2, 2, [&](std::size_t range, std::size_t, std::size_t) {
+        if (range == 0) {
+            first();
+        } else {
+            second();
+        }
+    });
+}
+
 // Calls body(i) for every i in [0, count), items handed out one at a time to up to `threads`
 // threads (0 = all): for few items of uneven cost, such as the layers of a toolpath. `weight`
 // is the total work in points; below kMinParallelRange points all of it runs serially.

@@ -1,5 +1,6 @@
 #include "core/scheduling/channel.h"
 
+#include "core/base/parallel.h"
 #include "core/base/units.h"
 #include "core/geometry/angles.h"
 
@@ -10,17 +11,19 @@
 namespace bladeaxis::scheduling {
 
 RawChannel buildRawChannel(const TangentField& tangents, std::span<const ConcaveRun> runs,
-                           double inwardRad) {
+                           double inwardRad, unsigned threads) {
     const std::size_t n = tangents.forwardAngle.size();
     RawChannel channel;
     channel.thetaMax.resize(n);
     channel.thetaMin.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        // E12: forward limit along e+, backward limit along -e-; width pi + tau - 2 inward.
-        channel.thetaMax[i] = tangents.forwardAngle[i] - inwardRad;
-        channel.thetaMin[i] =
-            channel.thetaMax[i] - units::kPi - tangents.turning[i] + 2.0 * inwardRad;
-    }
+    forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            // E12: forward limit along e+, backward limit along -e-; width pi + tau - 2 inward.
+            channel.thetaMax[i] = tangents.forwardAngle[i] - inwardRad;
+            channel.thetaMin[i] =
+                channel.thetaMax[i] - units::kPi - tangents.turning[i] + 2.0 * inwardRad;
+        }
+    });
     for (const ConcaveRun& run : runs) {
         // [A] A run without an exit (it reaches the path end) keeps its last sample's limit.
         // Both limits are read before the run is overwritten; an exit is never inside a run,
@@ -72,8 +75,8 @@ double median7(std::span<const double> values, std::size_t centre) {
     return window[3];
 }
 
-std::size_t despikeOne(std::vector<double>& values, bool downward) {
-    const std::vector<double> original = values;
+std::size_t despikeOne(DefaultInitVector<double>& values, bool downward) {
+    const DefaultInitVector<double> original = values;
     std::size_t changed = 0;
     for (std::size_t i = 3; i + 3 < original.size(); ++i) {
         const double median = median7(original, i);
@@ -128,6 +131,60 @@ MonotoneHull monotoneHull(std::span<const double> thetaMin, std::span<const doub
     hull.hi[n - 1] = thetaMax[n - 1] - hull.marginHi[n - 1];
     for (std::size_t i = n - 1; i-- > 0;) {
         hull.hi[i] = std::min(hull.hi[i + 1], thetaMax[i] - hull.marginHi[i]);
+    }
+    hull.minWidth = hull.hi[0] - hull.lo[0];
+    for (std::size_t i = 0; i < n; ++i) {
+        hull.minWidth = std::min(hull.minWidth, hull.hi[i] - hull.lo[i]);
+    }
+    return hull;
+}
+
+namespace {
+
+// HULL0's upper side, HI0_i = min over l >= i of thetaMax_l, written into `hi`.
+void upperHull(std::span<const double> thetaMax, std::vector<double>& hi) {
+    const std::size_t n = thetaMax.size();
+    hi[n - 1] = thetaMax[n - 1];
+    for (std::size_t i = n - 1; i-- > 0;) {
+        hi[i] = std::min(hi[i + 1], thetaMax[i]);
+    }
+}
+
+// One forward pass: LO0 as a running value, the margins of §2.5, LO, and HI's per-sample
+// candidates thetaMax_i - marginHi_i in place of HI0 (read just before).
+void marginsAndLower(std::span<const double> thetaMin, std::span<const double> thetaMax,
+                     double margin, MonotoneHull& hull) {
+    double lo0 = thetaMin[0];
+    for (std::size_t i = 0; i < thetaMin.size(); ++i) {
+        lo0 = i == 0 ? lo0 : std::max(lo0, thetaMin[i]);
+        const double hi0 = hull.hi[i];
+        hull.infeasible = hull.infeasible || lo0 > hi0;
+        const double marginLo = std::clamp(0.5 * (hi0 - thetaMin[i]), 0.0, margin);
+        const double marginHi = std::clamp(0.5 * (thetaMax[i] - lo0), 0.0, margin);
+        hull.pinched = hull.pinched || marginLo < margin || marginHi < margin;
+        const double lower = thetaMin[i] + marginLo;
+        hull.lo[i] = i == 0 ? lower : std::max(hull.lo[i - 1], lower);
+        hull.hi[i] = thetaMax[i] - marginHi;
+    }
+}
+
+} // namespace
+
+MonotoneHull monotoneBounds(std::span<const double> thetaMin, std::span<const double> thetaMax,
+                            double margin) {
+    const std::size_t n = std::min(thetaMin.size(), thetaMax.size());
+    MonotoneHull hull;
+    if (n == 0) {
+        return hull;
+    }
+    thetaMin = thetaMin.first(n);
+    thetaMax = thetaMax.first(n);
+    hull.lo.resize(n);
+    hull.hi.resize(n);
+    upperHull(thetaMax, hull.hi);
+    marginsAndLower(thetaMin, thetaMax, margin, hull);
+    for (std::size_t i = n - 1; i-- > 0;) {
+        hull.hi[i] = std::min(hull.hi[i + 1], hull.hi[i]);
     }
     hull.minWidth = hull.hi[0] - hull.lo[0];
     for (std::size_t i = 0; i < n; ++i) {

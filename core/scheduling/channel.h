@@ -3,6 +3,7 @@
 // whole path), the concave-run rule, taper/safety angles, optional global visibility and
 // despiking, and the lossless monotone hull with margin and local pinch relief (§2.5).
 
+#include "core/base/default_init.h"
 #include "core/geometry/vec.h"
 #include "core/scheduling/curvature_states.h"
 #include "core/scheduling/tangents.h"
@@ -13,14 +14,15 @@
 namespace bladeaxis::scheduling {
 
 struct RawChannel {
-    std::vector<double> thetaMin; // absolute backward limit, rad
-    std::vector<double> thetaMax; // absolute forward limit, rad
+    DefaultInitVector<double> thetaMin; // absolute backward limit, rad
+    DefaultInitVector<double> thetaMax; // absolute forward limit, rad
 };
 
 // §2.1 convex formula everywhere, then §2.2 for every sample of a concave run:
 // thetaMax = thetaMax(exit), thetaMin = thetaMin(entry). `inwardRad` = taper + safety angle.
+// The per-sample limits are computed on up to `threads` threads (0 = all).
 RawChannel buildRawChannel(const TangentField& tangents, std::span<const ConcaveRun> runs,
-                           double inwardRad);
+                           double inwardRad, unsigned threads = 1);
 
 // §2.4 [X] global visibility: clip thetaMax_i by the directions to the next `reach` points
 // and thetaMin_i by the directions to the previous ones (each relative to the local limit).
@@ -49,5 +51,10 @@ struct MonotoneHull {
 // would pinch, the margin is reduced locally so that every pair k <= l stays compatible.
 MonotoneHull monotoneHull(std::span<const double> thetaMin, std::span<const double> thetaMax,
                           double margin);
+
+// monotoneHull's LO, HI, flags and minWidth (the same bits) without HULL0 and the margins
+// (left empty): three passes and two arrays instead of six, for the layers of large paths.
+MonotoneHull monotoneBounds(std::span<const double> thetaMin, std::span<const double> thetaMax,
+                            double margin);
 
 } // namespace bladeaxis::scheduling

@@ -1,5 +1,7 @@
 #include "core/scheduling/curvature_states.h"
 
+#include "core/base/parallel.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,40 +9,66 @@ namespace bladeaxis::scheduling {
 
 namespace {
 
-// kappa-bar_i: arc-length weighted mean of the per-sample curvature over |S_k - S_i| <= w/2
-// (two pointers over prefix sums, O(n)).
-std::vector<double> smoothCurvature(std::span<const double> s, std::span<const double> kappa,
-                                    double window) {
+// Prefix sums of the arc-length weights and of the weighted curvature, in order (a sum in
+// another order would round differently).
+struct WeightPrefix {
+    DefaultInitVector<double> weighted, weight; // n + 1 each, [0] = 0
+};
+
+WeightPrefix weightPrefix(std::span<const double> s, std::span<const double> kappa) {
     const std::size_t n = s.size();
-    std::vector<double> weightedPrefix(n + 1, 0.0);
-    std::vector<double> weightPrefix(n + 1, 0.0);
+    WeightPrefix prefix;
+    prefix.weighted.resize(n + 1);
+    prefix.weight.resize(n + 1);
+    prefix.weighted[0] = 0.0;
+    prefix.weight[0] = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
         const double left = k > 0 ? s[k] - s[k - 1] : 0.0;
         const double right = k + 1 < n ? s[k + 1] - s[k] : 0.0;
         const double weight = std::max(0.5 * (left + right), 1e-12);
-        weightedPrefix[k + 1] = weightedPrefix[k] + kappa[k] * weight;
-        weightPrefix[k + 1] = weightPrefix[k] + weight;
+        prefix.weighted[k + 1] = prefix.weighted[k] + kappa[k] * weight;
+        prefix.weight[k + 1] = prefix.weight[k] + weight;
     }
-    std::vector<double> smoothed(n);
-    std::size_t low = 0;
-    std::size_t high = 0; // window = [low, high)
-    for (std::size_t i = 0; i < n; ++i) {
-        while (s[i] - s[low] > 0.5 * window) {
-            ++low;
+    return prefix;
+}
+
+// kappa-bar_i: arc-length weighted mean of the per-sample curvature over |S_k - S_i| <= w/2
+// (two pointers over prefix sums, O(n)). The window of sample i is [low(i), high(i)), low the
+// first sample within w/2 before i and high the first beyond w/2 after it; both only grow with
+// i, so a range of samples finds its first window by binary search and walks from there, as
+// the serial walk from sample 0 would.
+DefaultInitVector<double> smoothCurvature(std::span<const double> s, std::span<const double> kappa,
+                                          double window, unsigned threads) {
+    const std::size_t n = s.size();
+    const WeightPrefix prefix = weightPrefix(s, kappa);
+    DefaultInitVector<double> smoothed(n);
+    const double half = 0.5 * window;
+    forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
+        const auto indexOf = [&s](auto it) { return static_cast<std::size_t>(it - s.begin()); };
+        std::size_t low =
+            indexOf(std::partition_point(s.begin(), s.begin() + static_cast<long>(begin),
+                                         [&](double sl) { return s[begin] - sl > half; }));
+        std::size_t high = indexOf(std::partition_point(
+            s.begin(), s.end(), [&](double sh) { return sh - s[begin] <= half; }));
+        for (std::size_t i = begin; i < end; ++i) {
+            while (s[i] - s[low] > half) {
+                ++low;
+            }
+            while (high < n && s[high] - s[i] <= half) {
+                ++high;
+            }
+            smoothed[i] = (prefix.weighted[high] - prefix.weighted[low]) /
+                          (prefix.weight[high] - prefix.weight[low]);
         }
-        while (high < n && s[high] - s[i] <= 0.5 * window) {
-            ++high;
-        }
-        smoothed[i] =
-            (weightedPrefix[high] - weightedPrefix[low]) / (weightPrefix[high] - weightPrefix[low]);
-    }
+    });
     return smoothed;
 }
 
 // Hysteresis: switch only beyond +-kappa_h. [A] Before the first decisive sample the state is
 // back-filled with the first decided state (the paper does not say where the path starts).
-std::vector<CurvatureState> hysteresisStates(std::span<const double> smoothed, double threshold) {
-    std::vector<CurvatureState> states(smoothed.size(), CurvatureState::Convex);
+DefaultInitVector<CurvatureState> hysteresisStates(std::span<const double> smoothed,
+                                                   double threshold) {
+    DefaultInitVector<CurvatureState> states(smoothed.size()); // every sample is written below
     bool decided = false;
     CurvatureState current = CurvatureState::Convex;
     std::size_t undecided = 0;
@@ -112,12 +140,12 @@ std::vector<ConcaveRun> mergeAndDrop(std::vector<ConcaveRun> runs, std::span<con
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    std::span<const double> curvature,
                                    std::span<const double> turning,
-                                   const CurvatureSettings& settings) {
+                                   const CurvatureSettings& settings, unsigned threads) {
     CurvatureAnalysis analysis;
     if (arcLength.empty()) {
         return analysis;
     }
-    analysis.smoothedCurvature = smoothCurvature(arcLength, curvature, settings.windowMm);
+    analysis.smoothedCurvature = smoothCurvature(arcLength, curvature, settings.windowMm, threads);
     analysis.hysteresis = hysteresisStates(analysis.smoothedCurvature, settings.hysteresisPerMm);
     analysis.runs = mergeAndDrop(runsOf(analysis.hysteresis), arcLength, turning, settings);
     analysis.state.assign(arcLength.size(), CurvatureState::Convex);

@@ -2,6 +2,8 @@
 // Spec §1.6: smoothed curvature, convex/concave states with hysteresis, concave runs (merged
 // over short gaps, short runs dropped) and the concave-convex altered points.
 
+#include "core/base/default_init.h"
+
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -25,17 +27,18 @@ struct CurvatureSettings {
 };
 
 struct CurvatureAnalysis {
-    std::vector<double> smoothedCurvature;  // kappa-bar_i, 1/mm
-    std::vector<CurvatureState> hysteresis; // raw hysteresis states (before merge/drop)
-    std::vector<CurvatureState> state;      // states after merging and dropping runs
-    std::vector<ConcaveRun> runs;           // kept runs in feed order
+    DefaultInitVector<double> smoothedCurvature;  // kappa-bar_i, 1/mm
+    DefaultInitVector<CurvatureState> hysteresis; // raw hysteresis states (before merge/drop)
+    DefaultInitVector<CurvatureState> state;      // states after merging and dropping runs
+    std::vector<ConcaveRun> runs;                 // kept runs in feed order
 };
 
-// `curvature` is the per-sample estimate of TangentField; `turning` the per-sample tau.
+// `curvature` is the per-sample estimate of TangentField; `turning` the per-sample tau. The
+// smoothing runs on up to `threads` threads (0 = all), with the same result as on one.
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    std::span<const double> curvature,
                                    std::span<const double> turning,
-                                   const CurvatureSettings& settings);
+                                   const CurvatureSettings& settings, unsigned threads = 1);
 
 // Indices where the state differs from the predecessor's, in feed order (the altered points).
 std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states);

@@ -26,18 +26,14 @@ AbsoluteLayer absoluteLayer(const PlanePath& path, const RawChannel& channel, co
     layer.rawMin.assign(channel.thetaMin.begin() + first, channel.thetaMin.begin() + end);
     layer.rawMax.assign(channel.thetaMax.begin() + first, channel.thetaMax.begin() + end);
     layer.original.resize(layer.rawMin.size());
+    double turns = 0.0; // the turn count changes rarely from one sample to the next
     for (std::size_t j = 0; j < layer.original.size(); ++j) {
         // The input axis on the channel's branch: nearest to the channel middle.
-        layer.original[j] = detail::unwrapNear(path.originalAngle[span.first + j],
-                                               0.5 * (layer.rawMin[j] + layer.rawMax[j]));
+        layer.original[j] = detail::unwrapNearGuessed(
+            path.originalAngle[span.first + j], 0.5 * (layer.rawMin[j] + layer.rawMax[j]), turns);
     }
-    layer.hull = monotoneHull(layer.rawMin, layer.rawMax, margin);
-    // Only LO, HI and the flags are used from here on: release the rest now, so that the next
-    // layer reuses the memory (fresh pages are the main cost of large paths).
-    layer.hull.lo0 = {};
-    layer.hull.hi0 = {};
-    layer.hull.marginLo = {};
-    layer.hull.marginHi = {};
+    // Only LO, HI and the flags are used from here on.
+    layer.hull = monotoneBounds(layer.rawMin, layer.rawMax, margin);
     return layer;
 }
 

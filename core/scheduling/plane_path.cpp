@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace bladeaxis::scheduling {
 
@@ -36,7 +38,7 @@ PointFault faultOf(const Vec3& centre, const Vec3& axis) {
     return PointFault::None;
 }
 
-Status validateInput(std::span<const Vec3> centres, std::span<const Vec3> axes, unsigned threads) {
+Status checkSizes(std::span<const Vec3> centres, std::span<const Vec3> axes) {
     if (centres.empty()) {
         return makeError(ErrorCode::InvalidArgument, "the toolpath has no points");
     }
@@ -45,13 +47,10 @@ Status validateInput(std::span<const Vec3> centres, std::span<const Vec3> axes, 
                                                          std::to_string(centres.size()) + " vs " +
                                                          std::to_string(axes.size()) + ")");
     }
-    const std::size_t n = centres.size();
-    const std::size_t i = forEachUntilFirstFailure(n, threads, [&](std::size_t k) {
-        return faultOf(centres[k], axes[k]) == PointFault::None;
-    });
-    if (i == n) {
-        return {};
-    }
+    return {};
+}
+
+Status faultError(std::span<const Vec3> centres, std::span<const Vec3> axes, std::size_t i) {
     if (faultOf(centres[i], axes[i]) == PointFault::NonFinite) {
         return makeError(ErrorCode::Geometry,
                          "non-finite centre or axis at point " + std::to_string(i));
@@ -59,22 +58,141 @@ Status validateInput(std::span<const Vec3> centres, std::span<const Vec3> axes, 
     return makeError(ErrorCode::Geometry, "zero tool axis at point " + std::to_string(i));
 }
 
+// Spec §1.2: a centre closer than tol::kDuplicatePointMm to the last kept one is merged into
+// it, which keeps S strictly increasing. Whether a centre is kept depends on the last kept centre
+// before it, so ranges of inputs are merged at once on the guess that the input before each range
+// was kept, and a range whose guess proves wrong is merged again, in order. Each range writes its
+// distinct samples from its own first input on (as if nothing before it were merged); ranges
+// after merged inputs are moved down afterwards. The arc length is summed in input order, as one
+// loop would.
+struct MergeRange {
+    std::size_t begin = 0, end = 0;
+    std::size_t kept = 0;       // distinct samples in the range
+    std::size_t lastKept = 0;   // the last kept input up to the range's end
+    std::size_t firstFault = 0; // the first faulty input (faultOf) in the range, or end
+};
+
+// Merges the inputs of [begin, end); `lastKept` is the last kept input before `begin` (unused
+// for begin = 0: the first input is always kept). arcLength holds the steps until summed. The
+// inputs are validated in the same pass (a faulty input fails the whole path, whatever it merged).
+MergeRange mergeRange(std::span<const Vec3> centres, std::span<const Vec3> axes, PlanePath& path,
+                      std::size_t begin, std::size_t end, std::size_t lastKept) {
+    MergeRange range{begin, end, 0, lastKept, end};
+    for (std::size_t i = begin; i < end; ++i) {
+        if (range.firstFault == end && faultOf(centres[i], axes[i]) != PointFault::None) {
+            range.firstFault = i;
+        }
+        const double step = i == 0 ? 0.0 : (centres[i] - centres[range.lastKept]).norm();
+        if (i > 0 && step < tol::kDuplicatePointMm) {
+            path.sampleOfInput[i] = begin + range.kept - 1; // the sample it is merged into
+            continue;
+        }
+        const std::size_t sample = begin + range.kept;
+        path.firstInput[sample] = i;
+        path.arcLength[sample] = step;
+        path.sampleOfInput[i] = sample;
+        ++range.kept;
+        range.lastKept = i;
+    }
+    return range;
+}
+
+std::vector<MergeRange> mergeRanges(std::span<const Vec3> centres, std::span<const Vec3> axes,
+                                    PlanePath& path, unsigned threads) {
+    std::vector<MergeRange> ranges(rangeCount(centres.size(), threads));
+    forEachRangeOf(centres.size(), ranges.size(),
+                   [&](std::size_t r, std::size_t begin, std::size_t end) {
+                       ranges[r] = mergeRange(centres, axes, path, begin, end, begin - 1);
+                   });
+    for (std::size_t r = 1; r < ranges.size(); ++r) {
+        const std::size_t lastKept = ranges[r - 1].lastKept;
+        if (lastKept != ranges[r].begin - 1) {
+            ranges[r] = mergeRange(centres, axes, path, ranges[r].begin, ranges[r].end, lastKept);
+        }
+    }
+    return ranges;
+}
+
+// Moves each range's samples down to follow those of the ranges before it (nothing moves when
+// no input was merged) and returns the distinct count.
+std::size_t compactRanges(std::span<const MergeRange> ranges, PlanePath& path) {
+    std::size_t distinct = 0;
+    for (const MergeRange& range : ranges) {
+        const std::size_t shift = range.begin - distinct;
+        if (shift > 0) {
+            const auto move = [&](auto& values) {
+                const auto from = values.begin() + static_cast<long>(range.begin);
+                std::copy(from, from + static_cast<long>(range.kept),
+                          from - static_cast<long>(shift));
+            };
+            move(path.firstInput);
+            move(path.arcLength);
+            for (std::size_t i = range.begin; i < range.end; ++i) {
+                path.sampleOfInput[i] -= shift;
+            }
+        }
+        distinct += range.kept;
+    }
+    return distinct;
+}
+
+// Returns the first faulty input (faultOf), or the input count when there is none.
+std::size_t mergeDuplicates(std::span<const Vec3> centres, std::span<const Vec3> axes,
+                            PlanePath& path, unsigned threads) {
+    const std::size_t n = centres.size();
+    path.firstInput.resize(n);
+    path.arcLength.resize(n);
+    path.sampleOfInput.resize(n);
+    const std::vector<MergeRange> ranges = mergeRanges(centres, axes, path, threads);
+    for (const MergeRange& range : ranges) {
+        if (range.firstFault < range.end) {
+            return range.firstFault;
+        }
+    }
+    const std::size_t distinct = compactRanges(ranges, path);
+    path.firstInput.resize(distinct);
+    path.arcLength.resize(distinct);
+    double s = 0.0;
+    for (double& length : path.arcLength) {
+        s += length; // the first step is 0: S starts at 0
+        length = s;
+    }
+    return n;
+}
+
 // Spec §1.3: w = +a when the projected path turns positively about +x around its centroid.
 // [A] The centroid of the projected points replaces "any point on the axis": for a path that
 // is not a whole number of turns the sum then no longer depends on where the axis is.
-int traversalSignOf(std::span<const Vec3> centres) {
+int traversalSignOf(std::span<const Vec3> centres, std::span<const std::size_t> distinct) {
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-    for (const Vec3& q : centres) {
-        centroid += q.tail<2>();
+    for (std::size_t i : distinct) {
+        centroid += centres[i].tail<2>();
     }
-    centroid /= static_cast<double>(centres.size());
+    centroid /= static_cast<double>(distinct.size());
     double sum = 0.0;
-    for (std::size_t i = 0; i + 1 < centres.size(); ++i) {
-        const Eigen::Vector2d r = centres[i].tail<2>() - centroid;
-        const Eigen::Vector2d d = centres[i + 1].tail<2>() - centres[i].tail<2>();
+    for (std::size_t k = 0; k + 1 < distinct.size(); ++k) {
+        const Vec3& q = centres[distinct[k]];
+        const Vec3& next = centres[distinct[k + 1]];
+        const Eigen::Vector2d r = q.tail<2>() - centroid;
+        const Eigen::Vector2d d = next.tail<2>() - q.tail<2>();
         sum += r.x() * d.y() - r.y() * d.x(); // (y, z) components: (r x d) . x
     }
     return sum >= 0.0 ? 1 : -1;
+}
+
+// x / |V| of the input axes of the distinct samples [begin, end) (the axial component of
+// V.normalized() without the other two divisions), and their least and greatest values.
+std::pair<double, double> axialRange(const PlanePath& path, std::span<const Vec3> axes,
+                                     std::span<double> axial, std::size_t begin, std::size_t end) {
+    double low = std::numeric_limits<double>::infinity();
+    double high = -low;
+    for (std::size_t k = begin; k < end; ++k) {
+        const Vec3& axis = axes[path.firstInput[k]];
+        axial[k] = std::clamp(axis.x() / axis.norm(), -1.0, 1.0);
+        low = std::min(low, axial[k]);
+        high = std::max(high, axial[k]);
+    }
+    return {low, high};
 }
 
 // Spec §1.2: B_in = asin(V . a) must be constant; otherwise take the median and warn.
@@ -82,16 +200,19 @@ double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std
               unsigned threads) {
     // asin is monotone, so the extremes and the median are taken on V . a / |V| and only those
     // three go through asin (the same values as asin of every sample, without n asin calls).
-    std::vector<double> axial(path.firstInput.size());
-    forEachRange(axial.size(), threads, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t k = begin; k < end; ++k) {
-            // x / |V|: the axial component of V.normalized() without the other two divisions.
-            const Vec3& axis = axes[path.firstInput[k]];
-            axial[k] = std::clamp(axis.x() / axis.norm(), -1.0, 1.0);
-        }
-    });
-    const auto [low, high] = std::minmax_element(axial.begin(), axial.end());
-    const double spread = std::asin(*high) - std::asin(*low);
+    DefaultInitVector<double> axial(path.firstInput.size());
+    std::vector<std::pair<double, double>> extremes(rangeCount(axial.size(), threads));
+    forEachRangeOf(axial.size(), extremes.size(),
+                   [&](std::size_t r, std::size_t begin, std::size_t end) {
+                       extremes[r] = axialRange(path, axes, axial, begin, end);
+                   });
+    double low = extremes.front().first;
+    double high = extremes.front().second;
+    for (const auto& [rangeLow, rangeHigh] : extremes) {
+        low = std::min(low, rangeLow);
+        high = std::max(high, rangeHigh);
+    }
+    const double spread = std::asin(high) - std::asin(low);
     std::nth_element(axial.begin(), axial.begin() + static_cast<long>(axial.size() / 2),
                      axial.end());
     const double median = std::asin(axial[axial.size() / 2]);
@@ -107,48 +228,36 @@ double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std
 
 Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes,
                                    unsigned threads) {
-    if (auto status = validateInput(centres, axes, threads); !status) {
+    if (auto status = checkSizes(centres, axes); !status) {
         return std::unexpected(status.error());
     }
     PlanePath path;
-    path.sampleOfInput.resize(centres.size());
-    path.centres.reserve(centres.size());
-    path.firstInput.reserve(centres.size());
-    path.arcLength.reserve(centres.size());
-    double s = 0.0;
-    for (std::size_t i = 0; i < centres.size(); ++i) {
-        if (!path.centres.empty()) {
-            const double step = (centres[i] - path.centres.back()).norm();
-            if (step < tol::kDuplicatePointMm) { // spec §1.2: merge, keep S strictly increasing
-                path.sampleOfInput[i] = path.centres.size() - 1;
-                continue;
-            }
-            s += step;
-        }
-        path.sampleOfInput[i] = path.centres.size();
-        path.centres.push_back(centres[i]);
-        path.firstInput.push_back(i);
-        path.arcLength.push_back(s);
+    if (const std::size_t fault = mergeDuplicates(centres, axes, path, threads);
+        fault < centres.size()) {
+        return std::unexpected(faultError(centres, axes, fault).error());
     }
-    if (path.centres.size() < 3) {
+    if (path.firstInput.size() < 3) {
         return makeError(ErrorCode::Geometry,
                          "the toolpath needs at least 3 distinct centres, it has " +
-                             std::to_string(path.centres.size()));
+                             std::to_string(path.firstInput.size()));
     }
-    if (path.centres.size() < centres.size()) {
-        path.warnings.push_back(std::to_string(centres.size() - path.centres.size()) +
+    if (path.firstInput.size() < centres.size()) {
+        path.warnings.push_back(std::to_string(centres.size() - path.firstInput.size()) +
                                 " duplicate centre(s) merged");
     }
-    path.traversalSign = traversalSignOf(path.centres);
-    path.tiltB0 = tiltOf(path, axes, path.warnings, threads);
+    // Two loops over every distinct sample, one in order (a sum): one thread each.
+    runBoth(
+        threads, [&] { path.traversalSign = traversalSignOf(centres, path.firstInput); },
+        [&] { path.tiltB0 = tiltOf(path, axes, path.warnings, 1); });
     if (std::cos(path.tiltB0) < 1e-6) {
         return makeError(ErrorCode::Geometry, "the tool axis is parallel to the rotary axis");
     }
-    path.points.resize(path.centres.size());
-    path.originalAngle.resize(path.centres.size());
-    forEachRange(path.centres.size(), threads, [&](std::size_t begin, std::size_t end) {
+    const std::size_t distinct = path.firstInput.size();
+    path.points.resize(distinct);
+    path.originalAngle.resize(distinct);
+    forEachRange(distinct, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
-            const Vec3& q = path.centres[k];
+            const Vec3& q = centres[path.firstInput[k]];
             path.points[k] = Vec2(q.z(), -path.traversalSign * q.y());
             path.originalAngle[k] = planeAngle(axes[path.firstInput[k]], path.traversalSign);
         }

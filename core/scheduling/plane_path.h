@@ -3,6 +3,7 @@
 // oriented so that the feed goes counter-clockwise (angles grow in the feed sense), 3-D arc
 // length S, the original in-plane axis angles and the fixed tilt B0.
 
+#include "core/base/default_init.h"
 #include "core/base/error.h"
 #include "core/geometry/vec.h"
 
@@ -13,14 +14,13 @@
 namespace bladeaxis::scheduling {
 
 struct PlanePath {
-    std::vector<Vec3> centres;              // distinct Q_i in W, mm
-    std::vector<Vec2> points;               // q_i in the plane frame (r = +z, p = w x r), mm
-    std::vector<double> arcLength;          // S from the path start, 3-D, strictly increasing, mm
-    std::vector<double> originalAngle;      // ang(P_perp V_i), wrapped to (-pi, pi], rad
-    std::vector<std::size_t> firstInput;    // input index of each distinct sample
-    std::vector<std::size_t> sampleOfInput; // distinct sample index of each input sample
-    double tiltB0 = 0.0;                    // asin(V . a), rad
-    int traversalSign = 1;                  // w . a (+1: feed turns about +x), spec §1.3
+    std::vector<Vec2> points;                     // q_i in the plane frame (r = +z, p = w x r), mm
+    DefaultInitVector<double> arcLength;          // S from the start, 3-D, strictly increasing, mm
+    DefaultInitVector<double> originalAngle;      // ang(P_perp V_i), wrapped to (-pi, pi], rad
+    DefaultInitVector<std::size_t> firstInput;    // input index of each distinct sample
+    DefaultInitVector<std::size_t> sampleOfInput; // distinct sample index of each input sample
+    double tiltB0 = 0.0;                          // asin(V . a), rad
+    int traversalSign = 1;                        // w . a (+1: feed turns about +x), spec §1.3
     std::vector<std::string> warnings;
 };
 

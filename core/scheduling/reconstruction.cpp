@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace bladeaxis::scheduling {
 
@@ -32,17 +33,77 @@ ReconstructedPath reconstructAxes(std::span<const Vec3> centres, std::span<const
     return path;
 }
 
-std::size_t countReversals(std::span<const double> angles, double step) {
+namespace {
+
+// The reversals inside one range of steps, and the first and last direction there (0: none),
+// so that ranges combine in order into the count of the whole sequence.
+struct ReversalRun {
+    std::size_t reversals = 0;
+    int firstSign = 0, lastSign = 0;
+};
+
+// Steps i in [begin, end), i >= 1: from angles[i - 1] to angles[i].
+ReversalRun reversalsIn(std::span<const double> angles, double step, std::size_t begin,
+                        std::size_t end) {
+    // Without branches: whether a step counts follows the data (the input orientation swings
+    // back and forth), so branches on it would be mispredicted often.
+    ReversalRun run;
+    for (std::size_t i = std::max<std::size_t>(begin, 1); i < end; ++i) {
+        const double d = angles[i] - angles[i - 1];
+        const bool counts = !(std::abs(d) <= step);
+        const int sign = d > 0.0 ? 1 : -1;
+        run.reversals +=
+            static_cast<std::size_t>(counts && run.lastSign != 0 && sign != run.lastSign);
+        run.firstSign = counts && run.firstSign == 0 ? sign : run.firstSign;
+        run.lastSign = counts ? sign : run.lastSign;
+    }
+    return run;
+}
+
+// The check's maxima over [begin, end). The square root and |sqrt(x) - 1| are monotone on
+// either side of their extremes, with correct rounding too, so the largest centre error is the
+// root of the largest squared one, and the largest unit error is at the least or the greatest
+// squared length: two roots per range instead of two per sample, and the same values.
+ReconstructionCheck checkRange(std::span<const Vec3> centres, const ReconstructedPath& path,
+                               double axial, double toolRadius, std::size_t begin,
+                               std::size_t end) {
+    ReconstructionCheck check;
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    double maxCentreSquared = 0.0;
+    double minLengthSquared = kInfinity;
+    double maxLengthSquared = -kInfinity;
+    for (std::size_t i = begin; i < end; ++i) {
+        const Vec3& v = path.axes[i];
+        maxCentreSquared =
+            std::max(maxCentreSquared, (path.tips[i] + toolRadius * v - centres[i]).squaredNorm());
+        const double lengthSquared = v.squaredNorm();
+        minLengthSquared = std::min(minLengthSquared, lengthSquared);
+        maxLengthSquared = std::max(maxLengthSquared, lengthSquared);
+        check.maxTiltError = std::max(check.maxTiltError, std::abs(v.x() - axial));
+    }
+    check.maxCentreErrorMm = std::sqrt(maxCentreSquared);
+    // std::max skips NaN lengths, as the per-sample maximum did; none left means 0.
+    if (minLengthSquared <= maxLengthSquared) {
+        check.maxUnitError = std::max(std::abs(std::sqrt(minLengthSquared) - 1.0),
+                                      std::abs(std::sqrt(maxLengthSquared) - 1.0));
+    }
+    return check;
+}
+
+} // namespace
+
+std::size_t countReversals(std::span<const double> angles, double step, unsigned threads) {
+    std::vector<ReversalRun> runs(rangeCount(angles.size(), threads));
+    forEachRangeOf(angles.size(), runs.size(),
+                   [&](std::size_t range, std::size_t begin, std::size_t end) {
+                       runs[range] = reversalsIn(angles, step, begin, end);
+                   });
     std::size_t reversals = 0;
     int lastSign = 0;
-    for (std::size_t i = 1; i < angles.size(); ++i) {
-        const double d = angles[i] - angles[i - 1];
-        if (std::abs(d) <= step) {
-            continue;
-        }
-        const int sign = d > 0.0 ? 1 : -1;
-        reversals += lastSign != 0 && sign != lastSign ? 1 : 0;
-        lastSign = sign;
+    for (const ReversalRun& run : runs) {
+        reversals += run.reversals;
+        reversals += lastSign != 0 && run.firstSign != 0 && run.firstSign != lastSign ? 1 : 0;
+        lastSign = run.lastSign != 0 ? run.lastSign : lastSign;
     }
     return reversals;
 }
@@ -56,14 +117,7 @@ ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
     // Maxima per range, then over the ranges: a maximum does not depend on the order.
     std::vector<ReconstructionCheck> ranges(rangeCount(n, threads));
     forEachRangeOf(n, ranges.size(), [&](std::size_t range, std::size_t begin, std::size_t end) {
-        ReconstructionCheck& check = ranges[range];
-        for (std::size_t i = begin; i < end; ++i) {
-            const Vec3& v = path.axes[i];
-            check.maxCentreErrorMm = std::max(check.maxCentreErrorMm,
-                                              (path.tips[i] + toolRadius * v - centres[i]).norm());
-            check.maxUnitError = std::max(check.maxUnitError, std::abs(v.norm() - 1.0));
-            check.maxTiltError = std::max(check.maxTiltError, std::abs(v.x() - axial));
-        }
+        ranges[range] = checkRange(centres, path, axial, toolRadius, begin, end);
     });
     ReconstructionCheck check;
     for (const ReconstructionCheck& range : ranges) {
@@ -71,7 +125,7 @@ ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
         check.maxUnitError = std::max(check.maxUnitError, range.maxUnitError);
         check.maxTiltError = std::max(check.maxTiltError, range.maxTiltError);
     }
-    check.reversals = countReversals(thetaAbs, tol::kReversalStepRad);
+    check.reversals = countReversals(thetaAbs, tol::kReversalStepRad, threads);
     return check;
 }
 

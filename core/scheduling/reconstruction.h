@@ -46,7 +46,8 @@ ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                                         std::span<const double> thetaAbs, double tiltB0,
                                         double toolRadius, unsigned threads = 1);
 
-// Direction reversals of an angle sequence: sign changes among steps larger than `step`.
-std::size_t countReversals(std::span<const double> angles, double step);
+// Direction reversals of an angle sequence: sign changes among steps larger than `step`. Counted
+// on up to `threads` threads (0 = all), with the same count as on one.
+std::size_t countReversals(std::span<const double> angles, double step, unsigned threads = 1);
 
 } // namespace bladeaxis::scheduling

@@ -83,11 +83,11 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
     stage.tangents = std::move(*tangents);
     const CurvatureSettings settings = curvatureSettings(p, path, stage.tangents, radius);
     stage.curvature = analyseCurvature(path.arcLength, stage.tangents.curvature,
-                                       stage.tangents.turning, settings);
+                                       stage.tangents.turning, settings, p.threads);
     stage.split = splitLayers(stage.tangents.forwardAngle, stage.curvature.smoothedCurvature,
                               stage.curvature.runs, p.basePoint);
     stage.channel = buildRawChannel(stage.tangents, stage.curvature.runs,
-                                    p.taperHalfAngleRad + p.safetyAngleRad);
+                                    p.taperHalfAngleRad + p.safetyAngleRad, p.threads);
     if (p.visibility == Visibility::Global) {
         const double turns = std::max(1.0, std::abs(stage.tangents.forwardAngle.back() -
                                                     stage.tangents.forwardAngle.front()) /
@@ -163,45 +163,75 @@ Status applyKeyPointEdits(std::vector<LayerOutcome>& outcomes,
     return {};
 }
 
-void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput& input,
-              std::vector<LayerOutcome>& outcomes, unsigned threads) {
-    const std::size_t n = input.centres.size();
-    result.thetaAbsolute.assign(n, 0.0);
-    result.thetaOriginalAbsolute.assign(n, 0.0);
-    std::vector<bool> keepOriginal(path.centres.size(), false);
-    result.layers.reserve(outcomes.size());
-    // Each distinct sample's first input gets the layer values (a shared layer end is written
-    // by both layers, the later one wins, as before); merged duplicates copy them below.
-    for (LayerOutcome& outcome : outcomes) {
-        LayerResult& layer = outcome.result;
-        const bool original = std::find(layer.flags.begin(), layer.flags.end(),
-                                        LayerStatus::MonotoneInfeasible) != layer.flags.end();
-        for (std::size_t j = 0; j < layer.theta.size(); ++j) {
-            const std::size_t first = layer.inputIndex[j];
-            result.thetaAbsolute[first] = layer.junctionAngle + layer.theta[j];
-            result.thetaOriginalAbsolute[first] = layer.junctionAngle + layer.thetaOriginal[j];
-            keepOriginal[path.sampleOfInput[first]] = original;
+bool keepsOriginal(const LayerResult& layer) {
+    return std::find(layer.flags.begin(), layer.flags.end(), LayerStatus::MonotoneInfeasible) !=
+           layer.flags.end();
+}
+
+// The inputs whose values come from layer k: from its first input up to the next layer's first
+// input (a base point shared by two layers belongs to the later one), merged duplicates
+// included. The layers' ranges are disjoint and cover every input.
+struct InputRange {
+    std::size_t begin = 0, end = 0;
+};
+
+InputRange inputsOfLayer(std::span<const LayerResult> layers, std::size_t k, std::size_t n) {
+    return {layers[k].inputIndex.front(),
+            k + 1 < layers.size() ? layers[k + 1].inputIndex.front() : n};
+}
+
+// Absolute angles per input: each layer writes its own input range, so the layers run at once.
+void writeAbsoluteAngles(ScheduleResult& result, const PlanePath& path, std::size_t n,
+                         unsigned threads) {
+    // std::vector zero-fills: the two fills (and their first touch) at once.
+    runBoth(
+        threads, [&] { result.thetaAbsolute.resize(n); },
+        [&] { result.thetaOriginalAbsolute.resize(n); });
+    const std::span<const LayerResult> layers = result.layers;
+    forEachItem(layers.size(), n, threads, [&](std::size_t k) {
+        const LayerResult& layer = layers[k];
+        const InputRange inputs = inputsOfLayer(layers, k, n);
+        const std::size_t start = path.sampleOfInput[inputs.begin];
+        for (std::size_t i = inputs.begin; i < inputs.end; ++i) {
+            const std::size_t j = path.sampleOfInput[i] - start;
+            result.thetaAbsolute[i] = layer.junctionAngle + layer.theta[j];
+            result.thetaOriginalAbsolute[i] = layer.junctionAngle + layer.thetaOriginal[j];
         }
-        result.warnings.insert(result.warnings.end(), outcome.warnings.begin(),
-                               outcome.warnings.end());
-        result.layers.push_back(std::move(layer));
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t first = path.firstInput[path.sampleOfInput[i]]; // <= i
-        result.thetaAbsolute[i] = result.thetaAbsolute[first];
-        result.thetaOriginalAbsolute[i] = result.thetaOriginalAbsolute[first];
-    }
-    ReconstructedPath rebuilt = reconstructAxes(input.centres, result.thetaAbsolute, path.tiltB0,
-                                                path.traversalSign, input.toolRadius, threads);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (keepOriginal[path.sampleOfInput[i]]) { // MONOTONE_INFEASIBLE: the input is kept
+    });
+}
+
+// MONOTONE_INFEASIBLE layers keep the input orientation.
+void keepOriginalAxes(ReconstructedPath& rebuilt, std::span<const LayerResult> layers,
+                      const ScheduleInput& input) {
+    for (std::size_t k = 0; k < layers.size(); ++k) {
+        if (!keepsOriginal(layers[k])) {
+            continue;
+        }
+        const InputRange inputs = inputsOfLayer(layers, k, input.centres.size());
+        for (std::size_t i = inputs.begin; i < inputs.end; ++i) {
             rebuilt.axes[i] = input.axes[i].normalized();
             rebuilt.tips[i] = input.centres[i] - input.toolRadius * rebuilt.axes[i];
         }
     }
+}
+
+void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput& input,
+              std::vector<LayerOutcome>& outcomes, unsigned threads) {
+    const std::size_t n = input.centres.size();
+    result.layers.reserve(outcomes.size());
+    for (LayerOutcome& outcome : outcomes) {
+        result.warnings.insert(result.warnings.end(), outcome.warnings.begin(),
+                               outcome.warnings.end());
+        result.layers.push_back(std::move(outcome.result));
+    }
+    writeAbsoluteAngles(result, path, n, threads);
+    ReconstructedPath rebuilt = reconstructAxes(input.centres, result.thetaAbsolute, path.tiltB0,
+                                                path.traversalSign, input.toolRadius, threads);
+    keepOriginalAxes(rebuilt, result.layers, input);
     result.check = checkReconstruction(input.centres, rebuilt, result.thetaAbsolute, path.tiltB0,
                                        input.toolRadius, threads);
-    result.originalReversals = countReversals(result.thetaOriginalAbsolute, tol::kReversalStepRad);
+    result.originalReversals =
+        countReversals(result.thetaOriginalAbsolute, tol::kReversalStepRad, threads);
     result.newAxes = std::move(rebuilt.axes);
     result.newTips = std::move(rebuilt.tips);
 }

@@ -17,12 +17,13 @@ constexpr double kDegenerateChordMm = 1e-9;
 
 // The square root is monotone, so the median of the squared chords gives the same element as
 // the median of the chords with one square root instead of one per chord.
-double medianChord(std::span<const Vec2> points) {
-    std::vector<double> squared;
-    squared.reserve(points.size());
-    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-        squared.push_back((points[i + 1] - points[i]).squaredNorm());
-    }
+double medianChord(std::span<const Vec2> points, unsigned threads) {
+    DefaultInitVector<double> squared(points.size() - 1);
+    forEachRange(squared.size(), threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            squared[i] = (points[i + 1] - points[i]).squaredNorm();
+        }
+    });
     auto middle = squared.begin() + static_cast<long>(squared.size() / 2);
     std::nth_element(squared.begin(), middle, squared.end());
     return std::sqrt(*middle);
@@ -102,19 +103,19 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
     }
     constexpr std::uint32_t kNoChord = std::numeric_limits<std::uint32_t>::max();
     TangentField field;
-    field.chordLengthMm = std::max(minChordMm, medianFactor * medianChord(points));
+    field.chordLengthMm = std::max(minChordMm, medianFactor * medianChord(points, threads));
     field.forwardAngle.resize(n); // first the wrapped angles, unwrapped in place below
     field.turning.resize(n);
     field.curvature.resize(n); // holds |e+_i| between the two passes
     // Pass 1: the forward chords e+_i, their angles and far ends.
-    std::vector<std::uint32_t> forwardEnd(n, kNoChord);
+    DefaultInitVector<std::uint32_t> forwardEnd(n);
     forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             const Chord forward = chordFrom(points, i, +1, field.chordLengthMm);
+            forwardEnd[i] = forward.found ? static_cast<std::uint32_t>(forward.end) : kNoChord;
             if (forward.found) {
                 field.forwardAngle[i] = angleOf(forward.vector);
                 field.curvature[i] = forward.norm;
-                forwardEnd[i] = static_cast<std::uint32_t>(forward.end);
             }
         }
     });
@@ -156,10 +157,13 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
                          "the projected path is degenerate at point " + std::to_string(degenerate));
     }
     // Unwrapped along the whole path (geometry::unwrap, with the fast wrap), in place: each
-    // step reads the wrapped value at i before overwriting it.
+    // step reads the wrapped value at i before overwriting it. The loop is a chain through the
+    // previous value, so the turn count is guessed from the previous step (the same bits).
+    double previous = field.forwardAngle[0];
+    double turns = 0.0;
     for (std::size_t i = 1; i < n; ++i) {
-        field.forwardAngle[i] =
-            detail::unwrapNear(field.forwardAngle[i], field.forwardAngle[i - 1]);
+        previous = detail::unwrapNearGuessed(field.forwardAngle[i], previous, turns);
+        field.forwardAngle[i] = previous;
     }
     return field;
 }

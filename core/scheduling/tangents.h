@@ -2,6 +2,7 @@
 // Spec §1.5: robust discrete tangents over a minimum chord length, and the signed turning.
 // Points are in the feed-oriented plane frame (feed counter-clockwise), so tau > 0 = convex.
 
+#include "core/base/default_init.h"
 #include "core/base/error.h"
 #include "core/geometry/vec.h"
 
@@ -11,10 +12,10 @@
 namespace bladeaxis::scheduling {
 
 struct TangentField {
-    double chordLengthMm = 0.0;       // l_t actually used
-    std::vector<double> forwardAngle; // ang(e+_i), unwrapped along the whole path, rad
-    std::vector<double> turning;      // tau_i = wrap(ang(e+) - ang(e-)), rad, > 0 convex
-    std::vector<double> curvature;    // 2 tau_i / (|e+| + |e-|), 1/mm
+    double chordLengthMm = 0.0;             // l_t actually used
+    DefaultInitVector<double> forwardAngle; // ang(e+_i), unwrapped along the whole path, rad
+    DefaultInitVector<double> turning;      // tau_i = wrap(ang(e+) - ang(e-)), rad, > 0 convex
+    DefaultInitVector<double> curvature;    // 2 tau_i / (|e+| + |e-|), 1/mm
 };
 
 // l_t = max(minChordMm, medianFactor * median chord). Where no chord of length l_t exists

@@ -28,6 +28,25 @@ inline double unwrapNear(double angle, double reference) {
     return reference + wrapAngle(angle - reference);
 }
 
+// wrapAngle(angle) given a guess of its turn count n (the integer nearest to angle / 2 pi),
+// updated for the next call: along a path the count rarely changes from one sample to the next.
+// A remainder below pi - 1e-9 proves the guess right (wrapAngle's own test), and wrapAngle
+// would then return the very same fma; otherwise wrapAngle decides. The same bits as wrapAngle,
+// without the rounding to the nearest integer in the chain of an unwrapping loop.
+inline double wrapAngleGuessed(double angle, double& turns) {
+    const double r = std::fma(-turns, units::kTwoPi, angle);
+    if (std::abs(r) < units::kPi - 1e-9) {
+        return r;
+    }
+    turns = std::nearbyint(angle * (1.0 / units::kTwoPi));
+    return wrapAngle(angle);
+}
+
+// unwrapNear with a guessed turn count (wrapAngleGuessed).
+inline double unwrapNearGuessed(double angle, double reference, double& turns) {
+    return reference + wrapAngleGuessed(angle - reference, turns);
+}
+
 namespace fast_atan {
 
 // atan(k / kSteps), k = 0 .. kSteps, from the library once at start-up.

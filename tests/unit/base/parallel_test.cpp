@@ -103,6 +103,48 @@ TEST(Parallel, TheFirstFailureOfTheWholeInputWinsAndEverythingBeforeItIsStepped)
     EXPECT_EQ(forEachUntilFirstFailure(count, 4, [](std::size_t) { return true; }), count);
 }
 
+TEST(Parallel, RunBothRunsEachOnceOnItsOwnThreadWhenTwoAreAllowed) {
+    std::thread::id first;
+    std::thread::id second;
+    int calls = 0;
+    std::mutex lock;
+    runBoth(
+        2,
+        [&] {
+            const std::lock_guard guard(lock);
+            first = std::this_thread::get_id();
+            ++calls;
+        },
+        [&] {
+            const std::lock_guard guard(lock);
+            second = std::this_thread::get_id();
+            ++calls;
+        });
+    EXPECT_EQ(calls, 2);
+    EXPECT_NE(first, second);
+    EXPECT_EQ(first, std::this_thread::get_id()); // the calling thread takes the first
+}
+
+TEST(Parallel, RunBothRunsInOrderOnTheCallingThreadWithOneThread) {
+    std::vector<std::pair<int, std::thread::id>> calls;
+    runBoth(
+        1, [&] { calls.emplace_back(1, std::this_thread::get_id()); },
+        [&] { calls.emplace_back(2, std::this_thread::get_id()); });
+    ASSERT_EQ(calls.size(), 2u);
+    EXPECT_EQ(calls[0].first, 1);
+    EXPECT_EQ(calls[1].first, 2);
+    EXPECT_EQ(calls[0].second, std::this_thread::get_id());
+    EXPECT_EQ(calls[1].second, std::this_thread::get_id());
+}
+
+TEST(Parallel, RunBothRethrowsOnTheCallingThreadOnceBothHaveEnded) {
+    std::atomic<bool> secondRan{false};
+    EXPECT_THROW(runBoth(
+                     2, [] { throw std::bad_alloc(); }, [&] { secondRan = true; }),
+                 std::bad_alloc);
+    EXPECT_TRUE(secondRan);
+}
+
 TEST(Parallel, ZeroThreadsMeansEveryHardwareThread) {
     EXPECT_EQ(resolveThreadCount(0), std::max(1u, std::thread::hardware_concurrency()));
     EXPECT_EQ(resolveThreadCount(3), 3u);

@@ -227,8 +227,8 @@ TEST(ChannelOptions, GlobalVisibilityOnlyNarrowsTheChannel) {
 // from a point before it.
 TEST(ChannelOptions, GlobalVisibilityClipsTheForwardLimitAtAPocketWall) {
     const std::vector<Vec2> points{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, -1}, {4, -1}, {4, 2}};
-    RawChannel channel{std::vector<double>(points.size(), -3.0),
-                       std::vector<double>(points.size(), 0.0)}; // forward limit along +x
+    RawChannel channel{DefaultInitVector<double>(points.size(), -3.0),
+                       DefaultInitVector<double>(points.size(), 0.0)}; // forward limit along +x
     clipGlobalVisibility(channel, points, 6);
     EXPECT_NEAR(channel.thetaMax[0], std::atan2(-1.0, 3.0), 1e-12); // sees (3, -1) first
     EXPECT_EQ(channel.thetaMax[5], 0.0);                            // (4, 2) lies above

@@ -87,12 +87,13 @@ std::size_t forEachUntilFirstFailure(std::size_t count, unsigned threads, Step&&
     return *std::min_element(firstFailure.begin(), firstFailure.end());
 }
 
-// Runs first() and second(), two independent pieces of serial work, at once on two threads when
-// `threads` allows two (0 = all), otherwise one after the other on the calling thread. An
-// exception in either is rethrown once both have ended, as in forEachRangeOf.
+// Runs first() and second(), two independent pieces of serial work over `work` points, at once
+// on two threads when `threads` allows two (0 = all) and the work is worth a thread (at least
+// kMinParallelRange points), otherwise one after the other on the calling thread. An exception
+// in either is rethrown once both have ended, as in forEachRangeOf.
 template <class First, class Second>
-void runBoth(unsigned threads, First&& first, Second&& second) {
-    if (resolveThreadCount(threads) < 2) {
+void runBoth(std::size_t work, unsigned threads, First&& first, Second&& second) {
+    if (resolveThreadCount(threads) < 2 || work < kMinParallelRange) {
         first();
         second();
         return;

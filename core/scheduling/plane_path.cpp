@@ -247,7 +247,8 @@ Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<cons
     }
     // Two loops over every distinct sample, one in order (a sum): one thread each.
     runBoth(
-        threads, [&] { path.traversalSign = traversalSignOf(centres, path.firstInput); },
+        centres.size(), threads,
+        [&] { path.traversalSign = traversalSignOf(centres, path.firstInput); },
         [&] { path.tiltB0 = tiltOf(path, axes, path.warnings, 1); });
     if (std::cos(path.tiltB0) < 1e-6) {
         return makeError(ErrorCode::Geometry, "the tool axis is parallel to the rotary axis");

@@ -185,7 +185,7 @@ void writeAbsoluteAngles(ScheduleResult& result, const PlanePath& path, std::siz
                          unsigned threads) {
     // std::vector zero-fills: the two fills (and their first touch) at once.
     runBoth(
-        threads, [&] { result.thetaAbsolute.resize(n); },
+        n, threads, [&] { result.thetaAbsolute.resize(n); },
         [&] { result.thetaOriginalAbsolute.resize(n); });
     const std::span<const LayerResult> layers = result.layers;
     forEachItem(layers.size(), n, threads, [&](std::size_t k) {

@@ -109,7 +109,7 @@ TEST(Parallel, RunBothRunsEachOnceOnItsOwnThreadWhenTwoAreAllowed) {
     int calls = 0;
     std::mutex lock;
     runBoth(
-        2,
+        kMinParallelRange, 2,
         [&] {
             const std::lock_guard guard(lock);
             first = std::this_thread::get_id();
@@ -128,7 +128,7 @@ TEST(Parallel, RunBothRunsEachOnceOnItsOwnThreadWhenTwoAreAllowed) {
 TEST(Parallel, RunBothRunsInOrderOnTheCallingThreadWithOneThread) {
     std::vector<std::pair<int, std::thread::id>> calls;
     runBoth(
-        1, [&] { calls.emplace_back(1, std::this_thread::get_id()); },
+        kMinParallelRange, 1, [&] { calls.emplace_back(1, std::this_thread::get_id()); },
         [&] { calls.emplace_back(2, std::this_thread::get_id()); });
     ASSERT_EQ(calls.size(), 2u);
     EXPECT_EQ(calls[0].first, 1);
@@ -137,11 +137,22 @@ TEST(Parallel, RunBothRunsInOrderOnTheCallingThreadWithOneThread) {
     EXPECT_EQ(calls[1].second, std::this_thread::get_id());
 }
 
+TEST(Parallel, RunBothKeepsWorkTooSmallForAThreadOnTheCallingThread) {
+    std::vector<std::thread::id> callers;
+    runBoth(
+        kMinParallelRange - 1, 2, [&] { callers.push_back(std::this_thread::get_id()); },
+        [&] { callers.push_back(std::this_thread::get_id()); });
+    ASSERT_EQ(callers.size(), 2u);
+    EXPECT_EQ(callers[0], std::this_thread::get_id());
+    EXPECT_EQ(callers[1], std::this_thread::get_id());
+}
+
 TEST(Parallel, RunBothRethrowsOnTheCallingThreadOnceBothHaveEnded) {
     std::atomic<bool> secondRan{false};
-    EXPECT_THROW(runBoth(
-                     2, [] { throw std::bad_alloc(); }, [&] { secondRan = true; }),
-                 std::bad_alloc);
+    EXPECT_THROW(
+        runBoth(
+            kMinParallelRange, 2, [] { throw std::bad_alloc(); }, [&] { secondRan = true; }),
+        std::bad_alloc);
     EXPECT_TRUE(secondRan);
 }
 

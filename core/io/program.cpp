@@ -266,19 +266,6 @@ ProgramFormat LoadedProgram::format() const {
 
 namespace {
 
-// CL data and point tables give the tool in the program's workpiece frame, whose table axis is
-// X or Y as the machine's table turns; the engine's frame has it along x.
-void toEngineFrame(std::vector<toolpath::ClRecord>& records,
-                   const kinematics::MachineModel& machine) {
-    if (!machine.turnsAboutY()) {
-        return;
-    }
-    for (toolpath::ClRecord& record : records) {
-        record.tip = machine.toEngineFrame(record.tip);
-        record.axis = machine.toEngineFrame(record.axis);
-    }
-}
-
 // The formats whose readers keep a copy of their own: CL data and point tables.
 Result<LoadedProgram> parseTextFormat(std::string_view text, std::string_view fileName,
                                       ProgramFormat format, const ReadOptions& options) {
@@ -297,6 +284,27 @@ Result<LoadedProgram> parseTextFormat(std::string_view text, std::string_view fi
 }
 
 } // namespace
+
+void toEngineFrame(std::span<toolpath::ClRecord> records, const kinematics::MachineModel& machine) {
+    if (!machine.turnsAboutY()) {
+        return;
+    }
+    for (toolpath::ClRecord& record : records) {
+        record.tip = machine.toEngineFrame(record.tip);
+        record.axis = machine.toEngineFrame(record.axis);
+    }
+}
+
+void toProgramFrame(std::span<toolpath::ClRecord> records,
+                    const kinematics::MachineModel& machine) {
+    if (!machine.turnsAboutY()) {
+        return;
+    }
+    for (toolpath::ClRecord& record : records) {
+        record.tip = machine.toProgramFrame(record.tip);
+        record.axis = machine.toProgramFrame(record.axis);
+    }
+}
 
 Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileName,
                                         ProgramFormat format,

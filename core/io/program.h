@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <variant>
 
@@ -57,6 +58,13 @@ struct LoadedProgram {
 // not. CL data and ISO programs: false.
 std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t first,
                                     std::size_t count);
+
+// CL data, point tables and CAD models give the tool in the program's workpiece frame, whose
+// table axis is X or Y as the machine's table turns; the engine's frame has it along x. These
+// turn records' tips and tool axes from one frame to the other (nothing to do on a table-A
+// machine).
+void toEngineFrame(std::span<toolpath::ClRecord> records, const kinematics::MachineModel& machine);
+void toProgramFrame(std::span<toolpath::ClRecord> records, const kinematics::MachineModel& machine);
 
 // Detects the format of text read from `path` and parses it; a contradicting extension becomes
 // the first warning of the toolpath.

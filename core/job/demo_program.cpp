@@ -5,6 +5,7 @@
 #include "core/blade/presets.h"
 #include "core/io/cl/apt.h"
 #include "core/io/nc/gcode.h"
+#include "core/io/program.h"
 
 #include <cmath>
 
@@ -107,10 +108,7 @@ Result<GeneratedProgram> generateProgram(const GenerateRequest& request,
         options.toolRadius = pathSpec->toolRadius;
         options.comments = comments;
         toolpath::Toolpath path = generated->path; // CL data are in the program's frame
-        for (toolpath::ClRecord& record : path.records) {
-            record.tip = machine.toProgramFrame(record.tip);
-            record.axis = machine.toProgramFrame(record.axis);
-        }
+        io::toProgramFrame(path.records, machine);
         return GeneratedProgram{io::cl::emitApt(path, options), pathSpec->toolRadius};
     }
     if (request.format != "gcode") {

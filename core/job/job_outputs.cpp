@@ -4,6 +4,7 @@
 #include "core/base/units.h"
 #include "core/base/version.h"
 #include "core/io/cl/apt_writer.h"
+#include "core/io/program.h"
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
 #include "core/report/analysis_report.h"
@@ -92,10 +93,7 @@ Result<std::string> rescheduledClText(const JobResult& result) {
     toolpath::Toolpath path = result.program.path();
     std::ranges::copy(result.rescheduled->records,
                       path.records.begin() + static_cast<std::ptrdiff_t>(result.pass.first));
-    for (toolpath::ClRecord& record : path.records) { // in the program's workpiece frame
-        record.tip = result.machine.toProgramFrame(record.tip);
-        record.axis = result.machine.toProgramFrame(record.axis);
-    }
+    io::toProgramFrame(path.records, result.machine);
     io::cl::AptEmitOptions options;
     options.toolRadius = result.toolRadius;
     options.comments = {"re-scheduled by BladeAxis from " +

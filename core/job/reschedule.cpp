@@ -77,12 +77,7 @@ Result<std::string> rewriteProgram(const RescheduleInput& input,
     }
     std::vector<ClRecord> records = all;
     std::copy(passRecords.begin(), passRecords.end(), records.begin() + input.passFirst);
-    if (input.machine->turnsAboutY()) { // back to the program's workpiece frame
-        for (ClRecord& record : records) {
-            record.tip = input.machine->toProgramFrame(record.tip);
-            record.axis = input.machine->toProgramFrame(record.axis);
-        }
-    }
+    io::toProgramFrame(records, *input.machine);
     if (const auto* table = std::get_if<io::table::TableProgram>(&input.program->document)) {
         return io::table::rewritePointTable(*table, records);
     }

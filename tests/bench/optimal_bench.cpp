@@ -90,19 +90,27 @@ void BM_EngineBestPerLayer(benchmark::State& state) {
 }
 BENCHMARK(BM_EngineBestPerLayer)->Unit(benchmark::kMillisecond);
 
-void BM_OptimalQpPerLayer(benchmark::State& state) {
-    const Demo& d = demo();
+// Every layer's smoothest schedule once per iteration; false (the benchmark skipped) when one
+// fails.
+bool solveEveryLayerSmoothest(benchmark::State& state, const Demo& d) {
     for (auto _ : state) {
         for (const auto& bounds : d.bounds) {
             auto layer = optimal::smoothestLayer(bounds);
             if (!layer) {
-                state.SkipWithError("optimal-qp failed");
-                return;
+                state.SkipWithError(("optimal-qp failed: " + layer.error().message).c_str());
+                return false;
             }
             benchmark::DoNotOptimize(layer);
         }
     }
-    reportPerLayer(state, d.bounds.size());
+    return true;
+}
+
+void BM_OptimalQpPerLayer(benchmark::State& state) {
+    const Demo& d = demo();
+    if (solveEveryLayerSmoothest(state, d)) {
+        reportPerLayer(state, d.bounds.size());
+    }
 }
 BENCHMARK(BM_OptimalQpPerLayer)->Unit(benchmark::kMillisecond);
 
@@ -124,18 +132,10 @@ BENCHMARK(BM_OptimalLpPerLayer)->Unit(benchmark::kMillisecond);
 
 void BM_OptimalQpFortyLayerProgram(benchmark::State& state) {
     const Demo& d = fortyLayers();
-    for (auto _ : state) {
-        for (const auto& bounds : d.bounds) {
-            auto layer = optimal::smoothestLayer(bounds);
-            if (!layer) {
-                state.SkipWithError(("optimal-qp failed: " + layer.error().message).c_str());
-                return;
-            }
-            benchmark::DoNotOptimize(layer);
-        }
+    if (solveEveryLayerSmoothest(state, d)) {
+        state.counters["points"] = static_cast<double>(d.input.centres.size());
+        reportPerLayer(state, d.bounds.size());
     }
-    state.counters["points"] = static_cast<double>(d.input.centres.size());
-    reportPerLayer(state, d.bounds.size());
 }
 BENCHMARK(BM_OptimalQpFortyLayerProgram)->Unit(benchmark::kMillisecond)->Iterations(1);
 

@@ -89,10 +89,10 @@ double maxAbs(std::span<const double> values) {
 constexpr double kReportedQuantile = 0.999;
 
 // Peaks and percentiles of the stored samples (the spline takes them while making the samples).
+// The jerk's peak is taken by the method, which does not keep the jerk at every sample.
 void takeSampleFigures(AxisSeries& series) {
     series.peakVelocity = maxAbs(series.velocity);
     series.peakAcceleration = maxAbs(series.acceleration);
-    series.peakJerk = maxAbs(series.jerk);
     series.p999Velocity = absPercentile(series.velocity, kReportedQuantile);
     series.p999Acceleration = absPercentile(series.acceleration, kReportedQuantile);
 }
@@ -101,11 +101,13 @@ void finiteDifferences(std::span<const double> s, double feed, AxisSeries& serie
     firstDifference(s, series.position, series.velocity);
     secondDifference(s, series.position, series.acceleration);
     // The raw third difference: the 3-point slope of q'' (still exact, zero, for quadratics).
-    firstDifference(s, series.acceleration, series.jerk);
+    std::vector<double> jerk;
+    firstDifference(s, series.acceleration, jerk);
     scale(series.velocity, feed);
     scale(series.acceleration, feed * feed);
-    scale(series.jerk, feed * feed * feed);
+    scale(jerk, feed * feed * feed);
     takeSampleFigures(series);
+    series.peakJerk = maxAbs(jerk);
 }
 
 Status validateKnots(std::span<const std::size_t> knots, std::size_t n) {
@@ -128,17 +130,18 @@ void filteredDerivatives(std::span<const double> s, double feed, double filterSe
     const std::size_t n = s.size();
     series.velocity.resize(n);
     series.acceleration.resize(n);
-    series.jerk.resize(n);
+    double sampledJerkPeak = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         const double t = (s[i] - s.front()) / feed;
         series.velocity[i] = sampleAt(filtered.velocity, filtered.step, t);
         series.acceleration[i] = sampleAt(filtered.acceleration, filtered.step, t);
-        series.jerk[i] = sampleAt(filtered.jerk, filtered.step, t);
+        sampledJerkPeak =
+            std::max(sampledJerkPeak, std::abs(sampleAt(filtered.jerk, filtered.step, t)));
     }
     takeSampleFigures(series);
     series.peakVelocity = std::max(series.peakVelocity, maxAbs(filtered.velocity));
     series.peakAcceleration = std::max(series.peakAcceleration, maxAbs(filtered.acceleration));
-    series.peakJerk = std::max(series.peakJerk, maxAbs(filtered.jerk));
+    series.peakJerk = std::max(sampledJerkPeak, maxAbs(filtered.jerk));
 }
 
 // The knots of the derivative spline: ascending sample indices, or every sample (`indices`
@@ -189,17 +192,15 @@ void sampleSpline(std::span<const double> s, const SplineKnots& knots,
     const double feed3 = feed2 * feed;
     series.velocity.resize(s.size());
     series.acceleration.resize(s.size());
-    series.jerk.resize(s.size());
     double peakVelocity = 0.0, peakAcceleration = 0.0, peakJerk = 0.0;
     AbsPercentile velocityQuantile(s.size(), kReportedQuantile);
     AbsPercentile accelerationQuantile(s.size(), kReportedQuantile);
     const auto store = [&](std::size_t i, double velocity, double acceleration, double jerk) {
         series.velocity[i] = velocity * feed;
         series.acceleration[i] = acceleration * feed2;
-        series.jerk[i] = jerk * feed3;
         peakVelocity = std::max(peakVelocity, std::abs(series.velocity[i]));
         peakAcceleration = std::max(peakAcceleration, std::abs(series.acceleration[i]));
-        peakJerk = std::max(peakJerk, std::abs(series.jerk[i]));
+        peakJerk = std::max(peakJerk, std::abs(jerk * feed3));
         velocityQuantile.add(series.velocity[i]);
         accelerationQuantile.add(series.acceleration[i]);
     };
@@ -365,7 +366,6 @@ std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s,
             const std::size_t n = series.position.size();
             series.velocity.assign(n, 0.0);
             series.acceleration.assign(n, 0.0);
-            series.jerk.assign(n, 0.0);
             continue;
         }
         movingIndex.push_back(k);

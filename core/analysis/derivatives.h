@@ -12,7 +12,8 @@
 namespace bladeaxis::analysis {
 
 // Differentiates `position` (samples at the strictly increasing path parameter s, mm) and
-// returns the series with velocity, acceleration, jerk, peaks and percentiles at feed F (mm/s).
+// returns the series with velocity and acceleration, the peaks (the jerk's too) and percentiles at
+// feed F (mm/s).
 // Errors: InvalidArgument (sizes differ, s not strictly increasing, F not positive),
 // Geometry (a non-finite value, or derivatives that overflow).
 // filterSeconds is the window of DerivativeMethod::Filtered (ignored otherwise); its peaks are

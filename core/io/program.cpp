@@ -326,6 +326,24 @@ Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileN
     return LoadedProgram{std::move(*program), resolved};
 }
 
+Result<std::size_t> streamProgramRecords(std::string_view text, std::string_view fileName,
+                                         ProgramFormat format,
+                                         const kinematics::MachineModel& machine,
+                                         const ReadOptions& options,
+                                         const nc::RecordChunkConsumer& consume) {
+    if (format == ProgramFormat::Gcode) {
+        return nc::streamGcodeRecords(text, fileName, machine, options, consume);
+    }
+    auto program = parseTextFormat(text, fileName, format, options);
+    if (!program) {
+        return std::unexpected(program.error());
+    }
+    std::vector<toolpath::ClRecord>& records = program->mutablePath().records;
+    toEngineFrame(records, machine);
+    consume(0, records);
+    return records.size();
+}
+
 Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,
                                    ProgramFormat format, const kinematics::MachineModel& machine,
                                    const ReadOptions& options) {

@@ -91,36 +91,42 @@ struct WrittenProgram {
     std::vector<double> passFeeds; // mm/s
 };
 
-// The text is lent to the re-read program, which keeps it without a copy (a million-block
-// program is 60 MB), and given back when the check is done.
-Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string& text) {
+// The written text is read back as a stream: each record is compared with the input's as it
+// is read and then dropped, so the check never holds a second program (about 140 bytes per
+// record) beside the first.
+Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string_view text) {
     const toolpath::Toolpath& original = input.program->path();
-    auto reread =
-        io::parseOwnedProgram(std::move(text), original.sourceFile + " (re-scheduled)",
-                              input.program->format(), *input.machine, input.program->options);
-    if (!reread) {
-        Error error = reread.error();
+    const std::size_t passEnd = input.passFirst + input.passCount;
+    WrittenProgram written;
+    written.passFeeds.reserve(input.passCount);
+    const auto compare = [&](std::size_t first, std::span<const ClRecord> records) {
+        const std::size_t begin = std::max(first, input.passFirst);
+        const std::size_t end =
+            std::min({first + records.size(), passEnd, original.records.size()});
+        for (std::size_t i = begin; i < end; ++i) {
+            const ClRecord& reread = records[i - first];
+            written.maxCentreDeviationMm =
+                std::max(written.maxCentreDeviationMm,
+                         (toolpath::ballCentre(reread, input.toolRadius) -
+                          toolpath::ballCentre(original.records[i], input.toolRadius))
+                             .norm());
+            written.passFeeds.push_back(reread.feed);
+        }
+    };
+    auto count = io::streamProgramRecords(text, original.sourceFile + " (re-scheduled)",
+                                          input.program->format(), *input.machine,
+                                          input.program->options, compare);
+    if (!count) {
+        Error error = count.error();
         error.code = ErrorCode::Internal;
         error.message = "the re-scheduled program does not read back: " + error.message;
         return std::unexpected(error);
     }
-    const auto& records = reread->path().records;
-    if (records.size() != original.records.size()) {
-        return makeError(ErrorCode::Internal,
-                         "the re-scheduled program has " + std::to_string(records.size()) +
-                             " records, the input " + std::to_string(original.records.size()));
+    if (*count != original.records.size()) {
+        return makeError(ErrorCode::Internal, "the re-scheduled program has " +
+                                                  std::to_string(*count) + " records, the input " +
+                                                  std::to_string(original.records.size()));
     }
-    WrittenProgram written;
-    written.passFeeds.reserve(input.passCount);
-    for (std::size_t i = input.passFirst; i < input.passFirst + input.passCount; ++i) {
-        written.maxCentreDeviationMm =
-            std::max(written.maxCentreDeviationMm,
-                     (toolpath::ballCentre(records[i], input.toolRadius) -
-                      toolpath::ballCentre(original.records[i], input.toolRadius))
-                         .norm());
-        written.passFeeds.push_back(records[i].feed);
-    }
-    text = reread->releaseText();
     return written;
 }
 

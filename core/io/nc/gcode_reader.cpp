@@ -96,13 +96,13 @@ struct StatedTool {
 };
 
 // The ball radius the header comments state (tools stated before the first move), converted to
-// mm; a warning instead where they state no ball end or disagree, so the radius must be given.
-void applyStatedTools(const std::vector<StatedTool>& tools, GcodeProgram& program) {
+// mm (`inch`: the first move is in inches); a warning instead where they state no ball end or
+// disagree, so the radius must be given.
+void applyStatedTools(const std::vector<StatedTool>& tools, bool inch, GcodeProgram& program) {
     if (tools.empty() || program.path.toolRadius) { // a Heidenhain TOOL DEF states it exactly
         return;
     }
     const std::string& file = program.path.sourceFile;
-    const bool inch = !program.sources.empty() && (program.sources.front().flags & kInch) != 0;
     const double toMm = inch ? 25.4 : 1.0;
     for (const StatedTool& stated : tools) {
         if (!stated.tool.isBallEnd()) {
@@ -125,12 +125,48 @@ void applyStatedTools(const std::vector<StatedTool>& tools, GcodeProgram& progra
     program.path.toolRadius = tools.front().tool.cornerRadius * toMm;
 }
 
-void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machine,
-                    const ReadOptions& options, detail::ErrorList& errors) {
+// Where the records the interpreter makes go: they stay in the program, or a streamed read
+// hands them to its consumer in runs and clears them (with their sources and feeds).
+class RecordOutlet {
+  public:
+    explicit RecordOutlet(const RecordChunkConsumer* consume) : m_consume(consume) {}
+
+    void afterBlock(GcodeProgram& program) {
+        if (!m_firstInch && !program.sources.empty()) {
+            m_firstInch = (program.sources.front().flags & kInch) != 0;
+        }
+        if (m_consume != nullptr && program.path.records.size() >= kStreamChunkRecords) {
+            handOn(program);
+        }
+    }
+
+    void handOn(GcodeProgram& program) {
+        if (m_consume == nullptr || program.path.records.empty()) {
+            return;
+        }
+        (*m_consume)(m_handedOn, program.path.records);
+        m_handedOn += program.path.records.size();
+        program.path.records.clear();
+        program.sources.clear();
+        program.programmedFeeds.clear();
+    }
+
+    bool firstRecordInInches() const { return m_firstInch.value_or(false); }
+
+  private:
+    const RecordChunkConsumer* m_consume;
+    std::size_t m_handedOn = 0;
+    std::optional<bool> m_firstInch;
+};
+
+// Interprets every line of `text` (the program's own text, or the text a streamed read
+// borrows) and returns the number of records made.
+std::size_t interpretLines(GcodeProgram& program, std::string_view text,
+                           const kinematics::MachineModel& machine, const ReadOptions& options,
+                           detail::ErrorList& errors, RecordOutlet& outlet) {
     std::vector<StatedTool> statedTools;
     detail::ModalInterpreter interpreter(program, machine, errors, options.angleUnit);
     detail::ScannedBlock block;
-    const std::string_view text = program.text;
     std::size_t begin = byteOrderMarkLength(text); // an editor's UTF-8 mark is not a word
     int lineNumber = 0;
     bool ended = false;
@@ -151,7 +187,7 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
                 interpreter.noteDeclaredUnit(*unit, lineNumber);
             }
         }
-        if (program.path.records.empty()) {
+        if (interpreter.recordCount() == 0) {
             if (const auto tool = detail::toolInComment(line)) {
                 statedTools.push_back({*tool, lineNumber});
             }
@@ -169,6 +205,7 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
             break;
         } else {
             interpreter.apply(block, line, static_cast<std::uint32_t>(begin), lineNumber);
+            outlet.afterBlock(program);
             if (block.programEnd && !ended) {
                 ended = true;
                 endLine = lineNumber;
@@ -177,7 +214,8 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
         begin = end + 1;
     }
     interpreter.finish();
-    applyStatedTools(statedTools, program);
+    outlet.handOn(program);
+    applyStatedTools(statedTools, outlet.firstRecordInInches(), program);
     // [A] A program cut short (a failed transfer, a full disk) still parses block by block;
     // without its M2/M30 the engineer must be told, since the re-scheduled copy would be as
     // short.
@@ -186,11 +224,12 @@ void interpretLines(GcodeProgram& program, const kinematics::MachineModel& machi
             SourceLocation{std::string(errors.fileName()), lineNumber, 0}.toString() +
             ": no program end (M2 or M30): the file may be truncated");
     }
+    return interpreter.recordCount();
 }
 
-Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
-                                    const kinematics::MachineModel& machine,
-                                    const ReadOptions& options) {
+// The checks before the first line and the program's dialect; `text` is the whole program.
+Status prepareProgram(std::string_view text, std::string_view fileName, const ReadOptions& options,
+                      GcodeProgram& program) {
     if (text.size() > kMaxTextBytes) {
         return std::unexpected(
             parseErrorAt(fileName, 1, "file too large: expected at most 4 GiB of G-code"));
@@ -199,14 +238,12 @@ Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
         return std::unexpected(
             parseErrorAt(fileName, 1, "empty file: expected G-code blocks with G0/G1 moves"));
     }
-    GcodeProgram program;
-    program.text = std::move(text);
     program.path.sourceFile = std::string(fileName);
     program.path.format = toolpath::SourceFormat::Gcode;
     if (options.dialect) {
         program.dialect = *options.dialect;
     } else {
-        DetectedDialect detected = detectDialect(program.text, fileName);
+        DetectedDialect detected = detectDialect(text, fileName);
         program.dialect = detected.dialect;
         if (detected.warning) {
             program.path.warnings.push_back(std::move(*detected.warning));
@@ -218,16 +255,38 @@ Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
                                                 toString(program.dialect) +
                                                 " program states its rotary axes in degrees"));
     }
-    reserveForLines(program, machine);
+    return {};
+}
 
+// Interprets the prepared program's lines; the errors of the whole read, or none.
+Status interpretProgram(GcodeProgram& program, std::string_view text, std::string_view fileName,
+                        const kinematics::MachineModel& machine, const ReadOptions& options,
+                        RecordOutlet& outlet) {
     detail::ErrorList errors(fileName, kMaxParseErrors);
-    interpretLines(program, machine, options, errors);
+    const std::size_t records = interpretLines(program, text, machine, options, errors, outlet);
     if (!errors.empty()) {
         return std::unexpected(errors.take());
     }
-    if (program.path.records.empty()) {
+    if (records == 0) {
         return std::unexpected(parseErrorAt(
             fileName, 1, "no moves: expected G0/G1 blocks that program X, Y, Z and A"));
+    }
+    return {};
+}
+
+Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
+                                    const kinematics::MachineModel& machine,
+                                    const ReadOptions& options) {
+    GcodeProgram program;
+    if (Status ready = prepareProgram(text, fileName, options, program); !ready) {
+        return std::unexpected(ready.error());
+    }
+    program.text = std::move(text);
+    reserveForLines(program, machine);
+    RecordOutlet keepAll(nullptr);
+    if (Status read = interpretProgram(program, program.text, fileName, machine, options, keepAll);
+        !read) {
+        return std::unexpected(read.error());
     }
     // Shrinking copies the records, so it is done only when the reservation was mostly wasted
     // (comment-heavy files), never for large motion programs where it would double the peak.
@@ -251,6 +310,29 @@ Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName
                                      const kinematics::MachineModel& machine,
                                      const ReadOptions& options) {
     return parseOwnedText(std::move(text), fileName, machine, options);
+}
+
+Result<std::size_t> streamGcodeRecords(std::string_view text, std::string_view fileName,
+                                       const kinematics::MachineModel& machine,
+                                       const ReadOptions& options,
+                                       const RecordChunkConsumer& consume) {
+    GcodeProgram program;
+    if (Status ready = prepareProgram(text, fileName, options, program); !ready) {
+        return std::unexpected(ready.error());
+    }
+    program.path.records.reserve(kStreamChunkRecords);
+    program.sources.reserve(kStreamChunkRecords);
+    std::size_t records = 0;
+    const RecordChunkConsumer counting = [&](std::size_t first,
+                                             std::span<const toolpath::ClRecord> chunk) {
+        records = first + chunk.size();
+        consume(first, chunk);
+    };
+    RecordOutlet outlet(&counting);
+    if (Status read = interpretProgram(program, text, fileName, machine, options, outlet); !read) {
+        return std::unexpected(read.error());
+    }
+    return records;
 }
 
 Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,

@@ -33,7 +33,10 @@
 #include "core/io/read_options.h"
 #include "core/kinematics/machine_model.h"
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -50,6 +53,24 @@ Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName
 Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName,
                                      const kinematics::MachineModel& machine,
                                      const ReadOptions& options = {});
+
+// A run of consecutive records of a streamed program; `first` is the index of records[0] in the
+// whole program.
+using RecordChunkConsumer =
+    std::function<void(std::size_t first, std::span<const toolpath::ClRecord> records)>;
+
+// The most records a streamed read hands on at a time.
+inline constexpr std::size_t kStreamChunkRecords = 4096;
+
+// Reads `text` as parseGcode does (the same records, checks and errors) but keeps none of its
+// records: they go to `consume` in order, in runs of at most kStreamChunkRecords. A check that
+// looks at each record once, such as reading a written program back, then holds a few hundred
+// kilobytes instead of about 140 bytes per record. Returns the number of records. On an error
+// `consume` may already have seen the records before it.
+Result<std::size_t> streamGcodeRecords(std::string_view text, std::string_view fileName,
+                                       const kinematics::MachineModel& machine,
+                                       const ReadOptions& options,
+                                       const RecordChunkConsumer& consume);
 
 // Reads the whole file (FileNotFound / FileUnreadable) and parses it.
 Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,

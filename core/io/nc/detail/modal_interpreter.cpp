@@ -496,7 +496,7 @@ void ModalInterpreter::addRecord(const Context& at, std::uint8_t axisWords) {
         return;
     }
     fillSource(m_program.sources.emplace_back(), at, axisWords);
-    if (m_program.path.records.empty() && m_definedRadius) {
+    if (m_recordCount++ == 0 && m_definedRadius) {
         m_program.path.toolRadius = *m_definedRadius;
     }
     if (!(m_known & m_tiltBit) && !m_warnedDefaultB && m_machine.hasB()) {

@@ -38,6 +38,10 @@ class ModalInterpreter {
     void noteDeclaredUnit(AngleUnit unit, int lineNumber);
     bool rotaryWordSeen() const { return m_firstRotaryLine > 0; }
 
+    // Records made so far. A streamed read hands the program's records on and clears them, so
+    // their count is kept here.
+    std::size_t recordCount() const { return m_recordCount; }
+
     // The checks that need the whole program: an angle unit the values cannot decide, axis words
     // with and without a decimal point mixed. Records the unit read in the program.
     void finish();
@@ -107,6 +111,7 @@ class ModalInterpreter {
     kinematics::IntegerWords m_integerWords = kinematics::IntegerWords::RefuseMixed;
     std::optional<Vec3> m_lastTip;
     std::optional<std::array<double, 5>> m_lastRecordPosition; // for the combined-axes time
+    std::size_t m_recordCount = 0;
 
     std::optional<AngleUnit> m_angleUnit; // given or declared; empty: degrees, checked in finish
     int m_unitDeclarationLine = 0;        // the header comment that declared it, if any

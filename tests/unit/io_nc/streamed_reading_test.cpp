@@ -1,0 +1,110 @@
+// A streamed read (streamGcodeRecords) must see exactly the records a whole parse gives, in the
+// same order, and refuse exactly what a whole parse refuses: the re-read check of a written
+// program relies on it instead of parsing the program a second time.
+
+#include "core/io/nc/gcode_reader.h"
+#include "tests/unit/io_nc/gcode_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace bladeaxis::io::nc {
+namespace {
+
+using toolpath::ClRecord;
+
+// A helical pass of `moves` feed blocks, long enough to span several runs of a streamed read.
+// It switches to inverse time (G93) halfway, where a record's feed depends on the tip of the
+// record before it, so a run boundary inside that part must not lose the previous tip.
+std::string helicalProgram(int moves) {
+    std::string text = "%\nO1000 (ANGLES IN DEGREES)\nG90 G94 G21\nG0 X0. Y0. Z80. A0. B12.\n";
+    for (int i = 0; i < moves; ++i) {
+        if (i == moves / 2) {
+            text += "G93\n";
+        }
+        const double a = 0.37 * i;
+        const double y = 40.0 * std::cos(a * 3.14159265358979 / 180.0);
+        const double z = 40.0 * std::sin(a * 3.14159265358979 / 180.0);
+        text += "G1 X" + std::to_string(0.01 * i) + " Y" + std::to_string(y) + " Z" +
+                std::to_string(z) + " A" + std::to_string(a) +
+                (i >= moves / 2 ? " F" + std::to_string(500 + i % 7) : " F1200.") + "\n";
+    }
+    text += "M30\n%\n";
+    return text;
+}
+
+struct StreamedRecords {
+    std::vector<ClRecord> records;
+    std::vector<std::size_t> runSizes;
+    bool contiguous = true;
+};
+
+Result<std::size_t> stream(std::string_view text, StreamedRecords& seen) {
+    return streamGcodeRecords(text, "t.nc", kinematics::defaultBladeMachine(), {},
+                              [&](std::size_t first, std::span<const ClRecord> run) {
+                                  seen.contiguous = seen.contiguous && first == seen.records.size();
+                                  seen.runSizes.push_back(run.size());
+                                  seen.records.insert(seen.records.end(), run.begin(), run.end());
+                              });
+}
+
+void expectSameRecord(const ClRecord& streamed, const ClRecord& parsed, std::size_t index) {
+    EXPECT_EQ(streamed.tip, parsed.tip) << index;
+    EXPECT_EQ(streamed.axis, parsed.axis) << index;
+    ASSERT_TRUE(streamed.axes && parsed.axes) << index;
+    EXPECT_EQ(streamed.axes->x, parsed.axes->x) << index;
+    EXPECT_EQ(streamed.axes->a, parsed.axes->a) << index;
+    EXPECT_EQ(streamed.axes->b, parsed.axes->b) << index;
+    EXPECT_EQ(streamed.feed, parsed.feed) << index;
+    EXPECT_EQ(streamed.motion, parsed.motion) << index;
+    EXPECT_EQ(streamed.line, parsed.line) << index;
+}
+
+TEST(StreamedReading, HandsOnEveryRecordAWholeParseGivesInOrderAndInBoundedRuns) {
+    const std::string text = helicalProgram(3 * static_cast<int>(kStreamChunkRecords) + 517);
+    const auto parsed = parseGcode(text, "t.nc", kinematics::defaultBladeMachine());
+    ASSERT_TRUE(parsed.has_value()) << parsed.error().toString();
+    StreamedRecords seen;
+    const auto count = stream(text, seen);
+    ASSERT_TRUE(count.has_value()) << count.error().toString();
+
+    EXPECT_EQ(*count, parsed->path.records.size());
+    ASSERT_EQ(seen.records.size(), parsed->path.records.size());
+    EXPECT_TRUE(seen.contiguous);
+    EXPECT_GE(seen.runSizes.size(), 4u);
+    for (std::size_t size : seen.runSizes) {
+        EXPECT_LE(size, kStreamChunkRecords);
+        EXPECT_GT(size, 0u);
+    }
+    for (std::size_t i = 0; i < seen.records.size(); ++i) {
+        expectSameRecord(seen.records[i], parsed->path.records[i], i);
+    }
+}
+
+TEST(StreamedReading, RefusesWhatAWholeParseRefusesWithTheSameMessage) {
+    std::string text = helicalProgram(2 * static_cast<int>(kStreamChunkRecords));
+    // A macro variable deep in the program, after runs have been handed on.
+    text.insert(text.rfind("M30"), "#1=5\n");
+    const auto parsed = parseGcode(text, "t.nc", kinematics::defaultBladeMachine());
+    ASSERT_FALSE(parsed.has_value());
+    StreamedRecords seen;
+    const auto count = stream(text, seen);
+    ASSERT_FALSE(count.has_value());
+    EXPECT_EQ(count.error().toString(), parsed.error().toString());
+    EXPECT_EQ(count.error().code, ErrorCode::Parse);
+}
+
+TEST(StreamedReading, RefusesAProgramWithoutMovesLikeAWholeParse) {
+    const std::string text = "%\nO1000\nG90 G21\nM30\n%\n";
+    StreamedRecords seen;
+    const auto count = stream(text, seen);
+    ASSERT_FALSE(count.has_value());
+    EXPECT_NE(count.error().message.find("no moves"), std::string::npos);
+    EXPECT_TRUE(seen.records.empty());
+}
+
+} // namespace
+} // namespace bladeaxis::io::nc

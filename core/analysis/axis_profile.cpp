@@ -12,12 +12,17 @@ namespace bladeaxis::analysis {
 
 namespace {
 
-std::string recordName(std::size_t index, const toolpath::ClRecord& record) {
+std::string recordName(std::size_t index, int line) {
     std::string name = "record " + std::to_string(index);
-    if (record.line > 0) {
-        name += " (line " + std::to_string(record.line) + ")";
+    if (line > 0) {
+        name += " (line " + std::to_string(line) + ")";
     }
     return name;
+}
+
+bool lentSeriesFit(const PathSamples& path) {
+    const auto fits = [&](std::size_t lent) { return lent == 0 || lent == path.size(); };
+    return fits(path.tips.size()) && fits(path.toolAxes.size()) && fits(path.feeds.size());
 }
 
 bool axesFinite(const kinematics::MachineAxes& m) {
@@ -28,15 +33,18 @@ bool axesFinite(const kinematics::MachineAxes& m) {
 // Also stores the positive programmed feeds, a run of one feed once, for chooseFeed: gathered in
 // the same pass, as a pass over the records (over 100 bytes each) costs about as much as the
 // checks.
-Status validateInput(std::span<const kinematics::MachineAxes> axes,
-                     std::span<const toolpath::ClRecord> records, const AxisProfileOptions& options,
-                     std::vector<double>& feedRuns) {
-    if (axes.size() != records.size()) {
-        return makeError(ErrorCode::InvalidArgument,
-                         "axis motion: " + std::to_string(axes.size()) + " axis sets for " +
-                             std::to_string(records.size()) + " records");
+Status validateInput(std::span<const kinematics::MachineAxes> axes, const PathSamples& path,
+                     const AxisProfileOptions& options, std::vector<double>& feedRuns) {
+    if (axes.size() != path.size()) {
+        return makeError(ErrorCode::InvalidArgument, "axis motion: " + std::to_string(axes.size()) +
+                                                         " axis sets for " +
+                                                         std::to_string(path.size()) + " records");
     }
-    if (records.empty()) {
+    if (!lentSeriesFit(path)) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "axis motion: the new tips, tool axes or feeds are not one per record");
+    }
+    if (path.size() == 0) {
         return makeError(ErrorCode::InvalidArgument, "axis motion: no records to analyse");
     }
     if (!std::isfinite(options.feedOverride) || options.feedOverride < 0.0) {
@@ -49,19 +57,19 @@ Status validateInput(std::span<const kinematics::MachineAxes> axes,
                          "feed reference 'centre' needs a tool radius > 0 mm, got " +
                              std::to_string(options.toolRadius));
     }
-    for (std::size_t i = 0; i < records.size(); ++i) {
-        const toolpath::ClRecord& r = records[i];
-        const bool poseOk = r.tip.allFinite() && (!centre || r.axis.allFinite());
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const bool poseOk = path.tip(i).allFinite() && (!centre || path.toolAxis(i).allFinite());
         if (!poseOk || !axesFinite(axes[i])) {
-            return makeError(ErrorCode::Geometry,
-                             "non-finite tool pose or machine axis at " + recordName(i, r));
+            return makeError(ErrorCode::Geometry, "non-finite tool pose or machine axis at " +
+                                                      recordName(i, path.line(i)));
         }
-        if (!std::isfinite(r.feed) || r.feed < 0.0) {
-            return makeError(ErrorCode::Geometry, "invalid feed " + std::to_string(r.feed) +
-                                                      " mm/s at " + recordName(i, r));
+        const double feed = path.feed(i);
+        if (!std::isfinite(feed) || feed < 0.0) {
+            return makeError(ErrorCode::Geometry, "invalid feed " + std::to_string(feed) +
+                                                      " mm/s at " + recordName(i, path.line(i)));
         }
-        if (r.feed > 0.0 && (feedRuns.empty() || r.feed != feedRuns.back())) {
-            feedRuns.push_back(r.feed);
+        if (feed > 0.0 && (feedRuns.empty() || feed != feedRuns.back())) {
+            feedRuns.push_back(feed);
         }
     }
     return {};
@@ -69,8 +77,7 @@ Status validateInput(std::span<const kinematics::MachineAxes> axes,
 
 // The one constant feed of the analysis (see AxisProfileOptions::feedOverride). feeds: the
 // positive programmed feeds, a run of one feed once (validateInput).
-Result<double> chooseFeed(std::span<const toolpath::ClRecord> records, double feedOverride,
-                          std::vector<double> feeds) {
+Result<double> chooseFeed(const PathSamples& path, double feedOverride, std::vector<double> feeds) {
     if (feedOverride > 0.0) {
         return feedOverride;
     }
@@ -83,9 +90,9 @@ Result<double> chooseFeed(std::span<const toolpath::ClRecord> records, double fe
     }
     // Varying feeds: the median over records, not over runs, so every record counts once.
     feeds.clear();
-    for (const toolpath::ClRecord& r : records) {
-        if (r.feed > 0.0) {
-            feeds.push_back(r.feed);
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        if (path.feed(i) > 0.0) {
+            feeds.push_back(path.feed(i));
         }
     }
     const std::size_t mid = feeds.size() / 2;
@@ -99,27 +106,27 @@ Result<double> chooseFeed(std::span<const toolpath::ClRecord> records, double fe
 
 // Fills pathParameter, time and sampleRecord; drops points closer than kMinPathStepMm to the last
 // kept one (distance to the kept point, so creeping sub-threshold steps still add up).
-void buildPathParameter(std::span<const toolpath::ClRecord> records,
-                        const AxisProfileOptions& options, AxisProfile& profile) {
+void buildPathParameter(const PathSamples& path, const AxisProfileOptions& options,
+                        AxisProfile& profile) {
     const bool centre = options.feedReference == FeedReference::Centre;
     const double radius = options.toolRadius;
-    auto pointOf = [&](const toolpath::ClRecord& r) -> Vec3 {
-        return centre ? Vec3(r.tip + radius * r.axis) : r.tip;
+    auto pointOf = [&](std::size_t i) -> Vec3 {
+        return centre ? Vec3(path.tip(i) + radius * path.toolAxis(i)) : path.tip(i);
     };
     const bool timed = options.blockTimes && !centre;
-    profile.pathParameter.reserve(records.size());
-    profile.time.reserve(records.size());
-    profile.sampleRecord.reserve(records.size());
+    profile.pathParameter.reserve(path.size());
+    profile.time.reserve(path.size());
+    profile.sampleRecord.reserve(path.size());
     const auto addSample = [&](double s, std::size_t record) {
         profile.pathParameter.push_back(s);
         profile.time.push_back(s / profile.feed);
         profile.sampleRecord.push_back(record);
     };
-    Vec3 last = pointOf(records[0]);
+    Vec3 last = pointOf(0);
     double s = 0.0, length = 0.0;
     addSample(0.0, 0);
-    for (std::size_t i = 1; i < records.size(); ++i) {
-        const Vec3 p = pointOf(records[i]);
+    for (std::size_t i = 1; i < path.size(); ++i) {
+        const Vec3 p = pointOf(i);
         const double step = (p - last).norm();
         if (!(step >= kMinPathStepMm)) {
             ++profile.mergedDuplicates;
@@ -127,7 +134,7 @@ void buildPathParameter(std::span<const toolpath::ClRecord> records,
         }
         // A merged record's block time is carried by the next kept one: its chord is measured
         // from the last kept point, and the feed of the block that ends there times it.
-        const double feed = records[i].feed;
+        const double feed = path.feed(i);
         s += timed && feed > 0.0 ? step * profile.feed / feed : step;
         length += step;
         last = p;
@@ -163,13 +170,12 @@ std::vector<std::vector<double>> sampledAxes(std::span<const kinematics::Machine
 } // namespace
 
 Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> axes,
-                                      std::span<const toolpath::ClRecord> records,
-                                      const AxisProfileOptions& options) {
+                                      const PathSamples& path, const AxisProfileOptions& options) {
     std::vector<double> feedRuns;
-    if (Status ok = validateInput(axes, records, options, feedRuns); !ok) {
+    if (Status ok = validateInput(axes, path, options, feedRuns); !ok) {
         return std::unexpected(std::move(ok.error()));
     }
-    const Result<double> feed = chooseFeed(records, options.feedOverride, std::move(feedRuns));
+    const Result<double> feed = chooseFeed(path, options.feedOverride, std::move(feedRuns));
     if (!feed) {
         return std::unexpected(feed.error());
     }
@@ -177,7 +183,7 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
     profile.feed = *feed;
     profile.feedReference = options.feedReference;
     profile.method = options.method;
-    buildPathParameter(records, options, profile);
+    buildPathParameter(path, options, profile);
     profile.cycleTime = profile.pathParameter.back() / profile.feed;
     const std::size_t n = profile.pathParameter.size();
     std::vector<std::size_t> knots;

@@ -91,13 +91,39 @@ struct AxisProfile {
     const AxisSeries& axis(kinematics::AxisId id) const { return axes[static_cast<int>(id)]; }
 };
 
+// The tool path an analysis reads: a program's records, or new tool poses over them. A
+// re-scheduled pass keeps each record's feed and source line and has new tips and tool axes;
+// when the written program times its blocks anew, its feeds too. Lending the new poses this way
+// spares a copy of every record (112 bytes each) for the analysis of the new motion.
+struct PathSamples {
+    std::span<const toolpath::ClRecord> records;
+    std::span<const Vec3> tips = {};     // empty: the records' tips
+    std::span<const Vec3> toolAxes = {}; // empty: the records' tool axes
+    std::span<const double> feeds = {};  // empty: the records' feeds (mm/s)
+
+    std::size_t size() const { return records.size(); }
+    const Vec3& tip(std::size_t i) const { return tips.empty() ? records[i].tip : tips[i]; }
+    const Vec3& toolAxis(std::size_t i) const {
+        return toolAxes.empty() ? records[i].axis : toolAxes[i];
+    }
+    double feed(std::size_t i) const { return feeds.empty() ? records[i].feed : feeds[i]; }
+    int line(std::size_t i) const { return records[i].line; }
+};
+
 // axes: machine axes per record (A already continuous: see unwrapRotary for modulo programs);
-// records: tip and tool axis per record (for s) and the programmed feeds.
+// path: tip and tool axis per record (for s) and the programmed feeds. Errors also when the
+// poses or feeds lent in `path` are not one per record.
 // Errors: InvalidArgument (sizes differ, empty input, no usable feed, bad options), Geometry
 // (a non-finite coordinate, axis value or feed, named with its record index and source line).
 // A single sample (one record, or all records merged) gives zero derivatives.
 Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> axes,
-                                      std::span<const toolpath::ClRecord> records,
-                                      const AxisProfileOptions& options);
+                                      const PathSamples& path, const AxisProfileOptions& options);
+
+// The analysis of a program's own records.
+inline Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> axes,
+                                             std::span<const toolpath::ClRecord> records,
+                                             const AxisProfileOptions& options) {
+    return analyseAxisMotion(axes, PathSamples{.records = records}, options);
+}
 
 } // namespace bladeaxis::analysis

@@ -257,8 +257,10 @@ Status cadCheckInto(JobResult& result, const JobSpec& spec, const CadCheckSpec& 
     view.original =
         std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
     view.sourceFile = result.program.path().sourceFile;
+    std::vector<toolpath::ClRecord> rescheduled;
     if (result.rescheduled) {
-        view.rescheduled = result.rescheduled->records;
+        rescheduled = rescheduledRecords(view.original, *result.rescheduled);
+        view.rescheduled = rescheduled;
         // Layers share their junction sample; the clearance report wants a partition.
         const auto& layers = result.rescheduled->schedule.layers;
         for (std::size_t k = 0; k < layers.size(); ++k) {

@@ -91,7 +91,9 @@ Result<std::string> rescheduledClText(const JobResult& result) {
                          "CL output needs re-scheduling; it was not run");
     }
     toolpath::Toolpath path = result.program.path();
-    std::ranges::copy(result.rescheduled->records,
+    const auto pass =
+        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
+    std::ranges::copy(rescheduledRecords(pass, *result.rescheduled),
                       path.records.begin() + static_cast<std::ptrdiff_t>(result.pass.first));
     io::toProgramFrame(path.records, result.machine);
     io::cl::AptEmitOptions options;

@@ -35,12 +35,12 @@ scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
 
 // IK of the new poses with A unwrapped from the original A of the first record, so the new
 // program starts where the old one did and A stays continuous.
-Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInput& input,
-                                                            std::span<const ClRecord> records) {
+Result<std::vector<kinematics::MachineAxes>>
+newMachineAxes(const RescheduleInput& input, const scheduling::ScheduleResult& schedule) {
     std::vector<kinematics::ToolPose> poses;
-    poses.reserve(records.size());
-    for (const ClRecord& record : records) {
-        poses.push_back({record.tip, record.axis});
+    poses.reserve(schedule.newTips.size());
+    for (std::size_t i = 0; i < schedule.newTips.size(); ++i) {
+        poses.push_back({schedule.newTips[i], schedule.newAxes[i]});
     }
     auto solved = kinematics::inverseKinematicsAlong(
         input.machine->chain, poses, input.originalAxes->front().a, input.parameters.threads);
@@ -53,30 +53,27 @@ Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInpu
     return std::move(solved.axes);
 }
 
-Result<std::string> rewriteProgram(const RescheduleInput& input,
-                                   std::span<const ClRecord> passRecords,
-                                   std::span<const kinematics::MachineAxes> passAxes) {
+Result<std::string> rewriteProgram(const RescheduleInput& input, const RescheduleOutcome& outcome) {
+    const std::span<const kinematics::MachineAxes> passAxes = outcome.axes;
     const auto& all = input.program->path().records;
     if (const auto* gcode = std::get_if<io::nc::GcodeProgram>(&input.program->document)) {
-        std::vector<kinematics::MachineAxes> axes;
-        axes.reserve(all.size());
-        for (const ClRecord& record : all) {
-            axes.push_back(record.axes.value_or(kinematics::MachineAxes{}));
+        if (!io::programsToolTip(*input.program, input.passFirst, input.passCount)
+                 .value_or(false)) {
+            return io::nc::rewriteGcodePass(*gcode, input.passFirst, passAxes, *input.machine);
         }
-        std::copy(passAxes.begin(), passAxes.end(), axes.begin() + input.passFirst);
-        if (io::programsToolTip(*input.program, input.passFirst, input.passCount).value_or(false)) {
-            // Tool-tip programming writes the tip in the workpiece frame, not the machine's X Y Z.
-            for (std::size_t i = input.passFirst; i < input.passFirst + input.passCount; ++i) {
-                const Vec3 tip = kinematics::forwardKinematics(input.machine->chain, axes[i]).tip;
-                axes[i].x = tip.x();
-                axes[i].y = tip.y();
-                axes[i].z = tip.z();
-            }
+        // Tool-tip programming writes the tip in the workpiece frame, not the machine's X Y Z.
+        std::vector<kinematics::MachineAxes> words(passAxes.begin(), passAxes.end());
+        for (kinematics::MachineAxes& axes : words) {
+            const Vec3 tip = kinematics::forwardKinematics(input.machine->chain, axes).tip;
+            axes.x = tip.x();
+            axes.y = tip.y();
+            axes.z = tip.z();
         }
-        return io::nc::rewriteGcode(*gcode, axes, *input.machine);
+        return io::nc::rewriteGcodePass(*gcode, input.passFirst, words, *input.machine);
     }
     std::vector<ClRecord> records = all;
-    std::copy(passRecords.begin(), passRecords.end(), records.begin() + input.passFirst);
+    std::ranges::copy(rescheduledRecords(passOf(input), outcome),
+                      records.begin() + static_cast<std::ptrdiff_t>(input.passFirst));
     io::toProgramFrame(records, *input.machine);
     if (const auto* table = std::get_if<io::table::TableProgram>(&input.program->document)) {
         return io::table::rewritePointTable(*table, records);
@@ -130,14 +127,8 @@ Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string
     return written;
 }
 
-RescheduleOutcome outcomeFrom(scheduling::ScheduleResult schedule, std::span<const ClRecord> pass) {
+RescheduleOutcome outcomeFrom(scheduling::ScheduleResult schedule) {
     RescheduleOutcome outcome;
-    outcome.records.assign(pass.begin(), pass.end());
-    for (std::size_t i = 0; i < outcome.records.size(); ++i) {
-        outcome.records[i].tip = schedule.newTips[i];
-        outcome.records[i].axis = schedule.newAxes[i];
-        outcome.records[i].axes.reset();
-    }
     outcome.minChannelClearanceRad = std::numeric_limits<double>::infinity();
     for (const auto& layer : schedule.layers) {
         const bool kept =
@@ -155,7 +146,8 @@ RescheduleOutcome outcomeFrom(scheduling::ScheduleResult schedule, std::span<con
 
 Result<analysis::AxisProfile> analyseNewMotion(const RescheduleInput& input,
                                                const RescheduleOutcome& outcome) {
-    return analysis::analyseAxisMotion(outcome.axes, outcome.records, input.analysis);
+    return analysis::analyseAxisMotion(outcome.axes, rescheduledSamples(passOf(input), outcome),
+                                       input.analysis);
 }
 
 // Seconds since the previous lap (or construction).
@@ -260,6 +252,27 @@ bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::
     return false;
 }
 
+std::vector<toolpath::ClRecord> rescheduledRecords(std::span<const ClRecord> pass,
+                                                   const RescheduleOutcome& outcome) {
+    std::vector<ClRecord> records(pass.begin(), pass.end());
+    const analysis::PathSamples samples = rescheduledSamples(pass, outcome);
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        records[i].tip = samples.tip(i);
+        records[i].axis = samples.toolAxis(i);
+        records[i].feed = samples.feed(i);
+        records[i].axes.reset();
+    }
+    return records;
+}
+
+analysis::PathSamples rescheduledSamples(std::span<const ClRecord> pass,
+                                         const RescheduleOutcome& outcome) {
+    return {.records = pass,
+            .tips = outcome.schedule.newTips,
+            .toolAxes = outcome.schedule.newAxes,
+            .feeds = outcome.passFeeds};
+}
+
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel) {
     if (!(input.toolRadius > 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
@@ -275,12 +288,12 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         }
         return std::unexpected(error);
     }
-    RescheduleOutcome outcome = outcomeFrom(std::move(*schedule), passOf(input));
+    RescheduleOutcome outcome = outcomeFrom(std::move(*schedule));
     outcome.stageSeconds.schedule = clock.lap();
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
-    auto axes = newMachineAxes(input, outcome.records);
+    auto axes = newMachineAxes(input, outcome.schedule);
     if (!axes) {
         return std::unexpected(axes.error());
     }
@@ -297,7 +310,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     const bool analyseAtOnce = input.analyseNewMotion && !feedsFromWritten;
     auto analysed = std::async(analyseAtOnce ? std::launch::async : std::launch::deferred,
                                [&] { return analyseNewMotion(input, outcome); });
-    auto text = rewriteProgram(input, outcome.records, outcome.axes);
+    auto text = rewriteProgram(input, outcome);
     if (!text) {
         return std::unexpected(text.error());
     }
@@ -315,9 +328,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     }
     outcome.maxCentreDeviationMm = written->maxCentreDeviationMm;
     if (feedsFromWritten) {
-        for (std::size_t i = 0; i < outcome.records.size(); ++i) {
-            outcome.records[i].feed = written->passFeeds[i];
-        }
+        outcome.passFeeds = std::move(written->passFeeds);
     }
     if (auto status = checkOutcome(outcome, input.program->path().sourceFile); !status) {
         return std::unexpected(status.error());

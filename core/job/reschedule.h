@@ -11,6 +11,7 @@
 #include "core/scheduling/schedule.h"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -18,11 +19,15 @@ namespace bladeaxis::job {
 
 struct CuttingPass;
 
+// The new tips and tool axes are the schedule's (schedule.newTips, schedule.newAxes, one per
+// pass record); rescheduledRecords() gives them as records where a writer wants records.
 struct RescheduleOutcome {
     scheduling::ScheduleResult schedule;
-    std::vector<toolpath::ClRecord> records;   // the pass with new tips and axes
     std::vector<kinematics::MachineAxes> axes; // per pass record, A continuous
-    analysis::AxisProfile profile;             // axis motion of the new program
+    // The tip feed of each pass record (mm/s) as the written program runs it, when that program
+    // times its blocks anew (passIsBlockTimed); empty when the feeds are the input's.
+    std::vector<double> passFeeds;
+    analysis::AxisProfile profile; // axis motion of the new program
     analysis::ConstantFeedTime constantFeed;
     std::optional<double> timeOptimal; // s, T2 of the new motion
     std::string programText;           // the whole rewritten program
@@ -69,5 +74,16 @@ bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::
 Status checkCancelled(const CancelToken& cancel);
 
 Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel);
+
+// The re-scheduled pass as records: each input record of the pass with its new tip and tool
+// axis, its feed as written, and no machine axes. Made on demand (CL output, the CAD check): a
+// job does not keep a second copy of every record.
+std::vector<toolpath::ClRecord> rescheduledRecords(std::span<const toolpath::ClRecord> pass,
+                                                   const RescheduleOutcome& outcome);
+
+// The re-scheduled pass as the axis analysis reads it: the input records lend their lines (and
+// feeds, unless the written program gives new ones), the schedule its poses.
+analysis::PathSamples rescheduledSamples(std::span<const toolpath::ClRecord> pass,
+                                         const RescheduleOutcome& outcome);
 
 } // namespace bladeaxis::job

@@ -63,14 +63,35 @@ class ProgramWords {
     std::array<kinematics::ProgramWord, 5> m_words{};
 };
 
-Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> newAxes,
-                    const MachineModel& machine) {
-    if (newAxes.size() != program.path.records.size()) {
-        return makeError(ErrorCode::InvalidArgument,
-                         "expected " + std::to_string(program.path.records.size()) +
-                             " axis sets (one per record), got " + std::to_string(newAxes.size()));
+// The axes every record is written with: the new ones of a pass, and the axes read for the
+// records before and after it. A job re-schedules one pass of a program whose other records
+// keep their axes; this spares a copy of every record's axes (40 bytes each).
+class NewAxes {
+  public:
+    NewAxes(std::span<const toolpath::ClRecord> records, std::size_t passFirst,
+            std::span<const MachineAxes> pass)
+        : m_records(records), m_first(passFirst), m_pass(pass) {}
+
+    std::size_t size() const { return m_records.size(); }
+    bool given(std::size_t k) const { return k >= m_first && k - m_first < m_pass.size(); }
+    bool known(std::size_t k) const { return given(k) || m_records[k].axes.has_value(); }
+    const MachineAxes& operator[](std::size_t k) const {
+        return given(k) ? m_pass[k - m_first] : *m_records[k].axes;
     }
+
+  private:
+    std::span<const toolpath::ClRecord> m_records;
+    std::size_t m_first;
+    std::span<const MachineAxes> m_pass;
+};
+
+Status validateAxes(const GcodeProgram& program, const NewAxes& newAxes,
+                    const MachineModel& machine) {
     for (std::size_t k = 0; k < newAxes.size(); ++k) {
+        if (!newAxes.known(k)) {
+            return makeError(ErrorCode::InvalidArgument,
+                             "record " + std::to_string(k) + " has no programmed axes");
+        }
         for (std::size_t axis = 0; axis < kAxisLetters.size(); ++axis) {
             if (!std::isfinite(axisValue(newAxes[k], axis))) {
                 return makeError(ErrorCode::InvalidArgument, "newAxes[" + std::to_string(k) + "]." +
@@ -86,10 +107,6 @@ Status validateAxes(const GcodeProgram& program, std::span<const MachineAxes> ne
                                  " deg, but the machine '" + machine.name +
                                  "' has a fixed head (no " + tilt + " axis)",
                              {program.path.sourceFile, program.path.records[k].line, 0});
-        }
-        if (!program.path.records[k].axes) {
-            return makeError(ErrorCode::InvalidArgument,
-                             "record " + std::to_string(k) + " has no programmed axes");
         }
     }
     return {};
@@ -138,7 +155,7 @@ class Rewriter {
         m_combinedFeed = program.programmedFeeds.size() == program.path.records.size();
     }
 
-    Result<std::string> run(std::span<const MachineAxes> newAxes) {
+    Result<std::string> run(const NewAxes& newAxes) {
         const std::string& text = m_program.text;
         std::string out;
         out.reserve(text.size() + text.size() / 16);
@@ -523,16 +540,36 @@ void Rewriter::appendEdited(std::string& out, std::string_view line, std::vector
 
 } // namespace
 
-Result<std::string> rewriteGcode(const GcodeProgram& program, std::span<const MachineAxes> newAxes,
-                                 const MachineModel& machine) {
-    if (program.sources.size() != program.path.records.size()) {
+Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t passFirst,
+                                     std::span<const MachineAxes> passAxes,
+                                     const MachineModel& machine) {
+    const std::size_t records = program.path.records.size();
+    if (program.sources.size() != records) {
         return makeError(ErrorCode::InvalidArgument,
                          "program has no source data for its records: parse it with parseGcode");
     }
+    if (passFirst > records || passAxes.size() > records - passFirst) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "expected at most " +
+                             std::to_string(records - std::min(passFirst, records)) +
+                             " axis sets from record " + std::to_string(passFirst) + ", got " +
+                             std::to_string(passAxes.size()));
+    }
+    const NewAxes newAxes(program.path.records, passFirst, passAxes);
     if (Status valid = validateAxes(program, newAxes, machine); !valid) {
         return std::unexpected(std::move(valid.error()));
     }
     return Rewriter(program, machine).run(newAxes);
+}
+
+Result<std::string> rewriteGcode(const GcodeProgram& program, std::span<const MachineAxes> newAxes,
+                                 const MachineModel& machine) {
+    if (newAxes.size() != program.path.records.size()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "expected " + std::to_string(program.path.records.size()) +
+                             " axis sets (one per record), got " + std::to_string(newAxes.size()));
+    }
+    return rewriteGcodePass(program, 0, newAxes, machine);
 }
 
 Status writeGcodeFile(const std::filesystem::path& out, const GcodeProgram& program,

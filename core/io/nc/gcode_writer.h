@@ -29,6 +29,12 @@ Result<std::string> rewriteGcode(const GcodeProgram& program,
                                  std::span<const kinematics::MachineAxes> newAxes,
                                  const kinematics::MachineModel& machine);
 
+// rewriteGcode of one pass: records [passFirst, passFirst + passAxes.size()) get passAxes, every
+// other record is written with the axes it was read with (its text is unchanged).
+Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t passFirst,
+                                     std::span<const kinematics::MachineAxes> passAxes,
+                                     const kinematics::MachineModel& machine);
+
 // rewriteGcode, then an atomic write that refuses to overwrite the program's source file.
 Status writeGcodeFile(const std::filesystem::path& out, const GcodeProgram& program,
                       std::span<const kinematics::MachineAxes> newAxes,

@@ -174,7 +174,8 @@ TEST(AnalyseAxisMotion, NonFiniteInputIsAnErrorNamingTheLine) {
 
 TEST(AnalyseAxisMotion, RejectsEmptyMismatchedAndFeedlessInput) {
     const Program line = straightLine(Vec3::UnitX(), 5, 30.0);
-    EXPECT_EQ(analyseAxisMotion({}, {}, {}).error().code, ErrorCode::InvalidArgument);
+    EXPECT_EQ(analyseAxisMotion({}, std::span<const toolpath::ClRecord>{}, {}).error().code,
+              ErrorCode::InvalidArgument);
     const std::span<const kinematics::MachineAxes> fewer(line.axes.data(), 4);
     EXPECT_EQ(analyseAxisMotion(fewer, line.records, {}).error().code, ErrorCode::InvalidArgument);
     Program rapidOnly = line;
@@ -190,6 +191,42 @@ TEST(AnalyseAxisMotion, RejectsEmptyMismatchedAndFeedlessInput) {
     EXPECT_EQ(profile->feed, 12.0);
     override.feedOverride = -1.0;
     EXPECT_FALSE(analyseAxisMotion(line.axes, line.records, override).has_value());
+}
+
+// A re-scheduled pass lends its new tips, tool axes and feeds instead of copying every record:
+// the analysis must be the one of records that carry them.
+TEST(AnalyseAxisMotion, LentPosesAndFeedsGiveWhatRecordsCarryingThemGive) {
+    const Program line = straightLine(Vec3(1.0, 2.0, -2.0) / 3.0, 40, 30.0, 0.01, 0.002);
+    Program moved = line;
+    std::vector<Vec3> tips, toolAxes;
+    std::vector<double> feeds;
+    for (std::size_t i = 0; i < moved.records.size(); ++i) {
+        toolpath::ClRecord& record = moved.records[i];
+        record.tip += Vec3(0.0, 0.1 * std::sin(0.3 * static_cast<double>(i)), 0.0);
+        record.axis = Vec3(0.0, 0.2, 1.0).normalized();
+        record.feed = 20.0 + static_cast<double>(i % 3);
+        tips.push_back(record.tip);
+        toolAxes.push_back(record.axis);
+        feeds.push_back(record.feed);
+    }
+    AxisProfileOptions centre;
+    centre.feedReference = FeedReference::Centre;
+    centre.toolRadius = 4.0;
+    const Result<AxisProfile> carried = analyseAxisMotion(moved.axes, moved.records, centre);
+    const PathSamples lent{
+        .records = line.records, .tips = tips, .toolAxes = toolAxes, .feeds = feeds};
+    const Result<AxisProfile> borrowed = analyseAxisMotion(line.axes, lent, centre);
+    ASSERT_TRUE(carried.has_value() && borrowed.has_value());
+    EXPECT_EQ(borrowed->feed, carried->feed);
+    EXPECT_EQ(borrowed->pathParameter, carried->pathParameter);
+    EXPECT_EQ(borrowed->axis(AxisId::A).acceleration, carried->axis(AxisId::A).acceleration);
+    EXPECT_NE(borrowed->pathParameter,
+              analyseAxisMotion(line.axes, line.records, centre)->pathParameter);
+
+    const PathSamples fewTips{.records = line.records, .tips = std::span(tips).first(5)};
+    const Result<AxisProfile> mismatched = analyseAxisMotion(line.axes, fewTips, centre);
+    ASSERT_FALSE(mismatched.has_value());
+    EXPECT_EQ(mismatched.error().code, ErrorCode::InvalidArgument);
 }
 
 TEST(AnalyseAxisMotion, SinglePointOrAllDuplicatesGiveOneSampleAtRest) {

@@ -39,7 +39,9 @@ TEST(ClExport, ReReadClDataHasTheRescheduledTipsAndAxes) {
     ASSERT_EQ(records.size(), result.program.path().records.size());
     ASSERT_TRUE(reread->path().toolRadius.has_value());
     EXPECT_DOUBLE_EQ(*reread->path().toolRadius, *result.toolRadius);
-    const auto& pass = result.rescheduled->records;
+    const auto pass = rescheduledRecords(
+        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count),
+        *result.rescheduled);
     for (std::size_t i = 0; i < pass.size(); ++i) {
         const auto& read = records[result.pass.first + i];
         ASSERT_LT((read.tip - pass[i].tip).norm(), 2e-6) << "record " << i;

@@ -7,6 +7,7 @@
 #include "app/batch/exit_codes.h"
 #include "app/gui_arguments.h"
 #include "app/subcommands.h"
+#include "core/base/memory_policy.h"
 #include "ui/run_gui.h"
 
 #include <cstdlib>
@@ -31,6 +32,7 @@ bool wantsBatch(const std::vector<std::string>& arguments) {
 } // namespace
 
 int main(int argc, char** argv) {
+    bladeaxis::returnLargeBlocksToTheSystem();
     const std::vector<std::string> arguments =
         bladeaxis::app::expandSubcommand(std::vector<std::string>(argv, argv + argc));
     if (!wantsBatch(arguments)) {

@@ -90,11 +90,11 @@ std::optional<std::pair<double, double>> layerTimeSpan(const analysis::AxisProfi
     const auto& records = profile.sampleRecord;
     const auto begin = std::lower_bound(records.begin(), records.end(), first);
     const auto end = std::upper_bound(records.begin(), records.end(), last);
-    if (begin >= end || profile.time.size() != records.size()) {
+    if (begin >= end || profile.pathParameter.size() != records.size()) {
         return std::nullopt;
     }
-    return std::pair{profile.time[static_cast<std::size_t>(begin - records.begin())],
-                     profile.time[static_cast<std::size_t>(end - records.begin()) - 1]};
+    return std::pair{profile.timeAt(static_cast<std::size_t>(begin - records.begin())),
+                     profile.timeAt(static_cast<std::size_t>(end - records.begin()) - 1)};
 }
 
 // One undo step of the job: a layer's override before and after, and the key points the editor

@@ -63,7 +63,7 @@ ProfilePlots::Curve curveOf(const QString& method, const analysis::AxisProfile& 
     ProfilePlots::Curve curve;
     curve.method = method;
     curve.dashed = dashed;
-    curve.time = profile.time;
+    curve.time = profile.times();
     const analysis::AxisSeries& a = profile.axis(AxisId::A);
     curve.values[ProfilePlots::APosition] = inDegrees(a.position);
     curve.values[ProfilePlots::AVelocity] = inDegrees(a.velocity);

@@ -158,7 +158,7 @@ double secondsAt(const analysis::AxisProfile& profile, std::size_t record) {
     const auto after = std::upper_bound(samples.begin(), samples.end(), record);
     const auto index =
         static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - samples.begin() - 1, 0));
-    return profile.time[index];
+    return profile.timeAt(index);
 }
 
 } // namespace
@@ -394,8 +394,8 @@ void ToolpathView::setTimeline(const job::JobResult& result) {
     const auto& axes = rescheduled ? result.rescheduled->axes : result.axes;
     const auto& profile = rescheduled ? result.rescheduled->profile : result.original;
     if (records.size() >= first + count && axes.size() == count) {
-        const bool timed =
-            !profile.sampleRecord.empty() && profile.time.size() == profile.sampleRecord.size();
+        const bool timed = !profile.sampleRecord.empty() &&
+                           profile.pathParameter.size() == profile.sampleRecord.size();
         for (std::size_t i = 0; i < count; ++i) {
             m_timeline.line.push_back(records[first + i].line);
             m_timeline.aDegrees.push_back(units::radToDeg(axes[i].a));

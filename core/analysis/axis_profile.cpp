@@ -115,11 +115,9 @@ void buildPathParameter(const PathSamples& path, const AxisProfileOptions& optio
     };
     const bool timed = options.blockTimes && !centre;
     profile.pathParameter.reserve(path.size());
-    profile.time.reserve(path.size());
     profile.sampleRecord.reserve(path.size());
     const auto addSample = [&](double s, std::size_t record) {
         profile.pathParameter.push_back(s);
-        profile.time.push_back(s / profile.feed);
         profile.sampleRecord.push_back(record);
     };
     Vec3 last = pointOf(0);
@@ -215,6 +213,14 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         profile.aReversals = auditReversals(a);
     }
     return profile;
+}
+
+std::vector<double> AxisProfile::times() const {
+    std::vector<double> seconds(pathParameter.size());
+    for (std::size_t i = 0; i < seconds.size(); ++i) {
+        seconds[i] = timeAt(i);
+    }
+    return seconds;
 }
 
 namespace {

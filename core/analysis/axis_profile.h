@@ -74,7 +74,6 @@ struct AxisSeries {
 
 struct AxisProfile {
     std::vector<double> pathParameter;     // s, mm, strictly increasing, s[0] = 0
-    std::vector<double> time;              // s at the constant feed: t = s / F
     std::vector<std::size_t> sampleRecord; // input record of each sample (merged ones dropped)
     std::array<AxisSeries, 5> axes;        // X Y Z A B, index by kinematics::AxisId
     // A reversals over ALL input records (indices are record indices): a rotation at a fixed
@@ -89,6 +88,12 @@ struct AxisProfile {
     DerivativeMethod method = DerivativeMethod::Spline;
 
     const AxisSeries& axis(kinematics::AxisId id) const { return axes[static_cast<int>(id)]; }
+
+    // The time of sample i at the constant feed, s: t = s / F. Computed, not kept: 8 bytes per
+    // sample of each profile a job holds.
+    double timeAt(std::size_t i) const { return pathParameter[i] / feed; }
+    // Every sample's time, for a plot's axis.
+    std::vector<double> times() const;
 };
 
 // The tool path an analysis reads: a program's records, or new tool poses over them. A

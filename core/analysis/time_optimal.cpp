@@ -40,8 +40,7 @@ class Problem {
     // Stages are computed when needed, not stored: a million-sample path would otherwise hold
     // ~90 MB of derivatives that the profile already has.
     Problem(const AxisProfile& profile, const kinematics::MachineModel& machine)
-        : m_profile(profile), m_s(profile.pathParameter),
-          m_stateScale(profile.pathParameter.size(), 1.0) {
+        : m_profile(profile), m_s(profile.pathParameter) {
         for (std::size_t j = 0; j < kAxes; ++j) {
             const auto& limits = machine.limit(kinematics::kAllAxes[j]);
             m_velocity[j] = limits.velocity;
@@ -50,8 +49,15 @@ class Problem {
         }
     }
 
-    // The jerk heuristic's local reduction of the state bound.
-    void scaleState(std::size_t i, double factor) { m_stateScale[i] *= factor; }
+    // The jerk heuristic's local reduction of the state bound. The scales are made on its first
+    // reduction: without the heuristic every scale is 1 and needs no array.
+    void scaleState(std::size_t i, double factor) {
+        if (m_stateScale.empty()) {
+            m_stateScale.assign(m_s.size(), 1.0);
+        }
+        m_stateScale[i] *= factor;
+    }
+    double stateScale(std::size_t i) const { return m_stateScale.empty() ? 1.0 : m_stateScale[i]; }
     double jerkLimit(std::size_t j) const { return m_jerk[j]; }
 
     Stage stage(std::size_t i) const {
@@ -72,7 +78,7 @@ class Problem {
                     std::min(stage.maxState, m_acceleration[j] / std::abs(stage.second[j]));
             }
         }
-        stage.maxState = std::min(stage.maxState, feed * feed) * m_stateScale[i];
+        stage.maxState = std::min(stage.maxState, feed * feed) * stateScale(i);
         return stage;
     }
 

@@ -26,6 +26,8 @@ std::span<const ClRecord> passOf(const RescheduleInput& input) {
 scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
     scheduling::ScheduleInput schedule;
     schedule.toolRadius = input.toolRadius;
+    schedule.centres.reserve(input.passCount);
+    schedule.axes.reserve(input.passCount);
     for (const ClRecord& record : passOf(input)) {
         schedule.centres.push_back(toolpath::ballCentre(record, input.toolRadius));
         schedule.axes.push_back(record.axis);

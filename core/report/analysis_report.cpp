@@ -135,7 +135,7 @@ std::string axesCsv(const analysis::AxisProfile& profile,
         row = std::to_string(record) + ',' +
               std::to_string(record < records.size() ? records[record].line : 0) + ',';
         appendNumber(row, profile.pathParameter[i]);
-        appendNumber(row, profile.time[i]);
+        appendNumber(row, profile.timeAt(i));
         for (auto member : {&analysis::AxisSeries::position, &analysis::AxisSeries::velocity,
                             &analysis::AxisSeries::acceleration}) {
             for (AxisId axis : kinematics::kAllAxes) {

@@ -422,7 +422,7 @@ Plot axisPlot(const compare::Comparison& comparison, AxisId axis, int derivative
                                                               : series.acceleration;
         PlotSeries line;
         line.name = method.method;
-        line.x = method.profile.time;
+        line.x = method.profile.times();
         for (double value : values) {
             line.y.push_back(display(axis, value));
         }

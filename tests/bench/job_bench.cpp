@@ -8,6 +8,7 @@
 // so the first figure is the parse-and-analyse peak.
 
 #include "core/base/file_io.h"
+#include "core/base/memory_policy.h"
 #include "core/blade/presets.h"
 #include "core/io/nc/gcode.h"
 #include "core/io/program.h"
@@ -199,4 +200,15 @@ BENCHMARK(BM_FullJobFiveMillionBlocks)
 
 } // namespace
 
-BENCHMARK_MAIN();
+// The memory policy of the application (app/main.cpp), so that the peaks are the ones a user
+// sees.
+int main(int argc, char** argv) {
+    bladeaxis::returnLargeBlocksToTheSystem();
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
+        return 1;
+    }
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

@@ -322,7 +322,7 @@ class MainWindowTest final : public QObject {
         const auto span = plots->highlightedSpan();
         QVERIFY(span.has_value());
         QVERIFY(span->first < span->second);
-        QVERIFY(span->second <= m_window->result()->rescheduled->profile.time.back() + 1e-9);
+        QVERIFY(span->second <= m_window->result()->rescheduled->profile.times().back() + 1e-9);
         QCOMPARE(plots->highlightedSpanLabel(), QStringLiteral("layer %1").arg(target));
         box->setChecked(false);
         QVERIFY(!plots->accelerationLogScale());

@@ -77,8 +77,8 @@ bool containsEntryStartingWith(const QStringList& entries, const QString& start)
 double secondsAt(const bladeaxis::analysis::AxisProfile& profile, std::size_t record) {
     const auto& samples = profile.sampleRecord;
     const auto after = std::upper_bound(samples.begin(), samples.end(), record);
-    return profile
-        .time[static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - samples.begin() - 1, 0))];
+    return profile.timeAt(
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - samples.begin() - 1, 0)));
 }
 
 // A number of the readout: its typographic minus read as '-'.

@@ -67,10 +67,10 @@ TEST(AnalyseAxisMotion, TimeIsPathOverFeedAndPathIsTipArcLength) {
     const double length = program.records.back().tip.y();
     EXPECT_NEAR(profile->pathLength, length, 1e-12);
     EXPECT_NEAR(profile->cycleTime, length / 25.0, 1e-12);
-    ASSERT_EQ(profile->time.size(), 20u);
+    ASSERT_EQ(profile->times().size(), 20u);
     for (std::size_t i = 0; i < 20; ++i) {
         EXPECT_NEAR(profile->pathParameter[i], program.records[i].tip.y(), 1e-12);
-        EXPECT_DOUBLE_EQ(profile->time[i], profile->pathParameter[i] / 25.0);
+        EXPECT_DOUBLE_EQ(profile->times()[i], profile->pathParameter[i] / 25.0);
         EXPECT_EQ(profile->sampleRecord[i], i);
     }
 }

@@ -87,17 +87,20 @@ Result<std::string> rewriteProgram(const RescheduleInput& input, const Reschedul
 // tip feed of each pass record as the control will run it.
 struct WrittenProgram {
     double maxCentreDeviationMm = 0.0;
-    std::vector<double> passFeeds; // mm/s
+    std::vector<double> passFeeds; // mm/s, when asked for (keepFeeds)
 };
 
 // The written text is read back as a stream: each record is compared with the input's as it
 // is read and then dropped, so the check never holds a second program (about 140 bytes per
 // record) beside the first.
-Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string_view text) {
+Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string_view text,
+                                       bool keepFeeds) {
     const toolpath::Toolpath& original = input.program->path();
     const std::size_t passEnd = input.passFirst + input.passCount;
     WrittenProgram written;
-    written.passFeeds.reserve(input.passCount);
+    if (keepFeeds) {
+        written.passFeeds.reserve(input.passCount);
+    }
     const auto compare = [&](std::size_t first, std::span<const ClRecord> records) {
         const std::size_t begin = std::max(first, input.passFirst);
         const std::size_t end =
@@ -109,7 +112,9 @@ Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string
                          (toolpath::ballCentre(reread, input.toolRadius) -
                           toolpath::ballCentre(original.records[i], input.toolRadius))
                              .norm());
-            written.passFeeds.push_back(reread.feed);
+            if (keepFeeds) {
+                written.passFeeds.push_back(reread.feed);
+            }
         }
     };
     auto count = io::streamProgramRecords(text, original.sourceFile + " (re-scheduled)",
@@ -322,7 +327,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(status.error());
     }
     auto written = input.verifyByRereading || feedsFromWritten
-                       ? readBackWritten(input, outcome.programText)
+                       ? readBackWritten(input, outcome.programText, feedsFromWritten)
                        : Result<WrittenProgram>(WrittenProgram{});
     outcome.stageSeconds.verify = clock.lap();
     if (!written) {

@@ -315,6 +315,10 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
     std::vector<LayerProblem> problems =
         buildLayerProblems(*path, stage->channel, stage->split, margins,
                            4.0 * stage->tangents.chordLengthMm, parameters.threads);
+    // The layer problems carry what the layers need of the tangents, the curvature and the raw
+    // channel: freed here, their per-point arrays (about 60 bytes per point) are not held beside
+    // the layers' results.
+    *stage = ChannelStage{};
     for (const LayerProblem& problem : problems) {
         result.warnings.insert(result.warnings.end(), problem.warnings.begin(),
                                problem.warnings.end());

@@ -87,6 +87,7 @@ Result<std::string> rewriteProgram(const RescheduleInput& input, const Reschedul
 // tip feed of each pass record as the control will run it.
 struct WrittenProgram {
     double maxCentreDeviationMm = 0.0;
+    int maxCentreDeviationLine = 0;
     std::vector<double> passFeeds; // mm/s, when asked for (keepFeeds)
 };
 
@@ -107,11 +108,13 @@ Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string
             std::min({first + records.size(), passEnd, original.records.size()});
         for (std::size_t i = begin; i < end; ++i) {
             const ClRecord& reread = records[i - first];
-            written.maxCentreDeviationMm =
-                std::max(written.maxCentreDeviationMm,
-                         (toolpath::ballCentre(reread, input.toolRadius) -
-                          toolpath::ballCentre(original.records[i], input.toolRadius))
-                             .norm());
+            const double deviation = (toolpath::ballCentre(reread, input.toolRadius) -
+                                      toolpath::ballCentre(original.records[i], input.toolRadius))
+                                         .norm();
+            if (deviation > written.maxCentreDeviationMm) {
+                written.maxCentreDeviationMm = deviation;
+                written.maxCentreDeviationLine = original.records[i].line;
+            }
             if (keepFeeds) {
                 written.passFeeds.push_back(reread.feed);
             }
@@ -189,9 +192,13 @@ Status checkOutcome(const RescheduleOutcome& outcome, const std::string& file) {
     if (outcome.maxCentreDeviationMm > kCentreDeviationLimitMm) {
         return makeError(ErrorCode::CheckFailed,
                          "ball centres of the written program deviate by " +
-                             formatFixed(outcome.maxCentreDeviationMm, 6) + " mm (limit " +
-                             formatShortest(kCentreDeviationLimitMm) + " mm)",
-                         {file});
+                             formatFixed(outcome.maxCentreDeviationMm, 6) +
+                             " mm from the input's here (limit " +
+                             formatShortest(kCentreDeviationLimitMm) +
+                             " mm); nothing was written. The usual cause is axis words with too "
+                             "few decimals to hold the new ball centres: post the program with "
+                             "at least 3 decimals",
+                         {file, outcome.maxCentreDeviationLine, 0});
     }
     return {};
 }
@@ -334,6 +341,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(written.error());
     }
     outcome.maxCentreDeviationMm = written->maxCentreDeviationMm;
+    outcome.maxCentreDeviationLine = written->maxCentreDeviationLine;
     if (feedsFromWritten) {
         outcome.passFeeds = std::move(written->passFeeds);
     }

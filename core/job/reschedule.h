@@ -34,6 +34,7 @@ struct RescheduleOutcome {
     // Verification (spec §6.5 and the acceptance): ball centres of the re-read output
     // against the input's, and the smallest distance of the new orientation to the raw channel.
     double maxCentreDeviationMm = 0.0;
+    int maxCentreDeviationLine = 0; // the input line of the block where it is largest
     double minChannelClearanceRad = 0.0;
     std::size_t layersKeptOriginal = 0; // MonotoneInfeasible layers
     // Wall time of each stage, s: what a user waits for and what the benchmarks break down.

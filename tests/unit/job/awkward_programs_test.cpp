@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <unistd.h>
 
@@ -155,6 +156,19 @@ TEST(AwkwardPrograms, BNoiseWithinTheToleranceIsSnappedAndReschedulesLikeTheClea
     EXPECT_TRUE(reported);
     // 0.001 deg of B moves the programmed tip by microns; the schedule follows within 0.01 deg.
     expectSameSchedule(*noisy, *reference, units::degToRad(0.01));
+}
+
+// The written program is read back and its ball centres compared with the input's; a program
+// whose linear words carry two decimals cannot hold the new centres to the 5 um the check
+// accepts (rounding moves them by up to 8.7 um), so the rewrite is refused and nothing written.
+TEST(AwkwardPrograms, LinearWordsTooCoarseForTheNewCentresAreRefusedByTheReReadCheck) {
+    const CleanPass& clean = cleanPass();
+    const std::string fine = gcodeText(clean.path, kinematics::defaultBladeMachine(),
+                                       clean.feedMmPerMin, RotaryUnit::Degrees);
+    const std::regex linearWord("([XYZ]-?[0-9]+\\.[0-9]{2})[0-9]+");
+    const auto spec =
+        rescheduleJob(writeProgram("two_decimals.nc", std::regex_replace(fine, linearWord, "$1")));
+    expectRefused(spec, ErrorCode::CheckFailed, "ball centres of the written program deviate");
 }
 
 TEST(AwkwardPrograms, AGcodeProgramWhosePostStatesTheBallNeedsNoToolRadius) {

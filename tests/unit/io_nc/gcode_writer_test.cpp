@@ -163,6 +163,25 @@ TEST(GcodeWriter, RejectsWrongCountAndNonFiniteAxes) {
     EXPECT_NE(result.error().message.find("newAxes[2].Y"), std::string::npos);
 }
 
+// A job re-schedules one pass: the records around it keep the axes they were read with.
+TEST(GcodeWriter, APassRewriteGivesWhatAWholeRewriteWithTheOtherRecordsUnchangedGives) {
+    const GcodeProgram program = parseSample("fanuc_basic.nc");
+    auto axes = axesOf(program);
+    for (std::size_t i = 2; i < 6; ++i) {
+        axes[i].a += degToRad(1.5 * static_cast<double>(i));
+        axes[i].z += 0.25;
+    }
+    const std::vector<MachineAxes> pass(axes.begin() + 2, axes.begin() + 6);
+    const auto passOnly = rewriteGcodePass(program, 2, pass, defaultBladeMachine());
+    ASSERT_TRUE(passOnly.has_value()) << passOnly.error().toString();
+    EXPECT_EQ(*passOnly, rewrite(program, axes));
+    EXPECT_NE(*passOnly, program.text);
+
+    const auto beyond = rewriteGcodePass(program, axes.size() - 2, pass, defaultBladeMachine());
+    ASSERT_FALSE(beyond.has_value());
+    EXPECT_EQ(beyond.error().code, ErrorCode::InvalidArgument);
+}
+
 TEST(GcodeWriter, WriteFileRefusesToOverwriteTheInput) {
     const auto dir = std::filesystem::temp_directory_path() / "bladeaxis_gcode_writer_test";
     std::filesystem::create_directories(dir);

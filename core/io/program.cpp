@@ -227,10 +227,6 @@ const std::string& LoadedProgram::text() const {
                       document);
 }
 
-std::string LoadedProgram::releaseText() {
-    return std::visit([](auto& program) { return std::move(program.text); }, document);
-}
-
 std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t first,
                                     std::size_t count) {
     const auto* gcode = std::get_if<nc::GcodeProgram>(&program.document);
@@ -347,9 +343,6 @@ Result<std::size_t> streamProgramRecords(std::string_view text, std::string_view
 Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,
                                    ProgramFormat format, const kinematics::MachineModel& machine,
                                    const ReadOptions& options) {
-    if (format != ProgramFormat::Gcode) {
-        return parseTextFormat(text, fileName, format, options);
-    }
     return parseOwnedProgram(std::string(text), fileName, format, machine, options);
 }
 

@@ -46,9 +46,6 @@ struct LoadedProgram {
     // For the checks that normalise the input before scheduling (B noise snapped to its median).
     toolpath::Toolpath& mutablePath();
     const std::string& text() const; // the program as read, byte for byte
-    // The text moved out, for a caller that needs the records but no longer the document (the
-    // re-read check of a written program gives its text back to the writer's result).
-    std::string releaseText();
     ProgramFormat format() const;
     std::optional<NcDialect> dialect() const; // of a G-code family program
 };

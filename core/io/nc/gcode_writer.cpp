@@ -74,7 +74,9 @@ class NewAxes {
 
     std::size_t size() const { return m_records.size(); }
     bool given(std::size_t k) const { return k >= m_first && k - m_first < m_pass.size(); }
-    bool known(std::size_t k) const { return given(k) || m_records[k].axes.has_value(); }
+    // The rewrite compares a block's new words with the ones it was read with, so every record,
+    // in the pass or not, needs the axes it was read with.
+    bool read(std::size_t k) const { return m_records[k].axes.has_value(); }
     const MachineAxes& operator[](std::size_t k) const {
         return given(k) ? m_pass[k - m_first] : *m_records[k].axes;
     }
@@ -88,7 +90,7 @@ class NewAxes {
 Status validateAxes(const GcodeProgram& program, const NewAxes& newAxes,
                     const MachineModel& machine) {
     for (std::size_t k = 0; k < newAxes.size(); ++k) {
-        if (!newAxes.known(k)) {
+        if (!newAxes.read(k)) {
             return makeError(ErrorCode::InvalidArgument,
                              "record " + std::to_string(k) + " has no programmed axes");
         }

@@ -15,6 +15,7 @@
 #include "core/job/job.h"
 #include "core/job/reschedule.h"
 #include "core/kinematics/machine_model.h"
+#include "tests/bench/bench_main.h"
 #include "tests/bench/million_program.h"
 
 #include <benchmark/benchmark.h>
@@ -204,11 +205,5 @@ BENCHMARK(BM_FullJobFiveMillionBlocks)
 // sees.
 int main(int argc, char** argv) {
     bladeaxis::returnLargeBlocksToTheSystem();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
-        return 1;
-    }
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return bladeaxis::bench::runBenchmarks(argc, argv);
 }

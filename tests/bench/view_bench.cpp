@@ -12,6 +12,7 @@
 #include "core/io/program.h"
 #include "core/job/display_scene.h"
 #include "core/job/job.h"
+#include "tests/bench/bench_main.h"
 #include "tests/bench/million_program.h"
 #include "ui/toolpath_view.h"
 
@@ -167,11 +168,5 @@ BENCHMARK(BM_RotateDemoBlade)
 
 int main(int argc, char** argv) {
     QApplication application(argc, argv);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
-        return 1;
-    }
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return bladeaxis::bench::runBenchmarks(argc, argv);
 }

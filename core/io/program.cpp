@@ -262,21 +262,29 @@ ProgramFormat LoadedProgram::format() const {
 
 namespace {
 
-// The formats whose readers keep a copy of their own: CL data and point tables.
+// The formats whose readers keep a copy of their own, CL data and point tables, read and turned
+// into the engine's frame.
 Result<LoadedProgram> parseTextFormat(std::string_view text, std::string_view fileName,
-                                      ProgramFormat format, const ReadOptions& options) {
-    if (format == ProgramFormat::Table) {
-        auto program = table::parsePointTable(text, fileName, options);
-        if (!program) {
-            return std::unexpected(program.error());
+                                      ProgramFormat format, const kinematics::MachineModel& machine,
+                                      const ReadOptions& options) {
+    auto program = [&]() -> Result<LoadedProgram> {
+        if (format == ProgramFormat::Table) {
+            auto table = table::parsePointTable(text, fileName, options);
+            if (!table) {
+                return std::unexpected(table.error());
+            }
+            return LoadedProgram{std::move(*table), options};
         }
-        return LoadedProgram{std::move(*program), options};
+        auto apt = cl::parseApt(text, fileName, options);
+        if (!apt) {
+            return std::unexpected(apt.error());
+        }
+        return LoadedProgram{std::move(*apt), options};
+    }();
+    if (program) {
+        toEngineFrame(program->mutablePath().records, machine);
     }
-    auto program = cl::parseApt(text, fileName, options);
-    if (!program) {
-        return std::unexpected(program.error());
-    }
-    return LoadedProgram{std::move(*program), options};
+    return program;
 }
 
 } // namespace
@@ -307,11 +315,7 @@ Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileN
                                         const kinematics::MachineModel& machine,
                                         const ReadOptions& options) {
     if (format != ProgramFormat::Gcode) {
-        auto program = parseTextFormat(text, fileName, format, options);
-        if (program) {
-            toEngineFrame(program->mutablePath().records, machine);
-        }
-        return program;
+        return parseTextFormat(text, fileName, format, machine, options);
     }
     auto program = nc::parseOwnedGcode(std::move(text), fileName, machine, options);
     if (!program) {
@@ -330,12 +334,11 @@ Result<std::size_t> streamProgramRecords(std::string_view text, std::string_view
     if (format == ProgramFormat::Gcode) {
         return nc::streamGcodeRecords(text, fileName, machine, options, consume);
     }
-    auto program = parseTextFormat(text, fileName, format, options);
+    auto program = parseTextFormat(text, fileName, format, machine, options);
     if (!program) {
         return std::unexpected(program.error());
     }
-    std::vector<toolpath::ClRecord>& records = program->mutablePath().records;
-    toEngineFrame(records, machine);
+    const std::vector<toolpath::ClRecord>& records = program->path().records;
     consume(0, records);
     return records.size();
 }
@@ -343,6 +346,9 @@ Result<std::size_t> streamProgramRecords(std::string_view text, std::string_view
 Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,
                                    ProgramFormat format, const kinematics::MachineModel& machine,
                                    const ReadOptions& options) {
+    if (format != ProgramFormat::Gcode) {
+        return parseTextFormat(text, fileName, format, machine, options); // no copy of the text
+    }
     return parseOwnedProgram(std::string(text), fileName, format, machine, options);
 }
 

@@ -154,10 +154,26 @@ RescheduleOutcome outcomeFrom(scheduling::ScheduleResult schedule) {
     return outcome;
 }
 
-Result<analysis::AxisProfile> analyseNewMotion(const RescheduleInput& input,
-                                               const RescheduleOutcome& outcome) {
-    return analysis::analyseAxisMotion(outcome.axes, rescheduledSamples(passOf(input), outcome),
-                                       input.analysis);
+// The new program's axis motion and its machining times (T1 at constant feed, T2 under the
+// machine's limits).
+struct NewMotion {
+    analysis::AxisProfile profile;
+    analysis::ConstantFeedTime constantFeed;
+    std::optional<double> timeOptimal;
+};
+
+Result<NewMotion> analyseNewMotion(const RescheduleInput& input, const RescheduleOutcome& outcome) {
+    auto profile = analysis::analyseAxisMotion(
+        outcome.axes, rescheduledSamples(passOf(input), outcome), input.analysis);
+    if (!profile) {
+        return std::unexpected(profile.error());
+    }
+    NewMotion motion{std::move(*profile), {}, std::nullopt};
+    motion.constantFeed = analysis::constantFeedTime(motion.profile, *input.machine, false);
+    if (auto t2 = analysis::timeOptimalTime(motion.profile, *input.machine)) {
+        motion.timeOptimal = t2->time;
+    }
+    return motion;
 }
 
 // Seconds since the previous lap (or construction).
@@ -319,7 +335,8 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     // The analysis describes the program actually written. Its feeds are the input's unless
     // the pass is in inverse time (G93), where the same F over a new tip chord is a new tip
     // speed: then the analysis waits for the written program's feeds. Otherwise it needs only
-    // the new axes, and runs beside the rewrite and the re-read check, which use one thread.
+    // the new axes, and runs (with the machining times) beside the rewrite and the re-read
+    // check, which use one thread.
     const bool feedsFromWritten = input.analysis.blockTimes;
     const bool analyseAtOnce = input.analyseNewMotion && !feedsFromWritten;
     auto analysed = std::async(analyseAtOnce ? std::launch::async : std::launch::deferred,
@@ -355,15 +372,13 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(status.error());
     }
     if (input.analyseNewMotion) {
-        auto profile = analysed.get();
-        if (!profile) {
-            return std::unexpected(profile.error());
+        auto motion = analysed.get();
+        if (!motion) {
+            return std::unexpected(motion.error());
         }
-        outcome.profile = std::move(*profile);
-        outcome.constantFeed = analysis::constantFeedTime(outcome.profile, *input.machine, false);
-        if (auto t2 = analysis::timeOptimalTime(outcome.profile, *input.machine)) {
-            outcome.timeOptimal = t2->time;
-        }
+        outcome.profile = std::move(motion->profile);
+        outcome.constantFeed = motion->constantFeed;
+        outcome.timeOptimal = motion->timeOptimal;
     }
     outcome.stageSeconds.analysis = clock.lap(); // what the analysis added after the check
     return outcome;

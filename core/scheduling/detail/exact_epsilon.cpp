@@ -318,6 +318,11 @@ void plateauScanSide(const CornerGeometry& corner, const ChannelView& channel, s
     const std::span<const double> farBound = sign > 0.0 ? channel.rawMin : channel.rawMax;
     const double slack = kRoomTolerance - channel.clearance;
     const std::size_t n = channel.s.size();
+    double peak = turn * w / 4.8; // |epsilon| at the current w, kept with w
+    const auto lowerTo = [&](double lower) {
+        w = lower;
+        peak = turn * w / 4.8;
+    };
     for (std::size_t j = right ? split : split - 1; j < n;
          j += static_cast<std::size_t>(direction)) {
         const double a = channel.s[j] - s2;
@@ -328,24 +333,26 @@ void plateauScanSide(const CornerGeometry& corner, const ChannelView& channel, s
         const double line = corner.p2.y() + slope * a;
         const double room = sign * (nearBound[j] - line) + slack;
         if (sign * (line - farBound[j]) + slack < 0.0 || room < 0.0) {
-            w = distance * (1.0 - 1e-9); // the polyline itself violates: stop short of it
+            lowerTo(distance * (1.0 - 1e-9)); // the polyline itself violates: stop short of it
             binding = true;
             continue;
         }
-        // Convex deviation below its chord |epsilon| (1 - distance / w): cannot bind.
-        if (room >= turn * w / 4.8 * (1.0 - distance / w)) {
+        // Convex deviation below its chord |epsilon| (1 - distance / w): cannot bind. Most
+        // samples have room for the whole |epsilon|, which decides it without the division
+        // (a rounded product by a factor in [0, 1] is never above |epsilon|).
+        if (room >= peak || room >= peak * (1.0 - distance / w)) {
             continue;
         }
         binding = true;
         if (distance == 0.0) {
-            w = std::min(w, 4.8 * room / turn);
+            lowerTo(std::min(w, 4.8 * room / turn));
             continue;
         }
         const double u0 = distance / w;
         if (room >= turn * w / 1.6 * plateauDeviation(u0)) {
             continue; // below the chord but not binding at the current w
         }
-        w = plateauSampleBound(turn, distance, room, u0);
+        lowerTo(plateauSampleBound(turn, distance, room, u0));
     }
 }
 

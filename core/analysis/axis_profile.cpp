@@ -189,9 +189,9 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         knots = motionKnots(profile.pathParameter, axes, profile.sampleRecord);
         profile.mergedShortChords = n - knots.size();
     }
-    std::vector<Result<AxisSeries>> series =
-        differentiateAxes(profile.pathParameter, sampledAxes(axes, profile.sampleRecord),
-                          profile.feed, options.method, options.filterSeconds, knots);
+    std::vector<Result<AxisSeries>> series = differentiateAxes(
+        profile.pathParameter, sampledAxes(axes, profile.sampleRecord), profile.feed,
+        options.method, options.filterSeconds, knots, options.threads);
     for (kinematics::AxisId id : kinematics::kAllAxes) {
         Result<AxisSeries>& axis = series[static_cast<int>(id)];
         if (!axis) {

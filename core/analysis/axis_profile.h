@@ -56,6 +56,9 @@ struct AxisProfileOptions {
     bool blockTimes = false;
     double toolRadius = 0.0;      // mm, required (> 0) for FeedReference::Centre
     double filterSeconds = 0.008; // moving-average window of DerivativeMethod::Filtered
+    // Threads for the axes' derivatives (0: every core). The figures are the same on any number;
+    // a job gives the analysis of its input every core, the one beside its rewrite one.
+    unsigned threads = 1;
 };
 
 // One machine axis. Derivatives are time derivatives at the constant feed F:

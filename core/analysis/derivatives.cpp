@@ -1,6 +1,7 @@
 #include "core/analysis/derivatives.h"
 
 #include "core/analysis/controller_filter.h"
+#include "core/base/parallel.h"
 #include "core/geometry/cubic_spline.h"
 
 #include <algorithm>
@@ -236,7 +237,7 @@ void sampleSpline(std::span<const double> s, const SplineKnots& knots,
 // Spline derivatives of several series over the same samples (at least 2) and knots: the knots
 // are shared, so one elimination of the spline system serves every series.
 void splineDerivatives(std::span<const double> s, double feed, const SplineKnots& knots,
-                       std::span<AxisSeries* const> series) {
+                       std::span<AxisSeries* const> series, unsigned threads) {
     std::vector<double> gatheredS;
     const std::span<const double> knotS = knots.valuesAtKnots(s, gatheredS);
     std::vector<std::vector<double>> gatheredQ(series.size());
@@ -251,9 +252,9 @@ void splineDerivatives(std::span<const double> s, double feed, const SplineKnots
         moments.emplace_back(momentBlock.get() + k * knotS.size(), knotS.size());
     }
     geometry::notAKnotMoments(knotS, knotQ, moments);
-    for (std::size_t k = 0; k < series.size(); ++k) {
+    forEachItem(series.size(), s.size() * series.size(), threads, [&](std::size_t k) {
         sampleSpline(s, knots, knotS, knotQ[k], moments[k], feed, *series[k]);
-    }
+    });
 }
 
 // The first sample at which the path parameter is unusable (not finite, or not above the one
@@ -311,20 +312,21 @@ Status checkFinite(const AxisSeries& series) {
 // knots) applies to every series.
 Status differentiateMoving(std::span<const double> s, std::span<AxisSeries* const> moving,
                            double feed, DerivativeMethod method, double filterSeconds,
-                           std::span<const std::size_t> knots) {
+                           std::span<const std::size_t> knots, unsigned threads) {
     if (moving.empty()) {
         return {}; // a series of fewer than 2 samples is still: the methods below get >= 2
     }
+    const auto eachSeries = [&](auto&& differentiate) {
+        forEachItem(moving.size(), s.size() * moving.size(), threads,
+                    [&](std::size_t k) { differentiate(*moving[k]); });
+    };
     if (method == DerivativeMethod::Filtered) {
-        for (AxisSeries* series : moving) {
-            filteredDerivatives(s, feed, filterSeconds, *series);
-        }
+        eachSeries(
+            [&](AxisSeries& series) { filteredDerivatives(s, feed, filterSeconds, series); });
         return {};
     }
     if (method == DerivativeMethod::FiniteDifference) {
-        for (AxisSeries* series : moving) {
-            finiteDifferences(s, feed, *series);
-        }
+        eachSeries([&](AxisSeries& series) { finiteDifferences(s, feed, series); });
         return {};
     }
     SplineKnots splineKnots{{}, s.size()};
@@ -338,17 +340,16 @@ Status differentiateMoving(std::span<const double> s, std::span<AxisSeries* cons
             splineKnots.indices = knots;
         }
     }
-    splineDerivatives(s, feed, splineKnots, moving);
+    splineDerivatives(s, feed, splineKnots, moving, threads);
     return {};
 }
 
 } // namespace
 
-std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s,
-                                                  std::vector<std::vector<double>> positions,
-                                                  double feed, DerivativeMethod method,
-                                                  double filterSeconds,
-                                                  std::span<const std::size_t> knots) {
+std::vector<Result<AxisSeries>>
+differentiateAxes(std::span<const double> s, std::vector<std::vector<double>> positions,
+                  double feed, DerivativeMethod method, double filterSeconds,
+                  std::span<const std::size_t> knots, unsigned threads) {
     const std::size_t badPath = firstBadPathSample(s);
     std::vector<Result<AxisSeries>> results(positions.size());
     std::vector<std::size_t> movingIndex;
@@ -371,7 +372,7 @@ std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s,
         movingIndex.push_back(k);
         moving.push_back(&series);
     }
-    const Status ok = differentiateMoving(s, moving, feed, method, filterSeconds, knots);
+    const Status ok = differentiateMoving(s, moving, feed, method, filterSeconds, knots, threads);
     for (std::size_t k = 0; k < moving.size(); ++k) {
         if (Status summary = ok ? checkFinite(*moving[k]) : ok; !summary) {
             results[movingIndex[k]] = std::unexpected(std::move(summary.error()));

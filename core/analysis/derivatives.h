@@ -27,12 +27,13 @@ Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<doub
 
 // differentiateAxis of several axes sampled at the same s, one result per axis, each the one
 // differentiateAxis gives. The spline methods fit every axis through the same knots, so the
-// spline system is eliminated once for all axes, and s is checked once.
-std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s,
-                                                  std::vector<std::vector<double>> positions,
-                                                  double feed, DerivativeMethod method,
-                                                  double filterSeconds = 0.008,
-                                                  std::span<const std::size_t> knots = {});
+// spline system is eliminated once for all axes, and s is checked once. The axes are then
+// differentiated on up to `threads` threads (0: every core), each axis on one thread, so the
+// results are the same on any number.
+std::vector<Result<AxisSeries>>
+differentiateAxes(std::span<const double> s, std::vector<std::vector<double>> positions,
+                  double feed, DerivativeMethod method, double filterSeconds = 0.008,
+                  std::span<const std::size_t> knots = {}, unsigned threads = 1);
 
 // The p-quantile (0 <= p <= 1) of |values|, linear interpolation between order statistics
 // (numpy's default). 0 for an empty input. O(n).

@@ -151,6 +151,7 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     }
     analysis::AxisProfileOptions options = spec.analysis;
     options.blockTimes = passIsBlockTimed(result.program, result.pass.first, result.pass.count);
+    options.threads = spec.parameters.threads; // nothing else runs yet
     if (result.toolRadius) {
         options.toolRadius = *result.toolRadius;
     }

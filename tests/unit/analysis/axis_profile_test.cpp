@@ -229,6 +229,36 @@ TEST(AnalyseAxisMotion, LentPosesAndFeedsGiveWhatRecordsCarryingThemGive) {
     EXPECT_EQ(mismatched.error().code, ErrorCode::InvalidArgument);
 }
 
+TEST(AnalyseAxisMotion, EveryMethodGivesTheSameFiguresOnAnyNumberOfThreads) {
+    // Long enough for the axes to be differentiated on several threads.
+    const Program line = straightLine(Vec3(1.0, 2.0, -2.0) / 3.0, 20000, 30.0, 0.01, 2e-6);
+    for (DerivativeMethod method :
+         {DerivativeMethod::Spline, DerivativeMethod::RawSpline, DerivativeMethod::FiniteDifference,
+          DerivativeMethod::Filtered}) {
+        AxisProfileOptions options = withMethod(method);
+        const Result<AxisProfile> serial = analyseAxisMotion(line.axes, line.records, options);
+        ASSERT_TRUE(serial.has_value()) << nameOf(method);
+        for (unsigned threads : {0u, 2u, 3u}) {
+            options.threads = threads;
+            const Result<AxisProfile> parallel =
+                analyseAxisMotion(line.axes, line.records, options);
+            ASSERT_TRUE(parallel.has_value()) << nameOf(method);
+            for (std::size_t k = 0; k < serial->axes.size(); ++k) {
+                const AxisSeries& one = serial->axes[k];
+                const AxisSeries& many = parallel->axes[k];
+                EXPECT_EQ(many.position, one.position) << nameOf(method) << " axis " << k;
+                EXPECT_EQ(many.velocity, one.velocity) << nameOf(method) << " axis " << k;
+                EXPECT_EQ(many.acceleration, one.acceleration) << nameOf(method) << " axis " << k;
+                EXPECT_EQ(many.peakVelocity, one.peakVelocity) << nameOf(method);
+                EXPECT_EQ(many.peakAcceleration, one.peakAcceleration) << nameOf(method);
+                EXPECT_EQ(many.peakJerk, one.peakJerk) << nameOf(method);
+                EXPECT_EQ(many.p999Velocity, one.p999Velocity) << nameOf(method);
+                EXPECT_EQ(many.p999Acceleration, one.p999Acceleration) << nameOf(method);
+            }
+        }
+    }
+}
+
 TEST(AnalyseAxisMotion, SinglePointOrAllDuplicatesGiveOneSampleAtRest) {
     Program program;
     for (int i = 0; i < 4; ++i) {

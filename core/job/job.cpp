@@ -14,6 +14,7 @@
 #include "core/kinematics/travel_limits.h"
 
 #include <chrono>
+#include <future>
 
 namespace bladeaxis::job {
 
@@ -161,10 +162,14 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     }
     result.original = std::move(*profile);
     result.constantFeed = analysis::constantFeedTime(result.original, result.machine, false);
-    if (auto t2 = analysis::timeOptimalTime(result.original, result.machine)) {
-        result.timeOptimal = t2->time;
-    }
     return {};
+}
+
+// T2 of the input's motion (spec §8.3), or none when the machine's limits do not let the tool
+// move along the path.
+std::optional<double> originalTimeOptimal(const JobResult& result) {
+    auto t2 = analysis::timeOptimalTime(result.original, result.machine);
+    return t2 ? std::optional<double>(t2->time) : std::nullopt;
 }
 
 // A CAD model is placed in the program's workpiece frame; on a machine whose table turns about
@@ -509,6 +514,11 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     for (std::size_t i = warningsBeforeAnalysis; i < result.warnings.size(); ++i) {
         progress.warning(result.warnings[i]);
     }
+    // T2 needs only the input's profile, which nothing changes from here on: it runs beside the
+    // tilt check and the re-scheduling. The future is declared after the result, so an early
+    // return waits for it before the result goes.
+    auto timeOptimal =
+        std::async(std::launch::async, [&result] { return originalTimeOptimal(result); });
     if (originalReady) {
         originalReady(result);
     }
@@ -528,6 +538,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
             result.warnings.push_back(warning);
         }
     }
+    result.timeOptimal = timeOptimal.get();
     if (cadSpec) {
         progress.progress(0.65, spec.demo && spec.cad.file.empty()
                                     ? "checking the tool against the demo blade's surface"

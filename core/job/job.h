@@ -86,7 +86,8 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
 
 // The same, calling `originalReady` (on the job's thread) as soon as the program is read and its
 // original motion analysed, before the re-scheduling: the GUI shows the program in 3D while the
-// rest of the job runs.
+// rest of the job runs. The original's T2 (timeOptimal) is not in that partial result yet: it is
+// computed beside the re-scheduling.
 using OriginalReadyHook = std::function<void(const JobResult& partial)>;
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel,
                          const OriginalReadyHook& originalReady);

@@ -90,7 +90,7 @@ std::optional<std::pair<double, double>> layerTimeSpan(const analysis::AxisProfi
     const auto& records = profile.sampleRecord;
     const auto begin = std::lower_bound(records.begin(), records.end(), first);
     const auto end = std::upper_bound(records.begin(), records.end(), last);
-    if (begin >= end || profile.pathParameter.size() != records.size()) {
+    if (begin >= end) {
         return std::nullopt;
     }
     return std::pair{profile.timeAt(static_cast<std::size_t>(begin - records.begin())),

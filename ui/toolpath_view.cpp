@@ -394,8 +394,7 @@ void ToolpathView::setTimeline(const job::JobResult& result) {
     const auto& axes = rescheduled ? result.rescheduled->axes : result.axes;
     const auto& profile = rescheduled ? result.rescheduled->profile : result.original;
     if (records.size() >= first + count && axes.size() == count) {
-        const bool timed = !profile.sampleRecord.empty() &&
-                           profile.pathParameter.size() == profile.sampleRecord.size();
+        const bool timed = !profile.sampleRecord.empty(); // an analysed profile
         for (std::size_t i = 0; i < count; ++i) {
             m_timeline.line.push_back(records[first + i].line);
             m_timeline.aDegrees.push_back(units::radToDeg(axes[i].a));

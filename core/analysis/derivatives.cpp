@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace bladeaxis::analysis {
 
@@ -234,6 +235,13 @@ void sampleSpline(std::span<const double> s, const SplineKnots& knots,
     series.p999Acceleration = accelerationQuantile.value();
 }
 
+// Calls body(k) for every series k, each series on one thread and up to `threads` at once: a
+// series' values never depend on how many threads there are.
+template <class Body>
+void forEachSeries(std::size_t series, std::size_t samples, unsigned threads, Body&& body) {
+    forEachItem(series, series * samples, threads, std::forward<Body>(body));
+}
+
 // Spline derivatives of several series over the same samples (at least 2) and knots: the knots
 // are shared, so one elimination of the spline system serves every series.
 void splineDerivatives(std::span<const double> s, double feed, const SplineKnots& knots,
@@ -252,7 +260,7 @@ void splineDerivatives(std::span<const double> s, double feed, const SplineKnots
         moments.emplace_back(momentBlock.get() + k * knotS.size(), knotS.size());
     }
     geometry::notAKnotMoments(knotS, knotQ, moments);
-    forEachItem(series.size(), s.size() * series.size(), threads, [&](std::size_t k) {
+    forEachSeries(series.size(), s.size(), threads, [&](std::size_t k) {
         sampleSpline(s, knots, knotS, knotQ[k], moments[k], feed, *series[k]);
     });
 }
@@ -317,8 +325,8 @@ Status differentiateMoving(std::span<const double> s, std::span<AxisSeries* cons
         return {}; // a series of fewer than 2 samples is still: the methods below get >= 2
     }
     const auto eachSeries = [&](auto&& differentiate) {
-        forEachItem(moving.size(), s.size() * moving.size(), threads,
-                    [&](std::size_t k) { differentiate(*moving[k]); });
+        forEachSeries(moving.size(), s.size(), threads,
+                      [&](std::size_t k) { differentiate(*moving[k]); });
     };
     if (method == DerivativeMethod::Filtered) {
         eachSeries(

@@ -290,4 +290,10 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
     return result;
 }
 
+std::optional<double> timeOptimalSeconds(const AxisProfile& profile,
+                                         const kinematics::MachineModel& machine) {
+    auto t2 = timeOptimalTime(profile, machine);
+    return t2 ? std::optional<double>(t2->time) : std::nullopt;
+}
+
 } // namespace bladeaxis::analysis

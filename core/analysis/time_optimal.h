@@ -15,6 +15,7 @@
 #include "core/base/error.h"
 #include "core/kinematics/machine_model.h"
 
+#include <optional>
 #include <vector>
 
 namespace bladeaxis::analysis {
@@ -43,5 +44,10 @@ struct TimeOptimalTime {
 Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
                                         const kinematics::MachineModel& machine,
                                         const TimeOptimalOptions& options = {});
+
+// T2 alone (s), or none when the machine's limits do not let the tool move along the path: what
+// a job and a limit sweep report.
+std::optional<double> timeOptimalSeconds(const AxisProfile& profile,
+                                         const kinematics::MachineModel& machine);
 
 } // namespace bladeaxis::analysis

@@ -87,12 +87,9 @@ void sweepRotaryLimits(const EvaluationContext& context, std::span<const double>
     for (double factor : factors) {
         const kinematics::MachineModel machine =
             analysis::scaledRotaryLimits(*context.machine, factor);
-        LimitSweepPoint point{
-            factor, analysis::constantFeedTime(result.profile, machine, false).time, std::nullopt};
-        if (auto t2 = analysis::timeOptimalTime(result.profile, machine)) {
-            point.t2 = t2->time;
-        }
-        result.sweep.push_back(point);
+        result.sweep.push_back({factor,
+                                analysis::constantFeedTime(result.profile, machine, false).time,
+                                analysis::timeOptimalSeconds(result.profile, machine)});
     }
 }
 

@@ -262,25 +262,28 @@ ProgramFormat LoadedProgram::format() const {
 
 namespace {
 
-// The formats whose readers keep a copy of their own, CL data and point tables, read and turned
-// into the engine's frame.
+// The formats whose readers keep a copy of their own: CL data and point tables.
+Result<LoadedProgram> readTextFormat(std::string_view text, std::string_view fileName,
+                                     ProgramFormat format, const ReadOptions& options) {
+    if (format == ProgramFormat::Table) {
+        auto table = table::parsePointTable(text, fileName, options);
+        if (!table) {
+            return std::unexpected(table.error());
+        }
+        return LoadedProgram{std::move(*table), options};
+    }
+    auto apt = cl::parseApt(text, fileName, options);
+    if (!apt) {
+        return std::unexpected(apt.error());
+    }
+    return LoadedProgram{std::move(*apt), options};
+}
+
+// Such a program read and turned into the engine's frame, the one place every read does it.
 Result<LoadedProgram> parseTextFormat(std::string_view text, std::string_view fileName,
                                       ProgramFormat format, const kinematics::MachineModel& machine,
                                       const ReadOptions& options) {
-    auto program = [&]() -> Result<LoadedProgram> {
-        if (format == ProgramFormat::Table) {
-            auto table = table::parsePointTable(text, fileName, options);
-            if (!table) {
-                return std::unexpected(table.error());
-            }
-            return LoadedProgram{std::move(*table), options};
-        }
-        auto apt = cl::parseApt(text, fileName, options);
-        if (!apt) {
-            return std::unexpected(apt.error());
-        }
-        return LoadedProgram{std::move(*apt), options};
-    }();
+    auto program = readTextFormat(text, fileName, format, options);
     if (program) {
         toEngineFrame(program->mutablePath().records, machine);
     }

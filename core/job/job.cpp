@@ -165,13 +165,6 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     return {};
 }
 
-// T2 of the input's motion (spec §8.3), or none when the machine's limits do not let the tool
-// move along the path.
-std::optional<double> originalTimeOptimal(const JobResult& result) {
-    auto t2 = analysis::timeOptimalTime(result.original, result.machine);
-    return t2 ? std::optional<double>(t2->time) : std::nullopt;
-}
-
 // A CAD model is placed in the program's workpiece frame; on a machine whose table turns about
 // Y the engine's frame is that one turned a quarter turn about Z (MachineModel::toEngineFrame).
 cad::Placement placementInEngineFrame(const cad::Placement& placement,
@@ -517,8 +510,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     // T2 needs only the input's profile, which nothing changes from here on: it runs beside the
     // tilt check and the re-scheduling. The future is declared after the result, so an early
     // return waits for it before the result goes.
-    auto timeOptimal =
-        std::async(std::launch::async, [&result] { return originalTimeOptimal(result); });
+    auto timeOptimal = std::async(std::launch::async, [&result] {
+        return analysis::timeOptimalSeconds(result.original, result.machine);
+    });
     if (originalReady) {
         originalReady(result);
     }

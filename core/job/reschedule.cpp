@@ -170,9 +170,7 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, const Reschedul
     }
     NewMotion motion{std::move(*profile), {}, std::nullopt};
     motion.constantFeed = analysis::constantFeedTime(motion.profile, *input.machine, false);
-    if (auto t2 = analysis::timeOptimalTime(motion.profile, *input.machine)) {
-        motion.timeOptimal = t2->time;
-    }
+    motion.timeOptimal = analysis::timeOptimalSeconds(motion.profile, *input.machine);
     return motion;
 }
 

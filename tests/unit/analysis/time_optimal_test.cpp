@@ -174,6 +174,17 @@ TEST(TimeOptimal, TooShortOrFeedlessProfilesAreErrors) {
     EXPECT_FALSE(timeOptimalTime(line, bladeMachine()).has_value());
 }
 
+TEST(TimeOptimal, SecondsAreTheTimeOfTheSolutionAndNoneWhereItFails) {
+    const AxisProfile line = straightLine(0.5, 2, 1e4);
+    const kinematics::MachineModel machine = linearMachine(1e3, 100.0);
+    const std::optional<double> seconds = timeOptimalSeconds(line, machine);
+    ASSERT_TRUE(seconds.has_value());
+    EXPECT_EQ(*seconds, timeOptimalTime(line, machine)->time);
+    AxisProfile feedless = line;
+    feedless.feed = 0.0;
+    EXPECT_FALSE(timeOptimalSeconds(feedless, machine).has_value());
+}
+
 TEST(TimeOptimal, NonFiniteProfileValuesAreErrors) {
     AxisProfile derivative = straightLine(10.0, 11, 10.0);
     derivative.axes[0].velocity[5] = std::nan("");

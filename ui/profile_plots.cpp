@@ -65,12 +65,13 @@ ProfilePlots::Curve curveOf(const QString& method, const analysis::AxisProfile& 
     curve.dashed = dashed;
     curve.time = profile.times();
     const analysis::AxisSeries& a = profile.axis(AxisId::A);
-    curve.values[ProfilePlots::APosition] = inDegrees(a.position);
-    curve.values[ProfilePlots::AVelocity] = inDegrees(a.velocity);
-    curve.values[ProfilePlots::AAcceleration] = inDegrees(a.acceleration);
-    curve.values[ProfilePlots::XVelocity] = profile.axis(AxisId::X).velocity;
-    curve.values[ProfilePlots::YVelocity] = profile.axis(AxisId::Y).velocity;
-    curve.values[ProfilePlots::ZVelocity] = profile.axis(AxisId::Z).velocity;
+    curve.values[ProfilePlots::APosition] = inDegrees(profile.positions(AxisId::A));
+    const std::size_t n = curve.time.size();
+    curve.values[ProfilePlots::AVelocity] = inDegrees(a.velocities(n));
+    curve.values[ProfilePlots::AAcceleration] = inDegrees(a.accelerations(n));
+    curve.values[ProfilePlots::XVelocity] = profile.axis(AxisId::X).velocities(n);
+    curve.values[ProfilePlots::YVelocity] = profile.axis(AxisId::Y).velocities(n);
+    curve.values[ProfilePlots::ZVelocity] = profile.axis(AxisId::Z).velocities(n);
     return curve;
 }
 

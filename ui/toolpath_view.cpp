@@ -391,7 +391,7 @@ void ToolpathView::setTimeline(const job::JobResult& result) {
     const std::size_t first = result.pass.first, count = result.pass.count;
     const auto& records = result.program.path().records;
     const bool rescheduled = result.rescheduled.has_value();
-    const auto& axes = rescheduled ? result.rescheduled->axes : result.axes;
+    const auto& axes = rescheduled ? *result.rescheduled->axes : *result.axes;
     const auto& profile = rescheduled ? result.rescheduled->profile : result.original;
     if (records.size() >= first + count && axes.size() == count) {
         const bool timed = !profile.sampleRecord.empty(); // an analysed profile

@@ -167,8 +167,12 @@ std::vector<std::vector<double>> sampledAxes(std::span<const kinematics::Machine
 
 } // namespace
 
-Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> axes,
-                                      const PathSamples& path, const AxisProfileOptions& options) {
+Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSamples& path,
+                                      const AxisProfileOptions& options) {
+    if (!sharedAxes) {
+        return makeError(ErrorCode::InvalidArgument, "axis motion: no machine axes");
+    }
+    const std::span<const kinematics::MachineAxes> axes = *sharedAxes;
     std::vector<double> feedRuns;
     if (Status ok = validateInput(axes, path, options, feedRuns); !ok) {
         return std::unexpected(std::move(ok.error()));
@@ -178,6 +182,7 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         return std::unexpected(feed.error());
     }
     AxisProfile profile;
+    profile.recordAxes = std::move(sharedAxes);
     profile.feed = *feed;
     profile.feedReference = options.feedReference;
     profile.method = options.method;
@@ -189,9 +194,11 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         knots = motionKnots(profile.pathParameter, axes, profile.sampleRecord);
         profile.mergedShortChords = n - knots.size();
     }
-    std::vector<Result<AxisSeries>> series = differentiateAxes(
-        profile.pathParameter, sampledAxes(axes, profile.sampleRecord), profile.feed,
-        options.method, options.filterSeconds, knots, options.threads);
+    // The positions at the samples, only while they are differentiated.
+    const std::vector<std::vector<double>> positions = sampledAxes(axes, profile.sampleRecord);
+    std::vector<Result<AxisSeries>> series =
+        differentiateAxes(profile.pathParameter, positions, profile.feed, options.method,
+                          options.filterSeconds, knots, options.threads);
     for (kinematics::AxisId id : kinematics::kAllAxes) {
         Result<AxisSeries>& axis = series[static_cast<int>(id)];
         if (!axis) {
@@ -202,8 +209,7 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         profile.axes[static_cast<int>(id)] = std::move(*axis);
     }
     // Without merged points the sampled A already is the whole program: no gather needed.
-    const std::vector<double>& sampledA =
-        profile.axes[static_cast<int>(kinematics::AxisId::A)].position;
+    const std::vector<double>& sampledA = positions[static_cast<int>(kinematics::AxisId::A)];
     if (profile.mergedDuplicates == 0) {
         profile.aReversals = auditReversals(sampledA);
     } else {
@@ -213,6 +219,29 @@ Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> a
         profile.aReversals = auditReversals(a);
     }
     return profile;
+}
+
+Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> axes,
+                                      const PathSamples& path, const AxisProfileOptions& options) {
+    return analyseAxisMotion(
+        std::make_shared<const std::vector<kinematics::MachineAxes>>(axes.begin(), axes.end()),
+        path, options);
+}
+
+std::vector<double> AxisSeries::velocities(std::size_t n) const {
+    return still() ? std::vector<double>(n, 0.0) : velocity;
+}
+
+std::vector<double> AxisSeries::accelerations(std::size_t n) const {
+    return still() ? std::vector<double>(n, 0.0) : acceleration;
+}
+
+std::vector<double> AxisProfile::positions(kinematics::AxisId id) const {
+    std::vector<double> values(sampleRecord.size());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        values[i] = position(id, i);
+    }
+    return values;
 }
 
 std::vector<double> AxisProfile::times() const {

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -64,21 +65,40 @@ struct AxisProfileOptions {
 // One machine axis. Derivatives are time derivatives at the constant feed F:
 // velocity = q'(s) F, acceleration = q''(s) F^2, jerk = q'''(s) F^3. The jerk is kept as its
 // peak only: nothing reads it per sample, and on a million-record program each of a job's two
-// profiles would hold 40 MB of it.
+// profiles would hold 40 MB of it. Nor are the positions: they are the machine axes the profile
+// was made from (AxisProfile::position).
 struct AxisSeries {
-    std::vector<double> position, velocity, acceleration; // at the samples
+    // At the samples; both empty for a still axis (B in four-axis work), whose derivatives are
+    // all zero: its zeros were 16 bytes per sample in each profile a job holds.
+    std::vector<double> velocity, acceleration;
+    double minPosition = 0.0, maxPosition = 0.0; // the range of the positions at the samples
     // max |.| over the samples, and for the spline method also over 4 interior points per
     // interval (q'' is linear and q''' constant per interval, so only the velocity can peak
     // inside an interval; the other two peaks are attained at the samples).
     double peakVelocity = 0.0, peakAcceleration = 0.0, peakJerk = 0.0;
     // 99.9th percentile of |.| at the samples (linear interpolation between order statistics).
     double p999Velocity = 0.0, p999Acceleration = 0.0;
+
+    bool still() const { return velocity.empty(); }
+    double velocityAt(std::size_t i) const { return still() ? 0.0 : velocity[i]; }
+    double accelerationAt(std::size_t i) const { return still() ? 0.0 : acceleration[i]; }
+    // Every sample's velocity or acceleration (a still axis's zeros), for a plot: n samples.
+    std::vector<double> velocities(std::size_t n) const;
+    std::vector<double> accelerations(std::size_t n) const;
 };
+
+// The machine axes of a program's records, shared by whoever made them (a job's pass, the
+// re-scheduled pass) and the profiles analysed from them.
+using SharedMachineAxes = std::shared_ptr<const std::vector<kinematics::MachineAxes>>;
 
 struct AxisProfile {
     std::vector<double> pathParameter;     // s, mm, strictly increasing, s[0] = 0
     std::vector<std::size_t> sampleRecord; // input record of each sample (merged ones dropped)
-    std::array<AxisSeries, 5> axes;        // X Y Z A B, index by kinematics::AxisId
+    // The machine axes of every record analysed, A continuous; sampleRecord indexes them. The
+    // positions at the samples are read from them rather than copied per axis: the copies were
+    // 40 bytes per sample in each profile a job holds.
+    SharedMachineAxes recordAxes;
+    std::array<AxisSeries, 5> axes; // X Y Z A B, index by kinematics::AxisId
     // A reversals over ALL input records (indices are record indices): a rotation at a fixed
     // point, merged away for the derivatives, still turns the axis.
     ReversalAudit aReversals;
@@ -91,6 +111,13 @@ struct AxisProfile {
     DerivativeMethod method = DerivativeMethod::Spline;
 
     const AxisSeries& axis(kinematics::AxisId id) const { return axes[static_cast<int>(id)]; }
+
+    // The position of an axis at sample i (mm or rad): its record's machine axis.
+    double position(kinematics::AxisId id, std::size_t i) const {
+        return (*recordAxes)[sampleRecord[i]][id];
+    }
+    // Every sample's position of an axis, for a plot or a reversal count.
+    std::vector<double> positions(kinematics::AxisId id) const;
 
     // The time of sample i at the constant feed, s: t = s / F. Computed, not kept: 8 bytes per
     // sample of each profile a job holds.
@@ -118,12 +145,16 @@ struct PathSamples {
     int line(std::size_t i) const { return records[i].line; }
 };
 
-// axes: machine axes per record (A already continuous: see unwrapRotary for modulo programs);
-// path: tip and tool axis per record (for s) and the programmed feeds. Errors also when the
-// poses or feeds lent in `path` are not one per record.
+// axes: machine axes per record (A already continuous: see unwrapRotary for modulo programs),
+// of which the profile keeps a share; path: tip and tool axis per record (for s) and the
+// programmed feeds. Errors also when the poses or feeds lent in `path` are not one per record.
 // Errors: InvalidArgument (sizes differ, empty input, no usable feed, bad options), Geometry
 // (a non-finite coordinate, axis value or feed, named with its record index and source line).
 // A single sample (one record, or all records merged) gives zero derivatives.
+Result<AxisProfile> analyseAxisMotion(SharedMachineAxes axes, const PathSamples& path,
+                                      const AxisProfileOptions& options);
+
+// The same on a copy of `axes`, which the profile keeps.
 Result<AxisProfile> analyseAxisMotion(std::span<const kinematics::MachineAxes> axes,
                                       const PathSamples& path, const AxisProfileOptions& options);
 

@@ -99,9 +99,10 @@ void takeSampleFigures(AxisSeries& series) {
     series.p999Acceleration = absPercentile(series.acceleration, kReportedQuantile);
 }
 
-void finiteDifferences(std::span<const double> s, double feed, AxisSeries& series) {
-    firstDifference(s, series.position, series.velocity);
-    secondDifference(s, series.position, series.acceleration);
+void finiteDifferences(std::span<const double> s, std::span<const double> position, double feed,
+                       AxisSeries& series) {
+    firstDifference(s, position, series.velocity);
+    secondDifference(s, position, series.acceleration);
     // The raw third difference: the 3-point slope of q'' (still exact, zero, for quadratics).
     std::vector<double> jerk;
     firstDifference(s, series.acceleration, jerk);
@@ -126,9 +127,9 @@ Status validateKnots(std::span<const std::size_t> knots, std::size_t n) {
 
 // The controller-like filter sampled at the samples; the peaks are also taken over its whole 1 ms
 // series.
-void filteredDerivatives(std::span<const double> s, double feed, double filterSeconds,
-                         AxisSeries& series) {
-    const FilteredAxis filtered = filterAxis(s, series.position, feed, filterSeconds);
+void filteredDerivatives(std::span<const double> s, std::span<const double> position, double feed,
+                         double filterSeconds, AxisSeries& series) {
+    const FilteredAxis filtered = filterAxis(s, position, feed, filterSeconds);
     const std::size_t n = s.size();
     series.velocity.resize(n);
     series.acceleration.resize(n);
@@ -242,16 +243,22 @@ void forEachSeries(std::size_t series, std::size_t samples, unsigned threads, Bo
     forEachItem(series, series * samples, threads, std::forward<Body>(body));
 }
 
+// A series to differentiate: its positions at the samples, and where its derivatives go.
+struct MovingSeries {
+    std::span<const double> position;
+    AxisSeries* series = nullptr;
+};
+
 // Spline derivatives of several series over the same samples (at least 2) and knots: the knots
 // are shared, so one elimination of the spline system serves every series.
 void splineDerivatives(std::span<const double> s, double feed, const SplineKnots& knots,
-                       std::span<AxisSeries* const> series, unsigned threads) {
+                       std::span<const MovingSeries> series, unsigned threads) {
     std::vector<double> gatheredS;
     const std::span<const double> knotS = knots.valuesAtKnots(s, gatheredS);
     std::vector<std::vector<double>> gatheredQ(series.size());
     std::vector<std::span<const double>> knotQ;
     for (std::size_t k = 0; k < series.size(); ++k) {
-        knotQ.push_back(knots.valuesAtKnots(series[k]->position, gatheredQ[k]));
+        knotQ.push_back(knots.valuesAtKnots(series[k].position, gatheredQ[k]));
     }
     // One block for every series' moments, left uninitialised: the solve writes each entry.
     const auto momentBlock = std::make_unique_for_overwrite<double[]>(knotS.size() * series.size());
@@ -261,7 +268,7 @@ void splineDerivatives(std::span<const double> s, double feed, const SplineKnots
     }
     geometry::notAKnotMoments(knotS, knotQ, moments);
     forEachSeries(series.size(), s.size(), threads, [&](std::size_t k) {
-        sampleSpline(s, knots, knotS, knotQ[k], moments[k], feed, *series[k]);
+        sampleSpline(s, knots, knotS, knotQ[k], moments[k], feed, *series[k].series);
     });
 }
 
@@ -318,7 +325,7 @@ Status checkFinite(const AxisSeries& series) {
 
 // Derivatives and peaks of the moving series (validated, not still) by `method`. An error (bad
 // knots) applies to every series.
-Status differentiateMoving(std::span<const double> s, std::span<AxisSeries* const> moving,
+Status differentiateMoving(std::span<const double> s, std::span<const MovingSeries> moving,
                            double feed, DerivativeMethod method, double filterSeconds,
                            std::span<const std::size_t> knots, unsigned threads) {
     if (moving.empty()) {
@@ -326,15 +333,18 @@ Status differentiateMoving(std::span<const double> s, std::span<AxisSeries* cons
     }
     const auto eachSeries = [&](auto&& differentiate) {
         forEachSeries(moving.size(), s.size(), threads,
-                      [&](std::size_t k) { differentiate(*moving[k]); });
+                      [&](std::size_t k) { differentiate(moving[k].position, *moving[k].series); });
     };
     if (method == DerivativeMethod::Filtered) {
-        eachSeries(
-            [&](AxisSeries& series) { filteredDerivatives(s, feed, filterSeconds, series); });
+        eachSeries([&](std::span<const double> position, AxisSeries& series) {
+            filteredDerivatives(s, position, feed, filterSeconds, series);
+        });
         return {};
     }
     if (method == DerivativeMethod::FiniteDifference) {
-        eachSeries([&](AxisSeries& series) { finiteDifferences(s, feed, series); });
+        eachSeries([&](std::span<const double> position, AxisSeries& series) {
+            finiteDifferences(s, position, feed, series);
+        });
         return {};
     }
     SplineKnots splineKnots{{}, s.size()};
@@ -355,34 +365,36 @@ Status differentiateMoving(std::span<const double> s, std::span<AxisSeries* cons
 } // namespace
 
 std::vector<Result<AxisSeries>>
-differentiateAxes(std::span<const double> s, std::vector<std::vector<double>> positions,
+differentiateAxes(std::span<const double> s, std::span<const std::vector<double>> positions,
                   double feed, DerivativeMethod method, double filterSeconds,
                   std::span<const std::size_t> knots, unsigned threads) {
     const std::size_t badPath = firstBadPathSample(s);
     std::vector<Result<AxisSeries>> results(positions.size());
     std::vector<std::size_t> movingIndex;
-    std::vector<AxisSeries*> moving;
+    std::vector<MovingSeries> moving;
     for (std::size_t k = 0; k < positions.size(); ++k) {
-        if (Status ok = validate(s, positions[k], feed, badPath); !ok) {
+        const std::span<const double> position = positions[k];
+        if (Status ok = validate(s, position, feed, badPath); !ok) {
             results[k] = std::unexpected(std::move(ok.error()));
             continue;
         }
         AxisSeries& series = *results[k];
-        series.position = std::move(positions[k]);
-        if (isStill(series.position)) {
+        if (!position.empty()) {
+            const auto [low, high] = std::ranges::minmax(position);
+            series.minPosition = low;
+            series.maxPosition = high;
+        }
+        if (isStill(position)) {
             // A still axis (B in four-axis work) has exactly zero derivatives by either method:
-            // skip the fit, which is most of the cost per axis.
-            const std::size_t n = series.position.size();
-            series.velocity.assign(n, 0.0);
-            series.acceleration.assign(n, 0.0);
+            // skip the fit, which is most of the cost per axis, and keep no zeros.
             continue;
         }
         movingIndex.push_back(k);
-        moving.push_back(&series);
+        moving.push_back({position, &series});
     }
     const Status ok = differentiateMoving(s, moving, feed, method, filterSeconds, knots, threads);
     for (std::size_t k = 0; k < moving.size(); ++k) {
-        if (Status summary = ok ? checkFinite(*moving[k]) : ok; !summary) {
+        if (Status summary = ok ? checkFinite(*moving[k].series) : ok; !summary) {
             results[movingIndex[k]] = std::unexpected(std::move(summary.error()));
         }
     }
@@ -392,10 +404,8 @@ differentiateAxes(std::span<const double> s, std::vector<std::vector<double>> po
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,
                                      double feed, DerivativeMethod method, double filterSeconds,
                                      std::span<const std::size_t> knots) {
-    std::vector<std::vector<double>> positions;
-    positions.push_back(std::move(position));
-    return std::move(
-        differentiateAxes(s, std::move(positions), feed, method, filterSeconds, knots).front());
+    const std::vector<std::vector<double>> positions{std::move(position)};
+    return std::move(differentiateAxes(s, positions, feed, method, filterSeconds, knots).front());
 }
 
 AbsPercentile::AbsPercentile(std::size_t count, double p) {

@@ -12,8 +12,8 @@
 namespace bladeaxis::analysis {
 
 // Differentiates `position` (samples at the strictly increasing path parameter s, mm) and
-// returns the series with velocity and acceleration, the peaks (the jerk's too) and percentiles at
-// feed F (mm/s).
+// returns the series with velocity and acceleration, the peaks (the jerk's too), percentiles at
+// feed F (mm/s) and the range of the positions.
 // Errors: InvalidArgument (sizes differ, s not strictly increasing, F not positive),
 // Geometry (a non-finite value, or derivatives that overflow).
 // filterSeconds is the window of DerivativeMethod::Filtered (ignored otherwise); its peaks are
@@ -31,7 +31,7 @@ Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<doub
 // differentiated on up to `threads` threads (0: every core), each axis on one thread, so the
 // results are the same on any number.
 std::vector<Result<AxisSeries>>
-differentiateAxes(std::span<const double> s, std::vector<std::vector<double>> positions,
+differentiateAxes(std::span<const double> s, std::span<const std::vector<double>> positions,
                   double feed, DerivativeMethod method, double filterSeconds = 0.008,
                   std::span<const std::size_t> knots = {}, unsigned threads = 1);
 

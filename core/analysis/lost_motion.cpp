@@ -20,7 +20,7 @@ std::vector<LostMotion> lostMotion(const AxisProfile& profile,
         } else {
             const double minStep =
                 kinematics::isRotary(axis) ? tol::kReversalStepRad : kLinearReversalStepMm;
-            loss.reversals = auditReversals(profile.axis(axis).position, minStep).count;
+            loss.reversals = auditReversals(profile.positions(axis), minStep).count;
         }
         loss.lostMotion = backlash * loss.reversals;
         losses.push_back(loss);

@@ -65,8 +65,8 @@ class Problem {
         const double feed = m_profile.feed;
         for (std::size_t j = 0; j < kAxes; ++j) {
             const AxisSeries& series = m_profile.axes[j];
-            stage.first[j] = series.velocity[i] / feed;
-            stage.second[j] = series.acceleration[i] / (feed * feed);
+            stage.first[j] = series.velocityAt(i) / feed;
+            stage.second[j] = series.accelerationAt(i) / (feed * feed);
             const double q1 = std::abs(stage.first[j]);
             if (limited(m_velocity[j]) && q1 > 0.0) {
                 stage.maxState = std::min(stage.maxState, std::pow(m_velocity[j] / q1, 2));
@@ -169,8 +169,8 @@ Status validate(const AxisProfile& profile) {
                          "the time-optimal model needs a positive programmed feed");
     }
     for (const AxisSeries& series : profile.axes) {
-        if (series.velocity.size() != profile.pathParameter.size() ||
-            series.acceleration.size() != profile.pathParameter.size()) {
+        const std::size_t samples = series.still() ? 0 : profile.pathParameter.size();
+        if (series.velocity.size() != samples || series.acceleration.size() != samples) {
             return makeError(ErrorCode::InvalidArgument, "axis profile sizes differ");
         }
         // A NaN would silently pass every comparison of the passes and poison T2.

@@ -56,7 +56,9 @@ Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::strin
         error.where.line = context.pass[*solved.failedIndex].line;
         return std::unexpected(error);
     }
-    auto profile = analysis::analyseAxisMotion(solved.axes, records, context.analysis);
+    auto machineAxes =
+        std::make_shared<const std::vector<kinematics::MachineAxes>>(std::move(solved.axes));
+    auto profile = analysis::analyseAxisMotion(machineAxes, {.records = records}, context.analysis);
     if (!profile) {
         return std::unexpected(profile.error());
     }
@@ -65,7 +67,7 @@ Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::strin
     result.setting = std::move(setting);
     result.channel = measureInChannel(*context.reference, toolAxes);
     result.toolAxes = std::move(toolAxes);
-    result.machineAxes = std::move(solved.axes);
+    result.machineAxes = std::move(machineAxes);
     result.profile = std::move(*profile);
     result.t1 = analysis::constantFeedTime(result.profile, *context.machine, false);
     if (auto t2 = analysis::timeOptimalTime(result.profile, *context.machine)) {

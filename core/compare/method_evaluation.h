@@ -37,8 +37,9 @@ struct LimitSweepPoint {
 struct MethodResult {
     std::string method;  // original | quaternion | stheta-faithful | stheta-best | optimal-qp | ...
     std::string setting; // the variant or parameters used, for the report
-    std::vector<Vec3> toolAxes;                       // per pass record, unit
-    std::vector<kinematics::MachineAxes> machineAxes; // per pass record, A continuous
+    std::vector<Vec3> toolAxes; // per pass record, unit
+    // Per pass record, A continuous; shared with the profile, which reads its positions there.
+    analysis::SharedMachineAxes machineAxes;
     analysis::AxisProfile profile;
     analysis::ConstantFeedTime t1;
     std::optional<double> t2;     // s, time-optimal under the machine limits, when computed

@@ -101,9 +101,9 @@ std::vector<std::size_t> drawnRecords(std::size_t count, std::size_t stride,
 std::vector<double> aSpeedAt(const analysis::AxisProfile& profile,
                              std::span<const std::size_t> records) {
     const auto& samples = profile.sampleRecord;
-    const auto& velocity = profile.axis(kinematics::AxisId::A).velocity;
+    const analysis::AxisSeries& a = profile.axis(kinematics::AxisId::A);
     std::vector<double> speed;
-    if (samples.empty() || velocity.size() != samples.size()) {
+    if (samples.empty()) {
         return speed;
     }
     speed.reserve(records.size());
@@ -111,7 +111,7 @@ std::vector<double> aSpeedAt(const analysis::AxisProfile& profile,
         const auto after = std::upper_bound(samples.begin(), samples.end(), record);
         const auto index =
             static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - samples.begin() - 1, 0));
-        speed.push_back(std::abs(velocity[index]));
+        speed.push_back(std::abs(a.velocityAt(index)));
     }
     return speed;
 }

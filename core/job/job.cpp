@@ -142,8 +142,8 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     if (!axes) {
         return std::unexpected(axes.error());
     }
-    result.axes = std::move(*axes);
-    if (const auto excess = kinematics::firstTravelExcess(result.axes, result.machine)) {
+    result.axes = std::make_shared<const std::vector<kinematics::MachineAxes>>(std::move(*axes));
+    if (const auto excess = kinematics::firstTravelExcess(*result.axes, result.machine)) {
         result.warnings.push_back(
             result.program.path().sourceFile + ":" + std::to_string(pass[excess->index].line) +
             ": the input program drives " + kinematics::describe(*excess, result.machine) +
@@ -156,7 +156,7 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     if (result.toolRadius) {
         options.toolRadius = *result.toolRadius;
     }
-    auto profile = analysis::analyseAxisMotion(result.axes, pass, options);
+    auto profile = analysis::analyseAxisMotion(result.axes, {.records = pass}, options);
     if (!profile) {
         return std::unexpected(profile.error());
     }
@@ -305,7 +305,7 @@ compare::EvaluationContext evaluationContext(const JobResult& result, const JobS
     compare::EvaluationContext context;
     context.pass =
         std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
-    context.originalAxes = result.axes;
+    context.originalAxes = *result.axes;
     context.toolRadius = result.toolRadius.value_or(0.0);
     context.machine = &result.machine;
     context.analysis = spec.analysis;
@@ -400,7 +400,7 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     input.machine = &result.machine;
     input.passFirst = result.pass.first;
     input.passCount = result.pass.count;
-    input.originalAxes = &result.axes;
+    input.originalAxes = *result.axes;
     input.toolRadius = result.toolRadius.value_or(0.0);
     input.parameters = spec.parameters;
     input.layerEdits = spec.layerEdits;

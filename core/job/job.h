@@ -62,7 +62,9 @@ struct JobResult {
     io::LoadedProgram program;
     std::optional<double> toolRadius; // mm, from the spec or the file
     CuttingPass pass;
-    std::vector<kinematics::MachineAxes> axes; // per record of the pass, A continuous
+    // Per record of the pass, A continuous; shared with the original profile, which reads its
+    // positions from them.
+    analysis::SharedMachineAxes axes;
     analysis::AxisProfile original;
     analysis::ConstantFeedTime constantFeed;
     std::optional<double> timeOptimal;             // s, T2 under the machine limits (spec §8.3)

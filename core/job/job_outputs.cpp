@@ -109,7 +109,7 @@ std::vector<report::LayerMotion> layerMotionOf(const JobResult& result) {
     }
     const std::vector<int> lines = passLines(result);
     const RescheduleOutcome& outcome = *result.rescheduled;
-    const report::BeforeAfter data{&result.original, &outcome.profile, result.axes, outcome.axes,
+    const report::BeforeAfter data{&result.original, &outcome.profile, *result.axes, *outcome.axes,
                                    lines};
     return report::layerMotion(outcome.schedule, data);
 }
@@ -151,7 +151,8 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
         {"max_junction_gap_deg", units::radToDeg(outcome.schedule.check.maxJunctionGapRad)},
     };
     const std::vector<int> lines = passLines(result);
-    report::BeforeAfter data{&result.original, &outcome.profile, result.axes, outcome.axes, lines};
+    report::BeforeAfter data{&result.original, &outcome.profile, *result.axes, *outcome.axes,
+                             lines};
     json["layers"] = report::layersJson(outcome.schedule, data);
     const auto& stages = outcome.stageSeconds;
     json["timing"] = {{"schedule_s", stages.schedule},

@@ -45,7 +45,7 @@ newMachineAxes(const RescheduleInput& input, const scheduling::ScheduleResult& s
         poses.push_back({schedule.newTips[i], schedule.newAxes[i]});
     }
     auto solved = kinematics::inverseKinematicsAlong(
-        input.machine->chain, poses, input.originalAxes->front().a, input.parameters.threads);
+        input.machine->chain, poses, input.originalAxes.front().a, input.parameters.threads);
     if (solved.failedIndex) {
         Error error = solved.failure;
         error.where = {input.program->path().sourceFile, passOf(input)[*solved.failedIndex].line,
@@ -56,7 +56,7 @@ newMachineAxes(const RescheduleInput& input, const scheduling::ScheduleResult& s
 }
 
 Result<std::string> rewriteProgram(const RescheduleInput& input, const RescheduleOutcome& outcome) {
-    const std::span<const kinematics::MachineAxes> passAxes = outcome.axes;
+    const std::span<const kinematics::MachineAxes> passAxes = *outcome.axes;
     const auto& all = input.program->path().records;
     if (const auto* gcode = std::get_if<io::nc::GcodeProgram>(&input.program->document)) {
         if (!io::programsToolTip(*input.program, input.passFirst, input.passCount)
@@ -226,8 +226,9 @@ Status checkModuloSteps(const RescheduleInput& input, const RescheduleOutcome& o
         return {};
     }
     constexpr double kHalfTurnRad = units::kPi - 1e-6;
-    for (std::size_t i = 1; i < outcome.axes.size(); ++i) {
-        const double step = std::abs(outcome.axes[i].a - outcome.axes[i - 1].a);
+    const std::vector<kinematics::MachineAxes>& axes = *outcome.axes;
+    for (std::size_t i = 1; i < axes.size(); ++i) {
+        const double step = std::abs(axes[i].a - axes[i - 1].a);
         if (step >= kHalfTurnRad) {
             const std::string table(1, input.machine->letter(kinematics::AxisId::A));
             return makeError(
@@ -244,7 +245,7 @@ Status checkModuloSteps(const RescheduleInput& input, const RescheduleOutcome& o
 // axes too (the ball centre is kept, the pivot is not), so a program inside its travel can be
 // re-scheduled out of it.
 Status checkTravel(const RescheduleInput& input, const RescheduleOutcome& outcome) {
-    const auto excess = kinematics::firstTravelExcess(outcome.axes, *input.machine);
+    const auto excess = kinematics::firstTravelExcess(*outcome.axes, *input.machine);
     if (!excess) {
         return {};
     }
@@ -325,7 +326,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     if (!axes) {
         return std::unexpected(axes.error());
     }
-    outcome.axes = std::move(*axes);
+    outcome.axes = std::make_shared<const std::vector<kinematics::MachineAxes>>(std::move(*axes));
     outcome.stageSeconds.kinematics = clock.lap();
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());

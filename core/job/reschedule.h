@@ -23,7 +23,9 @@ struct CuttingPass;
 // pass record); rescheduledRecords() gives them as records where a writer wants records.
 struct RescheduleOutcome {
     scheduling::ScheduleResult schedule;
-    std::vector<kinematics::MachineAxes> axes; // per pass record, A continuous
+    // Per pass record, A continuous; shared with the new motion's profile, which reads its
+    // positions from them.
+    analysis::SharedMachineAxes axes;
     // The tip feed of each pass record (mm/s) as the written program runs it, when that program
     // times its blocks anew (passIsBlockTimed); empty when the feeds are the input's.
     std::vector<double> passFeeds;
@@ -48,7 +50,7 @@ struct RescheduleInput {
     const kinematics::MachineModel* machine = nullptr;
     std::size_t passFirst = 0;
     std::size_t passCount = 0;
-    const std::vector<kinematics::MachineAxes>* originalAxes = nullptr; // per pass record
+    std::span<const kinematics::MachineAxes> originalAxes; // per pass record
     double toolRadius = 0.0;
     scheduling::ScheduleParameters parameters;
     std::vector<scheduling::LayerOverride> layerEdits; // the engineer's edits of single layers

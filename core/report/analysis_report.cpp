@@ -31,7 +31,8 @@ nlohmann::json lostMotionJson(std::span<const analysis::LostMotion> losses) {
 
 namespace {
 
-nlohmann::json axisJson(AxisId axis, const analysis::AxisSeries& series) {
+nlohmann::json axisJson(AxisId axis, const analysis::AxisProfile& profile) {
+    const analysis::AxisSeries& series = profile.axis(axis);
     const std::string unit = unitOf(axis);
     nlohmann::json json;
     json["peak_velocity_" + unit + "_s"] = toReportUnit(axis, series.peakVelocity);
@@ -39,11 +40,9 @@ nlohmann::json axisJson(AxisId axis, const analysis::AxisSeries& series) {
     json["peak_jerk_" + unit + "_s3"] = toReportUnit(axis, series.peakJerk);
     json["p999_velocity_" + unit + "_s"] = toReportUnit(axis, series.p999Velocity);
     json["p999_acceleration_" + unit + "_s2"] = toReportUnit(axis, series.p999Acceleration);
-    if (!series.position.empty()) {
-        const auto [low, high] =
-            std::minmax_element(series.position.begin(), series.position.end());
-        json["min_" + unit] = toReportUnit(axis, *low);
-        json["max_" + unit] = toReportUnit(axis, *high);
+    if (!profile.sampleRecord.empty()) {
+        json["min_" + unit] = toReportUnit(axis, series.minPosition);
+        json["max_" + unit] = toReportUnit(axis, series.maxPosition);
     }
     return json;
 }
@@ -78,7 +77,7 @@ nlohmann::json analysisJson(const analysis::AxisProfile& profile,
     json["merged_short_chords"] = profile.mergedShortChords;
     nlohmann::json axes;
     for (AxisId axis : kinematics::kAllAxes) {
-        axes[kinematics::axisName(axis)] = axisJson(axis, profile.axes[static_cast<int>(axis)]);
+        axes[kinematics::axisName(axis)] = axisJson(axis, profile);
     }
     json["axes"] = axes;
     json["a_reversals"] = profile.aReversals.count;
@@ -136,12 +135,14 @@ std::string axesCsv(const analysis::AxisProfile& profile,
               std::to_string(record < records.size() ? records[record].line : 0) + ',';
         appendNumber(row, profile.pathParameter[i]);
         appendNumber(row, profile.timeAt(i));
-        for (auto member : {&analysis::AxisSeries::position, &analysis::AxisSeries::velocity,
-                            &analysis::AxisSeries::acceleration}) {
-            for (AxisId axis : kinematics::kAllAxes) {
-                appendNumber(row,
-                             toReportUnit(axis, (profile.axes[static_cast<int>(axis)].*member)[i]));
-            }
+        for (AxisId axis : kinematics::kAllAxes) {
+            appendNumber(row, toReportUnit(axis, profile.position(axis, i)));
+        }
+        for (AxisId axis : kinematics::kAllAxes) {
+            appendNumber(row, toReportUnit(axis, profile.axis(axis).velocityAt(i)));
+        }
+        for (AxisId axis : kinematics::kAllAxes) {
+            appendNumber(row, toReportUnit(axis, profile.axis(axis).accelerationAt(i)));
         }
         row += record < reversal.size() && reversal[record] ? "1\n" : "0\n";
         csv += row;

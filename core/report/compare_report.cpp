@@ -417,9 +417,10 @@ Plot axisPlot(const compare::Comparison& comparison, AxisId axis, int derivative
     plot.yLabel = units[derivative];
     for (const MethodResult& method : comparison.methods) {
         const auto& series = method.profile.axis(axis);
-        const std::vector<double>& values = derivative == 0   ? series.position
-                                            : derivative == 1 ? series.velocity
-                                                              : series.acceleration;
+        const std::size_t n = method.profile.sampleRecord.size();
+        const std::vector<double> values = derivative == 0   ? method.profile.positions(axis)
+                                           : derivative == 1 ? series.velocities(n)
+                                                             : series.accelerations(n);
         PlotSeries line;
         line.name = method.method;
         line.x = method.profile.times();

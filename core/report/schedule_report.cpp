@@ -35,8 +35,8 @@ Peaks peaksWithin(const analysis::AxisProfile& profile, AxisId axis, std::size_t
         std::lower_bound(profile.sampleRecord.begin(), profile.sampleRecord.end(), first);
     for (auto it = begin; it != profile.sampleRecord.end() && *it <= last; ++it) {
         const auto i = static_cast<std::size_t>(it - profile.sampleRecord.begin());
-        peaks.velocity = std::max(peaks.velocity, std::abs(a.velocity[i]));
-        peaks.acceleration = std::max(peaks.acceleration, std::abs(a.acceleration[i]));
+        peaks.velocity = std::max(peaks.velocity, std::abs(a.velocityAt(i)));
+        peaks.acceleration = std::max(peaks.acceleration, std::abs(a.accelerationAt(i)));
     }
     return peaks;
 }

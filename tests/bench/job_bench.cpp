@@ -90,7 +90,7 @@ void BM_ReadScheduleWriteMillionBlocks(benchmark::State& state) {
         input.program = &*program;
         input.machine = &machine;
         input.passCount = originalAxes.size();
-        input.originalAxes = &originalAxes;
+        input.originalAxes = originalAxes;
         input.toolRadius = kToolRadius;
         input.parameters = scheduling::bestPreset();
         input.verifyByRereading = false;

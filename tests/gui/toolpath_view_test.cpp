@@ -335,7 +335,8 @@ class ToolpathViewTest final : public QObject {
         const double seconds = secondsAt(result.rescheduled->profile, record);
         QVERIFY2(std::abs(readoutNumber(match.captured(2)) - seconds) <= 0.005,
                  qPrintable(readout));
-        const double aDegrees = result.rescheduled->axes[record].a * 180.0 / 3.14159265358979323846;
+        const double aDegrees =
+            (*result.rescheduled->axes)[record].a * 180.0 / 3.14159265358979323846;
         QVERIFY2(std::abs(readoutNumber(match.captured(3)) - aDegrees) <= 0.05,
                  qPrintable(readout));
 

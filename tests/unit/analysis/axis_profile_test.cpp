@@ -229,6 +229,64 @@ TEST(AnalyseAxisMotion, LentPosesAndFeedsGiveWhatRecordsCarryingThemGive) {
     EXPECT_EQ(mismatched.error().code, ErrorCode::InvalidArgument);
 }
 
+// A profile keeps no positions of its own: it reads them from the machine axes it was made from,
+// which it shares with their maker, through the records its samples stand for.
+TEST(AnalyseAxisMotion, PositionsAreTheSharedMachineAxesOfTheSampledRecords) {
+    Program program = straightLine(Vec3(0.6, 0.8, 0.0), 30, 40.0, 0.02, 0.001);
+    const Vec3 end = program.records.back().tip;
+    program.add(end, program.axes.back().a, 40.0); // merged: the same tip
+    program.add(end + Vec3(0.5, 0.0, 0.0), 0.7, 40.0);
+    const auto shared = std::make_shared<const std::vector<kinematics::MachineAxes>>(program.axes);
+    const Result<AxisProfile> profile =
+        analyseAxisMotion(shared, PathSamples{.records = program.records}, {});
+    ASSERT_TRUE(profile.has_value()) << profile.error().toString();
+    EXPECT_EQ(profile->recordAxes, shared) << "shared, not copied";
+    EXPECT_EQ(profile->mergedDuplicates, 1u);
+    ASSERT_EQ(profile->sampleRecord.size(), program.axes.size() - 1);
+    for (AxisId id : kinematics::kAllAxes) {
+        const std::vector<double> positions = profile->positions(id);
+        ASSERT_EQ(positions.size(), profile->sampleRecord.size());
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            EXPECT_EQ(positions[i], program.axes[profile->sampleRecord[i]][id]);
+            EXPECT_EQ(profile->position(id, i), positions[i]);
+        }
+        const auto [low, high] = std::ranges::minmax(positions);
+        EXPECT_EQ(profile->axis(id).minPosition, low);
+        EXPECT_EQ(profile->axis(id).maxPosition, high);
+    }
+    EXPECT_EQ(profile->positions(AxisId::A).back(), 0.7);
+    EXPECT_EQ(analyseAxisMotion(analysis::SharedMachineAxes{},
+                                PathSamples{.records = program.records}, {})
+                  .error()
+                  .code,
+              ErrorCode::InvalidArgument);
+}
+
+// B stays put in four-axis work: its profile keeps no zeros, yet reads as zero at every sample.
+TEST(AnalyseAxisMotion, AStillAxisKeepsNoSamplesAndReadsAsZero) {
+    const Program program = straightLine(Vec3(0.6, 0.8, 0.0), 40, 30.0, 0.01, 0.002);
+    for (DerivativeMethod method :
+         {DerivativeMethod::Spline, DerivativeMethod::RawSpline, DerivativeMethod::FiniteDifference,
+          DerivativeMethod::Filtered}) {
+        const Result<AxisProfile> profile =
+            analyseAxisMotion(program.axes, program.records, withMethod(method));
+        ASSERT_TRUE(profile.has_value()) << nameOf(method);
+        const std::size_t n = profile->pathParameter.size();
+        const AxisSeries& b = profile->axis(AxisId::B);
+        EXPECT_TRUE(b.still()) << nameOf(method);
+        EXPECT_TRUE(b.velocity.empty() && b.acceleration.empty()) << nameOf(method);
+        EXPECT_EQ(b.velocities(n), std::vector<double>(n, 0.0)) << nameOf(method);
+        EXPECT_EQ(b.accelerations(n), std::vector<double>(n, 0.0)) << nameOf(method);
+        EXPECT_EQ(b.velocityAt(n - 1), 0.0);
+        EXPECT_EQ(b.peakVelocity + b.peakAcceleration + b.peakJerk, 0.0) << nameOf(method);
+        const AxisSeries& a = profile->axis(AxisId::A);
+        ASSERT_FALSE(a.still()) << nameOf(method);
+        ASSERT_EQ(a.velocity.size(), n);
+        EXPECT_EQ(a.velocities(n), a.velocity);
+        EXPECT_EQ(a.accelerationAt(n / 2), a.acceleration[n / 2]);
+    }
+}
+
 TEST(AnalyseAxisMotion, EveryMethodGivesTheSameFiguresOnAnyNumberOfThreads) {
     // Long enough for the axes to be differentiated on several threads.
     const Program line = straightLine(Vec3(1.0, 2.0, -2.0) / 3.0, 20000, 30.0, 0.01, 2e-6);
@@ -246,7 +304,8 @@ TEST(AnalyseAxisMotion, EveryMethodGivesTheSameFiguresOnAnyNumberOfThreads) {
             for (std::size_t k = 0; k < serial->axes.size(); ++k) {
                 const AxisSeries& one = serial->axes[k];
                 const AxisSeries& many = parallel->axes[k];
-                EXPECT_EQ(many.position, one.position) << nameOf(method) << " axis " << k;
+                EXPECT_EQ(many.minPosition, one.minPosition) << nameOf(method) << " axis " << k;
+                EXPECT_EQ(many.maxPosition, one.maxPosition) << nameOf(method) << " axis " << k;
                 EXPECT_EQ(many.velocity, one.velocity) << nameOf(method) << " axis " << k;
                 EXPECT_EQ(many.acceleration, one.acceleration) << nameOf(method) << " axis " << k;
                 EXPECT_EQ(many.peakVelocity, one.peakVelocity) << nameOf(method);
@@ -272,7 +331,7 @@ TEST(AnalyseAxisMotion, SinglePointOrAllDuplicatesGiveOneSampleAtRest) {
         EXPECT_EQ(profile->pathParameter.size(), 1u);
         EXPECT_EQ(profile->mergedDuplicates, n - 1);
         EXPECT_EQ(profile->cycleTime, 0.0);
-        EXPECT_EQ(profile->axis(AxisId::X).position, std::vector<double>{1.0});
+        EXPECT_EQ(profile->positions(AxisId::X), std::vector<double>{1.0});
         EXPECT_EQ(profile->axis(AxisId::X).peakVelocity, 0.0);
     }
 }

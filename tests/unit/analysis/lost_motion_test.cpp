@@ -23,11 +23,15 @@ kinematics::MachineModel machineWithPlay() {
 // Y over two revolutions of a helix (four direction changes), A turning with three reversals.
 AxisProfile helixProfile(double yNoise) {
     AxisProfile profile;
-    auto& y = profile.axes[static_cast<int>(AxisId::Y)].position;
+    auto axes = std::make_shared<std::vector<kinematics::MachineAxes>>();
     for (int i = 0; i <= 400; ++i) {
         const double angle = 4.0 * units::kPi * i / 400.0 + 0.3;
-        y.push_back(20.0 * std::sin(angle) + (i % 2 == 0 ? yNoise : -yNoise));
+        kinematics::MachineAxes at;
+        at.y = 20.0 * std::sin(angle) + (i % 2 == 0 ? yNoise : -yNoise);
+        axes->push_back(at);
+        profile.sampleRecord.push_back(static_cast<std::size_t>(i));
     }
+    profile.recordAxes = std::move(axes);
     profile.aReversals.count = 3;
     return profile;
 }

@@ -86,8 +86,8 @@ TEST(TimeOptimal, EveryAxisStaysWithinItsLimits) {
         const auto& limits = machine.limit(kinematics::kAllAxes[j]);
         const AxisSeries& series = profile.axes[j];
         for (std::size_t i = 0; i + 1 < s.size(); ++i) {
-            const double q1 = series.velocity[i] / profile.feed;
-            const double q2 = series.acceleration[i] / (profile.feed * profile.feed);
+            const double q1 = series.velocityAt(i) / profile.feed;
+            const double q2 = series.accelerationAt(i) / (profile.feed * profile.feed);
             const double v = result->pathSpeed[i];
             const double u =
                 (std::pow(result->pathSpeed[i + 1], 2) - v * v) / (2.0 * (s[i + 1] - s[i]));
@@ -113,8 +113,9 @@ TEST(TimeOptimal, IsNoSlowerThanConstantFeedBeyondTheStartAndStopRamps) {
     for (std::size_t j = 0; j < kinematics::kAllAxes.size(); ++j) {
         const double a = machine.limit(kinematics::kAllAxes[j]).acceleration;
         for (std::size_t i = 0; i < profile.pathParameter.size(); ++i) {
-            const double q1 = std::abs(profile.axes[j].velocity[i]) / profile.feed;
-            const double q2 = std::abs(profile.axes[j].acceleration[i]) / std::pow(profile.feed, 2);
+            const double q1 = std::abs(profile.axes[j].velocityAt(i)) / profile.feed;
+            const double q2 =
+                std::abs(profile.axes[j].accelerationAt(i)) / std::pow(profile.feed, 2);
             if (q1 > 1e-9) {
                 pathAcceleration = std::min(pathAcceleration, (a - q2 * feed * feed) / q1);
             }

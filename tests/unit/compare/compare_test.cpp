@@ -70,10 +70,10 @@ TEST(SecondDerivative, IsExactForAQuadraticOnANonUniformGrid) {
 TEST(Compare, EveryMethodKeepsTheBallCentres) {
     const auto centres = centresOf(demo().context());
     for (const MethodResult& method : demoComparison().methods) {
-        ASSERT_EQ(method.machineAxes.size(), centres.size()) << method.method;
+        ASSERT_EQ(method.machineAxes->size(), centres.size()) << method.method;
         for (std::size_t i = 0; i < centres.size(); i += 37) {
             const auto pose =
-                kinematics::forwardKinematics(demo().machine.chain, method.machineAxes[i]);
+                kinematics::forwardKinematics(demo().machine.chain, (*method.machineAxes)[i]);
             const Vec3 centre = pose.tip + demo().toolRadius * pose.axis;
             EXPECT_LT((centre - centres[i]).norm(), 1e-9) << method.method << " " << i;
         }

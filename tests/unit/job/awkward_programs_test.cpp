@@ -72,7 +72,7 @@ void expectRefused(const JobSpec& spec, ErrorCode code, const std::string& condi
 // The re-scheduled A of every cutting record, rad.
 std::vector<double> rescheduledA(const JobResult& result) {
     std::vector<double> a;
-    for (const auto& axes : result.rescheduled->axes) {
+    for (const auto& axes : *result.rescheduled->axes) {
         a.push_back(axes.a);
     }
     return a;

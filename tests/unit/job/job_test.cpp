@@ -33,7 +33,7 @@ TEST(DemoJob, OriginalProgramReversesTheAAxis) {
 TEST(DemoJob, ATurnsAboutOnceAroundPerRevolution) {
     auto result = runDemo();
     ASSERT_TRUE(result.has_value());
-    const auto& a = result->original.axis(kinematics::AxisId::A).position;
+    const std::vector<double> a = result->original.positions(kinematics::AxisId::A);
     const double turns = std::abs(a.back() - a.front()) / (2.0 * 3.141592653589793);
     EXPECT_GT(turns, 3.0);
 }

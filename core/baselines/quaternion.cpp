@@ -35,7 +35,7 @@ Frame frameOf(const scheduling::ScheduleInput& input, const scheduling::Schedule
     for (std::size_t i = 1; i < n; ++i) {
         f.s[i] = f.s[i - 1] + (input.centres[i] - input.centres[i - 1]).norm();
     }
-    f.original = ref.thetaOriginalAbsolute;
+    f.original = scheduling::absoluteAngles(ref, scheduling::Orientation::Original);
     f.low.assign(n, -1e300);
     f.high.assign(n, 1e300);
     f.checked.assign(n, false);
@@ -286,7 +286,7 @@ Result<QuaternionResult> quaternionOrientations(const scheduling::ScheduleInput&
                                                 const scheduling::ScheduleResult& reference,
                                                 const QuaternionSettings& settings) {
     const std::size_t n = input.centres.size();
-    if (n < 2 || reference.thetaOriginalAbsolute.size() != n || reference.layers.empty()) {
+    if (n < 2 || reference.newAxes.size() != n || reference.layers.empty()) {
         return makeError(ErrorCode::InvalidArgument,
                          "the quaternion baseline needs the engine's schedule of the same input");
     }
@@ -298,8 +298,7 @@ Result<QuaternionResult> quaternionOrientations(const scheduling::ScheduleInput&
         return makeError(ErrorCode::InvalidArgument, "one tool axis per ball centre expected");
     }
     for (std::size_t i = 0; i < n; ++i) {
-        if (!input.centres[i].allFinite() || !input.axes[i].allFinite() ||
-            !std::isfinite(reference.thetaOriginalAbsolute[i])) {
+        if (!input.centres[i].allFinite() || !input.axes[i].allFinite()) {
             return makeError(ErrorCode::Geometry,
                              "CL point " + std::to_string(i) + " is not finite (NaN or infinite)");
         }

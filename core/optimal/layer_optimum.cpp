@@ -395,7 +395,7 @@ Result<std::vector<double>> optimalLayer(const LayerBounds& bounds, Objective ob
 
 Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Objective objective) {
     const auto started = std::chrono::steady_clock::now();
-    const std::size_t n = reference.thetaAbsolute.size();
+    const std::size_t n = reference.newAxes.size();
     PathOptimum path;
     path.thetaAbsolute.assign(n, std::numeric_limits<double>::quiet_NaN());
     const auto& layers = reference.layers;
@@ -414,7 +414,9 @@ Result<PathOptimum> optimalPath(const scheduling::ScheduleResult& reference, Obj
     }
     for (std::size_t i = 0; i < n; ++i) {
         if (std::isnan(path.thetaAbsolute[i])) { // a merged duplicate: its sample precedes it
-            path.thetaAbsolute[i] = i > 0 ? path.thetaAbsolute[i - 1] : reference.thetaAbsolute[i];
+            path.thetaAbsolute[i] =
+                i > 0 ? path.thetaAbsolute[i - 1]
+                      : absoluteAngles(reference, scheduling::Orientation::Rescheduled)[i];
         }
     }
     path.seconds =

@@ -180,26 +180,6 @@ InputRange inputsOfLayer(std::span<const LayerResult> layers, std::size_t k, std
             k + 1 < layers.size() ? layers[k + 1].inputIndex.front() : n};
 }
 
-// Absolute angles per input: each layer writes its own input range, so the layers run at once.
-void writeAbsoluteAngles(ScheduleResult& result, const PlanePath& path, std::size_t n,
-                         unsigned threads) {
-    // std::vector zero-fills: the two fills (and their first touch) at once.
-    runBoth(
-        n, threads, [&] { result.thetaAbsolute.resize(n); },
-        [&] { result.thetaOriginalAbsolute.resize(n); });
-    const std::span<const LayerResult> layers = result.layers;
-    forEachItem(layers.size(), n, threads, [&](std::size_t k) {
-        const LayerResult& layer = layers[k];
-        const InputRange inputs = inputsOfLayer(layers, k, n);
-        const std::size_t start = path.sampleOfInput[inputs.begin];
-        for (std::size_t i = inputs.begin; i < inputs.end; ++i) {
-            const std::size_t j = path.sampleOfInput[i] - start;
-            result.thetaAbsolute[i] = layer.junctionAngle + layer.theta[j];
-            result.thetaOriginalAbsolute[i] = layer.junctionAngle + layer.thetaOriginal[j];
-        }
-    });
-}
-
 // MONOTONE_INFEASIBLE layers keep the input orientation.
 void keepOriginalAxes(ReconstructedPath& rebuilt, std::span<const LayerResult> layers,
                       const ScheduleInput& input) {
@@ -224,14 +204,16 @@ void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput
                                outcome.warnings.end());
         result.layers.push_back(std::move(outcome.result));
     }
-    writeAbsoluteAngles(result, path, n, threads);
-    ReconstructedPath rebuilt = reconstructAxes(input.centres, result.thetaAbsolute, path.tiltB0,
+    const std::vector<double> thetaAbsolute =
+        absoluteAngles(result.layers, n, Orientation::Rescheduled, threads);
+    ReconstructedPath rebuilt = reconstructAxes(input.centres, thetaAbsolute, path.tiltB0,
                                                 path.traversalSign, input.toolRadius, threads);
     keepOriginalAxes(rebuilt, result.layers, input);
-    result.check = checkReconstruction(input.centres, rebuilt, result.thetaAbsolute, path.tiltB0,
+    result.check = checkReconstruction(input.centres, rebuilt, thetaAbsolute, path.tiltB0,
                                        input.toolRadius, threads);
     result.originalReversals =
-        countReversals(result.thetaOriginalAbsolute, tol::kReversalStepRad, threads);
+        countReversals(absoluteAngles(result.layers, n, Orientation::Original, threads),
+                       tol::kReversalStepRad, threads);
     result.newAxes = std::move(rebuilt.axes);
     result.newTips = std::move(rebuilt.tips);
 }
@@ -275,6 +257,29 @@ void addCheckWarnings(ScheduleResult& result) {
 }
 
 } // namespace
+
+std::vector<double> absoluteAngles(std::span<const LayerResult> layers, std::size_t inputs,
+                                   Orientation which, unsigned threads) {
+    std::vector<double> angles(inputs);
+    // Each layer writes its own input range, so the layers run at once.
+    forEachItem(layers.size(), inputs, threads, [&](std::size_t k) {
+        const LayerResult& layer = layers[k];
+        if (layer.inputIndex.empty()) {
+            return;
+        }
+        const std::vector<double>& theta =
+            which == Orientation::Original ? layer.thetaOriginal : layer.theta;
+        const InputRange range = inputsOfLayer(layers, k, inputs);
+        std::size_t j = 0; // the layer sample of input i: the last one whose input is <= i
+        for (std::size_t i = range.begin; i < range.end; ++i) {
+            while (j + 1 < layer.inputIndex.size() && layer.inputIndex[j + 1] <= i) {
+                ++j;
+            }
+            angles[i] = layer.junctionAngle + theta[j];
+        }
+    });
+    return angles;
+}
 
 Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
                                 const CancelToken* cancel,

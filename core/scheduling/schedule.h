@@ -64,16 +64,27 @@ bool isFlagged(const LayerResult& layer);
 
 struct ScheduleResult {
     std::vector<LayerResult> layers;
-    std::vector<Vec3> newAxes, newTips;        // per input sample
-    std::vector<double> thetaAbsolute;         // absolute unwrapped in-plane angle per input sample
-    std::vector<double> thetaOriginalAbsolute; // the same for the input orientation
-    double tiltB0 = 0.0;                       // rad
-    int traversalSign = 1;                     // w . a of §1.3; the machine sigma = -traversalSign
-    std::vector<std::size_t> basePoints;       // input indices of the base points
-    ReconstructionCheck check;                 // §6.5 on the output
-    std::size_t originalReversals = 0;         // A reversals of the input orientation (§6.4)
+    std::vector<Vec3> newAxes, newTips;  // per input sample
+    double tiltB0 = 0.0;                 // rad
+    int traversalSign = 1;               // w . a of §1.3; the machine sigma = -traversalSign
+    std::vector<std::size_t> basePoints; // input indices of the base points
+    ReconstructionCheck check;           // §6.5 on the output
+    std::size_t originalReversals = 0;   // A reversals of the input orientation (§6.4)
     std::vector<std::string> warnings;
 };
+
+enum class Orientation { Rescheduled, Original };
+
+// The absolute unwrapped in-plane angle of every one of `inputs` input samples, rad, of the new
+// or the original orientation, made from the layers (a merged duplicate takes the angle of the
+// sample it is merged into). The result does not keep them: 16 bytes per input sample that only
+// the reconstruction, the reversal count and the baselines read.
+std::vector<double> absoluteAngles(std::span<const LayerResult> layers, std::size_t inputs,
+                                   Orientation which, unsigned threads = 1);
+
+inline std::vector<double> absoluteAngles(const ScheduleResult& result, Orientation which) {
+    return absoluteAngles(result.layers, result.newAxes.size(), which);
+}
 
 // Errors: InvalidArgument (parameters, radius, sizes, an override that does not fit the
 // layers or a key-point edit the layer's channel refuses), Geometry (NaN, degenerate path),

@@ -289,8 +289,10 @@ TEST(SchedulingProperties, RigidRotationAboutTheRotaryAxis) {
         ASSERT_TRUE(second.has_value());
         expectSameIntermediateLayers(m.result, *second, 1e-8);
         const double expected = -m.result.traversalSign * phi; // A = -sign * angle (§6.1)
+        const std::vector<double> before = absoluteAngles(m.result, Orientation::Rescheduled);
+        const std::vector<double> after = absoluteAngles(*second, Orientation::Rescheduled);
         for (std::size_t i = 0; i < rotated.centres.size(); i += 37) {
-            const double shift = m.result.thetaAbsolute[i] - second->thetaAbsolute[i];
+            const double shift = before[i] - after[i];
             ASSERT_NEAR(std::remainder(shift - expected, 2.0 * kPi), 0.0, 1e-8) << i;
         }
     }

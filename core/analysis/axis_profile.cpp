@@ -141,28 +141,15 @@ void buildPathParameter(const PathSamples& path, const AxisProfileOptions& optio
     profile.pathLength = length;
 }
 
-// The machine axes at the samples, one series per axis indexed by AxisId, gathered in one pass
-// over the records.
-std::vector<std::vector<double>> sampledAxes(std::span<const kinematics::MachineAxes> axes,
-                                             std::span<const std::size_t> sampleRecord) {
-    using kinematics::AxisId;
-    const std::size_t n = sampleRecord.size();
-    std::vector<std::vector<double>> series(kinematics::kAllAxes.size());
-    for (std::vector<double>& axis : series) {
-        axis.resize(n);
+// One machine axis at the samples, gathered for its differentiation only.
+std::span<const double> sampledAxis(std::span<const kinematics::MachineAxes> axes,
+                                    std::span<const std::size_t> sampleRecord,
+                                    kinematics::AxisId id, std::vector<double>& values) {
+    values.resize(sampleRecord.size());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        values[i] = axes[sampleRecord[i]][id];
     }
-    const auto of = [&](AxisId id) -> std::vector<double>& {
-        return series[static_cast<std::size_t>(id)];
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-        const kinematics::MachineAxes& m = axes[sampleRecord[i]];
-        of(AxisId::X)[i] = m.x;
-        of(AxisId::Y)[i] = m.y;
-        of(AxisId::Z)[i] = m.z;
-        of(AxisId::A)[i] = m.a;
-        of(AxisId::B)[i] = m.b;
-    }
-    return series;
+    return values;
 }
 
 } // namespace
@@ -194,11 +181,17 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
         knots = motionKnots(profile.pathParameter, axes, profile.sampleRecord);
         profile.mergedShortChords = n - knots.size();
     }
-    // The positions at the samples, only while they are differentiated.
-    const std::vector<std::vector<double>> positions = sampledAxes(axes, profile.sampleRecord);
-    std::vector<Result<AxisSeries>> series =
-        differentiateAxes(profile.pathParameter, positions, profile.feed, options.method,
-                          options.filterSeconds, knots, options.threads);
+    // Each axis's positions are gathered for its own differentiation and dropped after it, but
+    // A's: without merged samples they are the whole program's A, which the reversal audit reads.
+    std::vector<double> sampledA;
+    const PositionsOf positionsOf = [&](std::size_t k, std::vector<double>& scratch) {
+        const kinematics::AxisId id = kinematics::kAllAxes[k];
+        return sampledAxis(axes, profile.sampleRecord, id,
+                           id == kinematics::AxisId::A ? sampledA : scratch);
+    };
+    std::vector<Result<AxisSeries>> series = differentiateAxes(
+        profile.pathParameter, kinematics::kAllAxes.size(), positionsOf, profile.feed,
+        options.method, options.filterSeconds, knots, options.threads);
     for (kinematics::AxisId id : kinematics::kAllAxes) {
         Result<AxisSeries>& axis = series[static_cast<int>(id)];
         if (!axis) {
@@ -208,8 +201,6 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
         }
         profile.axes[static_cast<int>(id)] = std::move(*axis);
     }
-    // Without merged points the sampled A already is the whole program: no gather needed.
-    const std::vector<double>& sampledA = positions[static_cast<int>(kinematics::AxisId::A)];
     if (profile.mergedDuplicates == 0) {
         profile.aReversals = auditReversals(sampledA);
     } else {

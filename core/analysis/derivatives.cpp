@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -243,35 +244,6 @@ void forEachSeries(std::size_t series, std::size_t samples, unsigned threads, Bo
     forEachItem(series, series * samples, threads, std::forward<Body>(body));
 }
 
-// A series to differentiate: its positions at the samples, and where its derivatives go.
-struct MovingSeries {
-    std::span<const double> position;
-    AxisSeries* series = nullptr;
-};
-
-// Spline derivatives of several series over the same samples (at least 2) and knots: the knots
-// are shared, so one elimination of the spline system serves every series.
-void splineDerivatives(std::span<const double> s, double feed, const SplineKnots& knots,
-                       std::span<const MovingSeries> series, unsigned threads) {
-    std::vector<double> gatheredS;
-    const std::span<const double> knotS = knots.valuesAtKnots(s, gatheredS);
-    std::vector<std::vector<double>> gatheredQ(series.size());
-    std::vector<std::span<const double>> knotQ;
-    for (std::size_t k = 0; k < series.size(); ++k) {
-        knotQ.push_back(knots.valuesAtKnots(series[k].position, gatheredQ[k]));
-    }
-    // One block for every series' moments, left uninitialised: the solve writes each entry.
-    const auto momentBlock = std::make_unique_for_overwrite<double[]>(knotS.size() * series.size());
-    std::vector<std::span<double>> moments;
-    for (std::size_t k = 0; k < series.size(); ++k) {
-        moments.emplace_back(momentBlock.get() + k * knotS.size(), knotS.size());
-    }
-    geometry::notAKnotMoments(knotS, knotQ, moments);
-    forEachSeries(series.size(), s.size(), threads, [&](std::size_t k) {
-        sampleSpline(s, knots, knotS, knotQ[k], moments[k], feed, *series[k].series);
-    });
-}
-
 // The first sample at which the path parameter is unusable (not finite, or not above the one
 // before it); s.size() when there is none. Checked once for all axes over the same samples.
 std::size_t firstBadPathSample(std::span<const double> s) {
@@ -323,82 +295,126 @@ Status checkFinite(const AxisSeries& series) {
     return {};
 }
 
-// Derivatives and peaks of the moving series (validated, not still) by `method`. An error (bad
-// knots) applies to every series.
-Status differentiateMoving(std::span<const double> s, std::span<const MovingSeries> moving,
-                           double feed, DerivativeMethod method, double filterSeconds,
-                           std::span<const std::size_t> knots, unsigned threads) {
-    if (moving.empty()) {
-        return {}; // a series of fewer than 2 samples is still: the methods below get >= 2
-    }
-    const auto eachSeries = [&](auto&& differentiate) {
-        forEachSeries(moving.size(), s.size(), threads,
-                      [&](std::size_t k) { differentiate(moving[k].position, *moving[k].series); });
-    };
-    if (method == DerivativeMethod::Filtered) {
-        eachSeries([&](std::span<const double> position, AxisSeries& series) {
-            filteredDerivatives(s, position, feed, filterSeconds, series);
-        });
-        return {};
-    }
-    if (method == DerivativeMethod::FiniteDifference) {
-        eachSeries([&](std::span<const double> position, AxisSeries& series) {
-            finiteDifferences(s, position, feed, series);
-        });
-        return {};
-    }
-    SplineKnots splineKnots{{}, s.size()};
-    if (!knots.empty() && method == DerivativeMethod::Spline) {
-        if (Status ok = validateKnots(knots, s.size()); !ok) {
-            return ok;
+// What every axis of one differentiation shares, made once before the axes: the samples, the
+// method and, for the spline methods, the knots and the eliminated spline system. Holds views of
+// its own storage, so it stays where it is made.
+class SharedFit {
+  public:
+    SharedFit(std::span<const double> samples, double feedRate, DerivativeMethod fitMethod,
+              double windowSeconds, std::span<const std::size_t> knotIndices)
+        : s(samples), feed(feedRate), method(fitMethod), filterSeconds(windowSeconds),
+          badPath(firstBadPathSample(samples)), knots{{}, samples.size()} {
+        if (method == DerivativeMethod::Filtered || method == DerivativeMethod::FiniteDifference ||
+            s.size() < 2 || badPath < s.size()) {
+            return; // a series of fewer than 2 samples is still; a bad path fails every series
         }
-        // Valid knots are ascending and unique from the first sample to the last: as many of
-        // them as samples are every sample.
-        if (knots.size() < s.size()) {
-            splineKnots.indices = knots;
+        if (!knotIndices.empty() && method == DerivativeMethod::Spline) {
+            knotsValid = validateKnots(knotIndices, s.size());
+            if (!knotsValid) {
+                return;
+            }
+            // Valid knots are ascending and unique from the first sample to the last: as many
+            // of them as samples are every sample.
+            if (knotIndices.size() < s.size()) {
+                knots.indices = knotIndices;
+            }
         }
+        knotS = knots.valuesAtKnots(s, gatheredS);
+        system.emplace(knotS);
     }
-    splineDerivatives(s, feed, splineKnots, moving, threads);
-    return {};
+    SharedFit(const SharedFit&) = delete;
+    SharedFit& operator=(const SharedFit&) = delete;
+
+    const std::span<const double> s;
+    const double feed;
+    const DerivativeMethod method;
+    const double filterSeconds;
+    const std::size_t badPath;                      // firstBadPathSample(s)
+    Status knotsValid;                              // bad spline knots fail every moving axis
+    SplineKnots knots;                              // of the spline methods
+    std::span<const double> knotS;                  // s at the knots
+    std::optional<geometry::NotAKnotSystem> system; // the spline methods, on valid samples
+
+  private:
+    std::vector<double> gatheredS;
+};
+
+// The spline derivatives of one axis: its values at the knots, their moments by the shared
+// system, and the samples. Only this axis's moments (and knot values, when the knots are not
+// every sample) are held meanwhile.
+void splineDerivatives(const SharedFit& fit, std::span<const double> position, AxisSeries& series) {
+    std::vector<double> gatheredQ;
+    const std::span<const double> knotQ = fit.knots.valuesAtKnots(position, gatheredQ);
+    // Left uninitialised: the solve writes each entry.
+    const auto momentBlock = std::make_unique_for_overwrite<double[]>(knotQ.size());
+    const std::span<double> moments(momentBlock.get(), knotQ.size());
+    fit.system->solve(knotQ, moments);
+    sampleSpline(fit.s, fit.knots, fit.knotS, knotQ, moments, fit.feed, series);
+}
+
+// One axis: validated, its range taken, and unless it is still its derivatives and peaks by the
+// fit's method.
+Result<AxisSeries> differentiateOne(const SharedFit& fit, std::span<const double> position) {
+    if (Status ok = validate(fit.s, position, fit.feed, fit.badPath); !ok) {
+        return std::unexpected(std::move(ok.error()));
+    }
+    AxisSeries series;
+    if (!position.empty()) {
+        const auto [low, high] = std::ranges::minmax(position);
+        series.minPosition = low;
+        series.maxPosition = high;
+    }
+    if (isStill(position)) {
+        // A still axis (B in four-axis work) has exactly zero derivatives by either method:
+        // skip the fit, which is most of the cost per axis, and keep no zeros.
+        return series;
+    }
+    if (!fit.knotsValid) {
+        return std::unexpected(fit.knotsValid.error());
+    }
+    switch (fit.method) {
+    case DerivativeMethod::Filtered:
+        filteredDerivatives(fit.s, position, fit.feed, fit.filterSeconds, series);
+        break;
+    case DerivativeMethod::FiniteDifference:
+        finiteDifferences(fit.s, position, fit.feed, series);
+        break;
+    case DerivativeMethod::Spline:
+    case DerivativeMethod::RawSpline:
+        splineDerivatives(fit, position, series);
+        break;
+    }
+    if (Status finite = checkFinite(series); !finite) {
+        return std::unexpected(std::move(finite.error()));
+    }
+    return series;
 }
 
 } // namespace
+
+std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s, std::size_t axes,
+                                                  const PositionsOf& positionsOf, double feed,
+                                                  DerivativeMethod method, double filterSeconds,
+                                                  std::span<const std::size_t> knots,
+                                                  unsigned threads) {
+    const SharedFit fit(s, feed, method, filterSeconds, knots);
+    std::vector<Result<AxisSeries>> results(axes);
+    forEachSeries(axes, s.size(), threads, [&](std::size_t k) {
+        std::vector<double> scratch;
+        results[k] = differentiateOne(fit, positionsOf(k, scratch));
+    });
+    return results;
+}
 
 std::vector<Result<AxisSeries>>
 differentiateAxes(std::span<const double> s, std::span<const std::vector<double>> positions,
                   double feed, DerivativeMethod method, double filterSeconds,
                   std::span<const std::size_t> knots, unsigned threads) {
-    const std::size_t badPath = firstBadPathSample(s);
-    std::vector<Result<AxisSeries>> results(positions.size());
-    std::vector<std::size_t> movingIndex;
-    std::vector<MovingSeries> moving;
-    for (std::size_t k = 0; k < positions.size(); ++k) {
-        const std::span<const double> position = positions[k];
-        if (Status ok = validate(s, position, feed, badPath); !ok) {
-            results[k] = std::unexpected(std::move(ok.error()));
-            continue;
-        }
-        AxisSeries& series = *results[k];
-        if (!position.empty()) {
-            const auto [low, high] = std::ranges::minmax(position);
-            series.minPosition = low;
-            series.maxPosition = high;
-        }
-        if (isStill(position)) {
-            // A still axis (B in four-axis work) has exactly zero derivatives by either method:
-            // skip the fit, which is most of the cost per axis, and keep no zeros.
-            continue;
-        }
-        movingIndex.push_back(k);
-        moving.push_back({position, &series});
-    }
-    const Status ok = differentiateMoving(s, moving, feed, method, filterSeconds, knots, threads);
-    for (std::size_t k = 0; k < moving.size(); ++k) {
-        if (Status summary = ok ? checkFinite(*moving[k].series) : ok; !summary) {
-            results[movingIndex[k]] = std::unexpected(std::move(summary.error()));
-        }
-    }
-    return results;
+    const PositionsOf given = [&](std::size_t k, std::vector<double>&) {
+        return std::span<const double>(positions[k]);
+    };
+    return differentiateAxes(s, positions.size(), given, feed, method, filterSeconds, knots,
+                             threads);
 }
 
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -32,6 +33,18 @@ Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<doub
 // results are the same on any number.
 std::vector<Result<AxisSeries>>
 differentiateAxes(std::span<const double> s, std::span<const std::vector<double>> positions,
+                  double feed, DerivativeMethod method, double filterSeconds = 0.008,
+                  std::span<const std::size_t> knots = {}, unsigned threads = 1);
+
+// The positions of axis k at the samples: a view of the caller's own, or of `scratch` filled
+// for the call. Called once per axis, on the thread that differentiates it.
+using PositionsOf =
+    std::function<std::span<const double>(std::size_t axis, std::vector<double>& scratch)>;
+
+// differentiateAxes of `axes` axes whose positions are handed out one axis at a time: only the
+// axes being differentiated (one per thread) have positions and spline moments at once.
+std::vector<Result<AxisSeries>>
+differentiateAxes(std::span<const double> s, std::size_t axes, const PositionsOf& positionsOf,
                   double feed, DerivativeMethod method, double filterSeconds = 0.008,
                   std::span<const std::size_t> knots = {}, unsigned threads = 1);
 

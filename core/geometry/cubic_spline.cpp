@@ -1,7 +1,6 @@
 #include "core/geometry/cubic_spline.h"
 
 #include <cmath>
-#include <memory>
 
 namespace bladeaxis::geometry {
 
@@ -56,69 +55,64 @@ double slope(std::span<const double> values, const NotAKnotRows& system, std::si
     return (values[i + 1] - values[i]) / system.h(i);
 }
 
-// Thomas algorithm on the rows, the right-hand side of each series 6 (slope_{r+1} - slope_r),
-// eliminated into moments[k][r + 1] and substituted back there. The pivots are the only
-// scratch: one elimination of the matrix serves every series.
-void solveInteriorMoments(const NotAKnotRows& system,
-                          std::span<const std::span<const double>> values,
-                          std::span<const std::span<double>> moments) {
+} // namespace
+
+// Thomas algorithm on the rows: the pivots depend only on the knots and are eliminated here;
+// solve() substitutes a right-hand side.
+NotAKnotSystem::NotAKnotSystem(std::span<const double> knots) : m_knots(knots) {
+    if (knots.size() < 4) {
+        return;
+    }
+    const NotAKnotRows system(knots);
     const std::size_t rows = system.rows();
-    const std::size_t series = values.size();
-    // Uninitialised: each pivot is written before it is read.
-    const auto pivot = std::make_unique_for_overwrite<double[]>(rows);
-    std::vector<double> previousSlope(series);
-    pivot[0] = system.diag(0);
-    for (std::size_t k = 0; k < series; ++k) {
-        previousSlope[k] = slope(values[k], system, 1);
-        moments[k][1] = 6.0 * (previousSlope[k] - slope(values[k], system, 0));
-    }
+    m_pivots.resize(rows);
+    m_pivots[0] = system.diag(0);
     for (std::size_t row = 1; row < rows; ++row) {
-        const double factor = system.sub(row) / pivot[row - 1];
-        pivot[row] = system.diag(row) - factor * system.super(row - 1);
-        for (std::size_t k = 0; k < series; ++k) {
-            const double next = slope(values[k], system, row + 1);
-            moments[k][row + 1] = 6.0 * (next - previousSlope[k]) - factor * moments[k][row];
-            previousSlope[k] = next;
-        }
-    }
-    for (std::size_t k = 0; k < series; ++k) {
-        moments[k][rows] = moments[k][rows] / pivot[rows - 1];
-    }
-    for (std::size_t row = rows - 1; row-- > 0;) {
-        const double super = system.super(row);
-        for (std::size_t k = 0; k < series; ++k) {
-            moments[k][row + 1] = (moments[k][row + 1] - super * moments[k][row + 2]) / pivot[row];
-        }
+        const double factor = system.sub(row) / m_pivots[row - 1];
+        m_pivots[row] = system.diag(row) - factor * system.super(row - 1);
     }
 }
 
-} // namespace
-
-void notAKnotMoments(std::span<const double> knots, std::span<const std::span<const double>> values,
-                     std::span<const std::span<double>> moments) {
-    const std::size_t n = knots.size();
+// The right-hand side 6 (slope_{r+1} - slope_r) of row r is eliminated into moments[r + 1] and
+// substituted back there. The factors are divided again rather than kept: a division that no
+// substitution waits for costs less than 8 bytes per knot.
+void NotAKnotSystem::solve(std::span<const double> values, std::span<double> moments) const {
+    const std::size_t n = m_knots.size();
     if (n == 2) {
-        for (const std::span<double> m : moments) {
-            m[0] = m[1] = 0.0;
-        }
+        moments[0] = moments[1] = 0.0;
         return;
     }
     if (n == 3) {
         // The not-a-knot spline through three points is their parabola: constant moment.
-        for (std::size_t k = 0; k < values.size(); ++k) {
-            const std::span<const double> y = values[k];
-            const double d0 = (y[1] - y[0]) / (knots[1] - knots[0]);
-            const double d1 = (y[2] - y[1]) / (knots[2] - knots[1]);
-            const double moment = 2.0 * (d1 - d0) / (knots[2] - knots[0]);
-            moments[k][0] = moments[k][1] = moments[k][2] = moment;
-        }
+        const double d0 = (values[1] - values[0]) / (m_knots[1] - m_knots[0]);
+        const double d1 = (values[2] - values[1]) / (m_knots[2] - m_knots[1]);
+        moments[0] = moments[1] = moments[2] = 2.0 * (d1 - d0) / (m_knots[2] - m_knots[0]);
         return;
     }
-    const NotAKnotRows system(knots);
-    solveInteriorMoments(system, values, moments);
-    for (const std::span<double> m : moments) {
-        m[0] = system.firstMoment(m);
-        m[n - 1] = system.lastMoment(m);
+    const NotAKnotRows system(m_knots);
+    const std::size_t rows = system.rows();
+    double previousSlope = slope(values, system, 1);
+    moments[1] = 6.0 * (previousSlope - slope(values, system, 0));
+    for (std::size_t row = 1; row < rows; ++row) {
+        const double factor = system.sub(row) / m_pivots[row - 1];
+        const double next = slope(values, system, row + 1);
+        moments[row + 1] = 6.0 * (next - previousSlope) - factor * moments[row];
+        previousSlope = next;
+    }
+    moments[rows] = moments[rows] / m_pivots[rows - 1];
+    for (std::size_t row = rows - 1; row-- > 0;) {
+        moments[row + 1] =
+            (moments[row + 1] - system.super(row) * moments[row + 2]) / m_pivots[row];
+    }
+    moments[0] = system.firstMoment(moments);
+    moments[n - 1] = system.lastMoment(moments);
+}
+
+void notAKnotMoments(std::span<const double> knots, std::span<const std::span<const double>> values,
+                     std::span<const std::span<double>> moments) {
+    const NotAKnotSystem system(knots);
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        system.solve(values[k], moments[k]);
     }
 }
 

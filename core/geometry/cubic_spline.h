@@ -60,11 +60,25 @@ struct CubicSplineInterval {
     double thirdDerivative() const { return (rightMoment - leftMoment) / width(); }
 };
 
-// Moments of the not-a-knot splines through several value series over the same knots (strictly
-// increasing and finite, at least 2; values[k] and moments[k] have the size of knots). The
-// tridiagonal system's matrix depends only on the knots, so it is eliminated once for all
-// series, and the series' substitution chains run side by side instead of one after another.
-// Every series gets the moments a spline of its own would.
+// The not-a-knot spline system over a knot vector (strictly increasing and finite, at least 2),
+// eliminated once: the tridiagonal matrix depends only on the knots, so the moments of any
+// number of value series over them are then substituted one series at a time, and a caller
+// need hold only the series it is working on. Keeps a view of the knots and one pivot per knot.
+class NotAKnotSystem {
+  public:
+    explicit NotAKnotSystem(std::span<const double> knots);
+
+    // The moments (second derivatives at the knots) of the spline through `values`; both have
+    // the size of the knots. The same as a CubicSpline of its own gives.
+    void solve(std::span<const double> values, std::span<double> moments) const;
+
+  private:
+    std::span<const double> m_knots;
+    std::vector<double> m_pivots; // of the interior rows, when there are at least 4 knots
+};
+
+// Moments of the not-a-knot splines through several value series over the same knots
+// (NotAKnotSystem, eliminated once); values[k] and moments[k] have the size of knots.
 void notAKnotMoments(std::span<const double> knots, std::span<const std::span<const double>> values,
                      std::span<const std::span<double>> moments);
 

@@ -9,38 +9,6 @@ const char* axisName(AxisId axis) {
     return kNames[static_cast<int>(axis)];
 }
 
-double MachineAxes::operator[](AxisId axis) const {
-    switch (axis) {
-    case AxisId::X:
-        return x;
-    case AxisId::Y:
-        return y;
-    case AxisId::Z:
-        return z;
-    case AxisId::A:
-        return a;
-    case AxisId::B:
-        return b;
-    }
-    return 0.0;
-}
-
-double& MachineAxes::operator[](AxisId axis) {
-    switch (axis) {
-    case AxisId::X:
-        return x;
-    case AxisId::Y:
-        return y;
-    case AxisId::Z:
-        return z;
-    case AxisId::A:
-        return a;
-    case AxisId::B:
-        return b;
-    }
-    return x;
-}
-
 const char* layoutName(Layout layout) {
     switch (layout) {
     case Layout::TableAHeadB:

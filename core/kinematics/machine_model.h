@@ -32,8 +32,28 @@ struct MachineAxes {
     double a = 0.0;
     double b = 0.0;
 
-    double operator[](AxisId axis) const;
-    double& operator[](AxisId axis);
+  private:
+    template <class Self>
+    static auto& member(Self& self, AxisId axis) {
+        switch (axis) {
+        case AxisId::X:
+            return self.x;
+        case AxisId::Y:
+            return self.y;
+        case AxisId::Z:
+            return self.z;
+        case AxisId::A:
+            return self.a;
+        case AxisId::B:
+            return self.b;
+        }
+        return self.x;
+    }
+
+  public:
+    // Inline: the analysis reads one axis of millions of records through it.
+    double operator[](AxisId axis) const { return member(*this, axis); }
+    double& operator[](AxisId axis) { return member(*this, axis); }
 };
 
 // Per-axis limits. Linear axes: mm, mm/s, mm/s^2, mm/s^3. Rotary axes: rad, rad/s, ...

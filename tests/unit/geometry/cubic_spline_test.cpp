@@ -155,6 +155,31 @@ TEST(NotAKnotMoments, SharedKnotsGiveEachSeriesTheMomentsOfItsOwnSpline) {
     }
 }
 
+// One elimination of the knots' system serves any number of series solved one after another:
+// the not-a-knot spline through a cubic is that cubic, so each series' moments are its second
+// derivatives at the knots.
+TEST(NotAKnotSystem, OneEliminationSolvesEverySeriesExactlyForCubics) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> coefficient(-2.0, 2.0);
+    for (int count : {4, 6, 250}) {
+        const std::vector<double> knots = randomKnots(rng, count);
+        const NotAKnotSystem system(knots);
+        for (int series = 0; series < 3; ++series) {
+            const double c1 = coefficient(rng), c2 = coefficient(rng), c3 = coefficient(rng);
+            std::vector<double> values;
+            for (double x : knots) {
+                values.push_back(1.0 + c1 * x + c2 * x * x + c3 * x * x * x);
+            }
+            std::vector<double> moments(knots.size(), std::nan(""));
+            system.solve(values, moments);
+            for (std::size_t i = 0; i < knots.size(); ++i) {
+                const double exact = 2.0 * c2 + 6.0 * c3 * knots[i];
+                EXPECT_NEAR(moments[i], exact, 1e-7 * (1.0 + std::abs(exact))) << count << " " << i;
+            }
+        }
+    }
+}
+
 TEST(CubicSplineInterval, FirstDerivativeBoundHoldsAcrossTheInterval) {
     std::mt19937 rng(13);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);

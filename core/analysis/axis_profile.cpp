@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -46,6 +47,11 @@ Status validateInput(std::span<const kinematics::MachineAxes> axes, const PathSa
     }
     if (path.size() == 0) {
         return makeError(ErrorCode::InvalidArgument, "axis motion: no records to analyse");
+    }
+    if (path.size() - 1 > std::numeric_limits<RecordIndex>::max()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "axis motion: " + std::to_string(path.size()) +
+                             " records, more than one analysis indexes");
     }
     if (!std::isfinite(options.feedOverride) || options.feedOverride < 0.0) {
         return makeError(ErrorCode::InvalidArgument, "feed override must be >= 0 mm/s, got " +
@@ -118,7 +124,7 @@ void buildPathParameter(const PathSamples& path, const AxisProfileOptions& optio
     profile.sampleRecord.reserve(path.size());
     const auto addSample = [&](double s, std::size_t record) {
         profile.pathParameter.push_back(s);
-        profile.sampleRecord.push_back(record);
+        profile.sampleRecord.push_back(static_cast<RecordIndex>(record));
     };
     Vec3 last = pointOf(0);
     double s = 0.0, length = 0.0;
@@ -143,7 +149,7 @@ void buildPathParameter(const PathSamples& path, const AxisProfileOptions& optio
 
 // One machine axis at the samples, gathered for its differentiation only.
 std::span<const double> sampledAxis(std::span<const kinematics::MachineAxes> axes,
-                                    std::span<const std::size_t> sampleRecord,
+                                    std::span<const RecordIndex> sampleRecord,
                                     kinematics::AxisId id, std::vector<double>& values) {
     values.resize(sampleRecord.size());
     for (std::size_t i = 0; i < values.size(); ++i) {

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -87,13 +88,17 @@ struct AxisSeries {
     std::vector<double> accelerations(std::size_t n) const;
 };
 
+// The index of a record in the records an analysis reads: 32 bits, half the bytes of a size_t
+// in every sample of a profile. A program text is at most 4 GiB (io/), so are its records.
+using RecordIndex = std::uint32_t;
+
 // The machine axes of a program's records, shared by whoever made them (a job's pass, the
 // re-scheduled pass) and the profiles analysed from them.
 using SharedMachineAxes = std::shared_ptr<const std::vector<kinematics::MachineAxes>>;
 
 struct AxisProfile {
     std::vector<double> pathParameter;     // s, mm, strictly increasing, s[0] = 0
-    std::vector<std::size_t> sampleRecord; // input record of each sample (merged ones dropped)
+    std::vector<RecordIndex> sampleRecord; // input record of each sample (merged ones dropped)
     // The machine axes of every record analysed, A continuous; sampleRecord indexes them. The
     // positions at the samples are read from them rather than copied per axis: the copies were
     // 40 bytes per sample in each profile a job holds.
@@ -148,7 +153,8 @@ struct PathSamples {
 // axes: machine axes per record (A already continuous: see unwrapRotary for modulo programs),
 // of which the profile keeps a share; path: tip and tool axis per record (for s) and the
 // programmed feeds. Errors also when the poses or feeds lent in `path` are not one per record.
-// Errors: InvalidArgument (sizes differ, empty input, no usable feed, bad options), Geometry
+// Errors: InvalidArgument (sizes differ, empty input, more records than a RecordIndex counts,
+// no usable feed, bad options), Geometry
 // (a non-finite coordinate, axis value or feed, named with its record index and source line).
 // A single sample (one record, or all records merged) gives zero derivatives.
 Result<AxisProfile> analyseAxisMotion(SharedMachineAxes axes, const PathSamples& path,

@@ -42,7 +42,7 @@ double medianChord(std::span<const double> s) {
 
 std::vector<std::size_t> motionKnots(std::span<const double> s,
                                      std::span<const kinematics::MachineAxes> axes,
-                                     std::span<const std::size_t> sampleRecord,
+                                     std::span<const RecordIndex> sampleRecord,
                                      const MotionKnotTolerances& tolerances) {
     const std::size_t n = s.size();
     std::vector<std::size_t> knots;

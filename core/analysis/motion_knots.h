@@ -7,6 +7,7 @@
 // points raised a peak by 60-80 %. So a sample is a knot of the derivative spline unless it is
 // both close to the previous knot and on the straight move past it.
 
+#include "core/analysis/axis_profile.h"
 #include "core/kinematics/machine_model.h"
 
 #include <cstddef>
@@ -37,7 +38,7 @@ struct MotionKnotTolerances {
 // corner) stays a knot: that motion is real and the figures must show it.
 std::vector<std::size_t> motionKnots(std::span<const double> s,
                                      std::span<const kinematics::MachineAxes> axes,
-                                     std::span<const std::size_t> sampleRecord,
+                                     std::span<const RecordIndex> sampleRecord,
                                      const MotionKnotTolerances& tolerances = {});
 
 // The median of the chords s[i+1] - s[i] (0 for fewer than 2 samples). O(n).

@@ -149,7 +149,7 @@ TEST(AnalyseAxisMotion, MergesAndCountsDuplicatePoints) {
         analyseAxisMotion(line.axes, line.records, AxisProfileOptions{});
     ASSERT_TRUE(merged.has_value() && clean.has_value());
     EXPECT_EQ(merged->mergedDuplicates, 3u);
-    EXPECT_EQ(merged->sampleRecord, (std::vector<std::size_t>{0, 1, 2, 4, 5, 6, 8, 9, 11, 12}));
+    EXPECT_EQ(merged->sampleRecord, (std::vector<RecordIndex>{0, 1, 2, 4, 5, 6, 8, 9, 11, 12}));
     EXPECT_EQ(merged->pathParameter, clean->pathParameter);
     EXPECT_EQ(merged->axis(AxisId::A).velocity, clean->axis(AxisId::A).velocity);
 }

@@ -29,7 +29,7 @@ AxisProfile helixProfile(double yNoise) {
         kinematics::MachineAxes at;
         at.y = 20.0 * std::sin(angle) + (i % 2 == 0 ? yNoise : -yNoise);
         axes->push_back(at);
-        profile.sampleRecord.push_back(static_cast<std::size_t>(i));
+        profile.sampleRecord.push_back(static_cast<RecordIndex>(i));
     }
     profile.recordAxes = std::move(axes);
     profile.aReversals.count = 3;

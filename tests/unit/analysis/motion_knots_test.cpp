@@ -15,7 +15,7 @@ namespace {
 struct Sampled {
     std::vector<double> s;
     std::vector<kinematics::MachineAxes> axes;
-    std::vector<std::size_t> records;
+    std::vector<RecordIndex> records;
 };
 
 // A smooth 4-axis motion sampled every 0.4 mm, with a point 2 um after every `every`-th one
@@ -42,7 +42,7 @@ Sampled smoothMotion(int every) {
         }
     }
     for (std::size_t i = 0; i < out.s.size(); ++i) {
-        out.records.push_back(i);
+        out.records.push_back(static_cast<RecordIndex>(i));
     }
     return out;
 }
@@ -75,7 +75,7 @@ TEST(MotionKnots, ARotationOverAShortChordIsKept) {
     turned.a += 0.035;
     sampled.s.insert(sampled.s.begin() + 101, sampled.s[100] + 0.003);
     sampled.axes.insert(sampled.axes.begin() + 101, turned);
-    sampled.records.push_back(sampled.records.size());
+    sampled.records.push_back(static_cast<RecordIndex>(sampled.records.size()));
     EXPECT_EQ(motionKnots(sampled.s, sampled.axes, sampled.records).size(), sampled.s.size());
 }
 

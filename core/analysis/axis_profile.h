@@ -89,7 +89,8 @@ struct AxisSeries {
 };
 
 // The index of a record in the records an analysis reads: 32 bits, half the bytes of a size_t
-// in every sample of a profile. A program text is at most 4 GiB (io/), so are its records.
+// in every sample of a profile. A program text is at most 4 GiB (io/), so its records are
+// fewer than 2^32.
 using RecordIndex = std::uint32_t;
 
 // The machine axes of a program's records, shared by whoever made them (a job's pass, the
@@ -154,8 +155,8 @@ struct PathSamples {
 // of which the profile keeps a share; path: tip and tool axis per record (for s) and the
 // programmed feeds. Errors also when the poses or feeds lent in `path` are not one per record.
 // Errors: InvalidArgument (sizes differ, empty input, more records than a RecordIndex counts,
-// no usable feed, bad options), Geometry
-// (a non-finite coordinate, axis value or feed, named with its record index and source line).
+// no usable feed, bad options), Geometry (a non-finite coordinate, axis value or feed, named
+// with its record index and source line).
 // A single sample (one record, or all records merged) gives zero derivatives.
 Result<AxisProfile> analyseAxisMotion(SharedMachineAxes axes, const PathSamples& path,
                                       const AxisProfileOptions& options);

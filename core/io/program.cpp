@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <type_traits>
 
 namespace bladeaxis::io {
 
@@ -227,10 +228,27 @@ const std::string& LoadedProgram::text() const {
                       document);
 }
 
+void LoadedProgram::releaseRewriteSources() {
+    // Swapped with empty ones: clear() would keep the capacity.
+    std::visit(
+        [](auto& program) {
+            std::string().swap(program.text);
+            if constexpr (std::is_same_v<std::decay_t<decltype(program)>, cl::AptProgram>) {
+                decltype(program.source)().swap(program.source);
+            } else {
+                decltype(program.sources)().swap(program.sources);
+            }
+            if constexpr (std::is_same_v<std::decay_t<decltype(program)>, nc::GcodeProgram>) {
+                std::vector<double>().swap(program.programmedFeeds);
+            }
+        },
+        document);
+}
+
 std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t first,
                                     std::size_t count) {
     const auto* gcode = std::get_if<nc::GcodeProgram>(&program.document);
-    if (gcode == nullptr || count == 0) {
+    if (gcode == nullptr || count == 0 || first + count > gcode->sources.size()) {
         return false;
     }
     const auto tip = [gcode](std::size_t k) {

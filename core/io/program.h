@@ -45,14 +45,23 @@ struct LoadedProgram {
     const toolpath::Toolpath& path() const;
     // For the checks that normalise the input before scheduling (B noise snapped to its median).
     toolpath::Toolpath& mutablePath();
-    const std::string& text() const; // the program as read, byte for byte
+    // The program as read, byte for byte; empty once released (releaseRewriteSources).
+    const std::string& text() const;
     ProgramFormat format() const;
     std::optional<NcDialect> dialect() const; // of a G-code family program
+
+    // Frees what only a rewrite reads: the text and where each record's words stand in it
+    // (for G-code 61 bytes of text and 24 of source per block on a typical program). A job
+    // calls it once the program is rewritten: a million-block job then holds 85 MB less
+    // while it reads the written program back. The records, the warnings, the dialect and the
+    // read options stay; the program can no longer be rewritten, and which records are
+    // programmed as the tool tip is no longer known (programsToolTip answers false).
+    void releaseRewriteSources();
 };
 
 // Whether the records [first, first + count) are programmed as the tool tip in the workpiece
 // frame (Sinumerik TRAORI, Heidenhain M128 / FUNCTION TCPM); empty when some are and some are
-// not. CL data and ISO programs: false.
+// not. CL data and ISO programs: false; so is a program whose rewrite sources were released.
 std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t first,
                                     std::size_t count);
 

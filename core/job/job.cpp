@@ -408,6 +408,11 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     input.analysis.toolRadius = input.toolRadius;
     input.analysis.blockTimes =
         passIsBlockTimed(result.program, result.pass.first, result.pass.count);
+    // Nothing reads the input's text after the rewrite but a demo's outputs, which write the
+    // generated program (demo_blade.nc).
+    if (!spec.demo) {
+        input.rewritten = [&program = result.program] { program.releaseRewriteSources(); };
+    }
     auto outcome = reschedule(input, cancel);
     if (!outcome) {
         return std::unexpected(outcome.error());

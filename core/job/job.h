@@ -75,6 +75,8 @@ struct JobResult {
     double seconds = 0.0; // wall time of runJob
 
     // The input text (the demo program when generated); held once, by the parsed document.
+    // A re-scheduled job has released it (io::LoadedProgram::releaseRewriteSources) once the
+    // program was rewritten; a demo job keeps it for demo_blade.nc.
     const std::string& programText() const { return program.text(); }
 };
 

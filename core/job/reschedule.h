@@ -10,6 +10,7 @@
 #include "core/io/program.h"
 #include "core/scheduling/schedule.h"
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -58,6 +59,10 @@ struct RescheduleInput {
     // Both on in every job; the benchmarks switch them off to time read-schedule-write alone.
     bool verifyByRereading = true;
     bool analyseNewMotion = true;
+    // Called once the program is rewritten, before it is read back: the rewrite was the last
+    // reader of the input's text, and a job frees it here (releaseRewriteSources), where its
+    // memory peaks. Nothing of the re-scheduling reads the program's text after this.
+    std::function<void()> rewritten;
 };
 
 // Largest ball-centre deviation accepted when the written program is read back: the program's

@@ -130,6 +130,7 @@ void BM_FullJobMillionBlocks(benchmark::State& state) {
     state.counters["schedule_s"] = stages.schedule;
     state.counters["rewrite_s"] = stages.rewrite;
     state.counters["verify_s"] = stages.verify;
+    state.counters["analysis_wait_s"] = stages.analysis;
     state.counters["peak_rss_MB"] = peakResidentMegabytes();
 }
 BENCHMARK(BM_FullJobMillionBlocks)->Unit(benchmark::kMillisecond)->Iterations(3);

@@ -99,5 +99,29 @@ TEST(OwnedText, OwnedAndStreamedReadsGiveTheRecordsACopiedTextGives) {
     }
 }
 
+// Every format frees its text and per-record sources; the records (what every reader after a
+// rewrite uses) stay exactly as they were.
+TEST(ReleasedRewriteSources, LeaveTheRecordsAndFreeTheText) {
+    const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    const std::pair<const char*, const char*> programs[] = {
+        {"a.nc", "%\nO1000\nG90 G94 F600\nN10 G1 X1. Y2. Z3. A40. B0.\nN20 X2. A50.\n%\n"},
+        {"a.cl", "$$ cam\nFEDRAT/600\nGOTO/1,2,3,0,0,1\nGOTO/2,2,3,0,0,1\n"},
+        {"a.csv", "x,y,z,i,j,k,f\n1,2,3,0,0,1,10\n2,2,3,0,0,1,10\n"},
+    };
+    for (const auto& [name, text] : programs) {
+        auto program = readProgramText(text, name, machine);
+        ASSERT_TRUE(program.has_value()) << name << ": " << program.error().toString();
+        const std::size_t records = program->path().records.size();
+        ASSERT_GT(records, 0u) << name;
+        const toolpath::ClRecord last = program->path().records.back();
+        program->releaseRewriteSources();
+        EXPECT_TRUE(program->text().empty()) << name;
+        ASSERT_EQ(program->path().records.size(), records) << name;
+        EXPECT_EQ(program->path().records.back().tip, last.tip) << name;
+        EXPECT_EQ(program->path().records.back().line, last.line) << name;
+        EXPECT_EQ(programsToolTip(*program, 0, records), false) << name;
+    }
+}
+
 } // namespace
 } // namespace bladeaxis::io

@@ -38,6 +38,15 @@ TEST(DemoJob, ATurnsAboutOnceAroundPerRevolution) {
     EXPECT_GT(turns, 3.0);
 }
 
+// The demo's outputs include the generated program (demo_blade.nc), so a demo job keeps the
+// input text that other jobs release once the program is rewritten.
+TEST(DemoJob, KeepsTheGeneratedProgramText) {
+    auto result = runDemo();
+    ASSERT_TRUE(result.has_value());
+    ASSERT_TRUE(result->rescheduled);
+    EXPECT_NE(result->programText().find("G1"), std::string::npos);
+}
+
 TEST(DemoJob, IsDeterministic) {
     auto first = runDemo();
     auto second = runDemo();

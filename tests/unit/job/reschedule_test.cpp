@@ -3,6 +3,7 @@
 // stays in the raw channel, A turns one way, and the input is never touched.
 
 #include "core/base/file_io.h"
+#include "core/io/nc/gcode_writer.h"
 #include "core/job/job.h"
 #include "core/job/parameter_schema.h"
 #include "core/kinematics/kinematics.h"
@@ -66,7 +67,8 @@ TEST(Reschedule, GcodeOutputChangesOnlyTipCoordinatesAndA) {
     auto result = run(gcodeSpec());
     ASSERT_TRUE(result.has_value()) << result.error().toString();
     ASSERT_TRUE(result->rescheduled);
-    const auto before = linesOf(result->programText());
+    // The job has released the input's text after the rewrite: compare with the file.
+    const auto before = linesOf(readTextFile(gcodeSpec().program).value_or(""));
     const auto after = linesOf(result->rescheduled->programText);
     ASSERT_EQ(before.size(), after.size());
     std::size_t changed = 0;
@@ -80,6 +82,33 @@ TEST(Reschedule, GcodeOutputChangesOnlyTipCoordinatesAndA) {
         }
     }
     EXPECT_GT(changed, before.size() / 2); // the cutting pass was re-oriented
+}
+
+// The rewrite is the last reader of the input's text: the job frees it (and where each block's
+// words stand) before it reads the written program back, where its memory peaks. The records
+// stay for the report, the plots and the comparison; the program can no longer be rewritten.
+TEST(Reschedule, AJobReleasesTheInputTextOnceTheProgramIsRewritten) {
+    auto result = run(gcodeSpec());
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    ASSERT_TRUE(result->rescheduled);
+    EXPECT_TRUE(result->programText().empty());
+    EXPECT_FALSE(result->rescheduled->programText.empty());
+    const auto& gcode = std::get<io::nc::GcodeProgram>(result->program.document);
+    EXPECT_TRUE(gcode.sources.empty());
+    EXPECT_GE(gcode.path.records.size(), result->pass.first + result->pass.count);
+    EXPECT_EQ(io::programsToolTip(result->program, result->pass.first, result->pass.count), false);
+    const auto again =
+        io::nc::rewriteGcodePass(gcode, result->pass.first, *result->axes, result->machine);
+    ASSERT_FALSE(again.has_value());
+    EXPECT_EQ(again.error().code, ErrorCode::InvalidArgument);
+}
+
+TEST(Reschedule, AnAnalyseOnlyJobKeepsTheInputText) {
+    JobSpec spec = gcodeSpec();
+    spec.reschedule = false;
+    auto result = run(spec);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    EXPECT_EQ(result->programText(), readTextFile(spec.program).value_or(""));
 }
 
 TEST(Reschedule, WrittenProgramReproducesEveryBallCentre) {

@@ -1,6 +1,6 @@
 #include "core/optimal/interior_point.h"
 
-#include <Eigen/SparseLU>
+#include "core/optimal/reduced_kkt.h"
 
 #include <algorithm>
 #include <cmath>
@@ -76,12 +76,13 @@ struct Direction {
 class InteriorPoint {
   public:
     explicit InteriorPoint(const ConvexProgram& problem)
-        : m_p(problem), m_quadratic(largestMagnitude(problem.P) > 0.0) {
+        : m_p(problem), m_quadratic(largestMagnitude(problem.P) > 0.0), m_kkt(problem) {
         const auto n = problem.c.size(), m = problem.A.rows(), p = problem.E.rows();
         m_x = VectorXd::Zero(n);
         m_y = VectorXd::Zero(p);
         m_s = (problem.b - problem.A * m_x).cwiseMax(1.0);
         m_z = VectorXd::Ones(m);
+        m_rhs.resize(n + p);
     }
 
     Result<InteriorPointSolution> run(double tolerance, double acceptable, int maxIterations) {
@@ -151,16 +152,17 @@ class InteriorPoint {
     // takes one step length for primal and dual (its dual residual depends on x).
     void step(const VectorXd& rDual, const VectorXd& rPrimal, const VectorXd& rEquality,
               double mu) {
-        const VectorXd complement = -m_s.cwiseProduct(m_z);
-        const Direction affine = solve(rDual, rPrimal, rEquality, complement);
-        const double primalStep = stepToBoundary(m_s, affine.ds);
-        const double dualStep = stepToBoundary(m_z, affine.dz);
-        const double muAffine = (m_s + primalStep * affine.ds).dot(m_z + dualStep * affine.dz) /
+        m_complement = -m_s.cwiseProduct(m_z);
+        solve(rDual, rPrimal, rEquality, m_complement, m_affine);
+        const double primalStep = stepToBoundary(m_s, m_affine.ds);
+        const double dualStep = stepToBoundary(m_z, m_affine.dz);
+        const double muAffine = (m_s + primalStep * m_affine.ds).dot(m_z + dualStep * m_affine.dz) /
                                 static_cast<double>(m_s.size());
         const double sigma = std::pow(muAffine / mu, 3);
-        const VectorXd corrected = complement - affine.ds.cwiseProduct(affine.dz) +
-                                   VectorXd::Constant(m_s.size(), sigma * mu);
-        const Direction d = solve(rDual, rPrimal, rEquality, corrected);
+        m_complement -= m_affine.ds.cwiseProduct(m_affine.dz);
+        m_complement.array() += sigma * mu;
+        solve(rDual, rPrimal, rEquality, m_complement, m_corrected);
+        const Direction& d = m_corrected;
         double alphaPrimal = stepToBoundary(m_s, d.ds);
         double alphaDual = stepToBoundary(m_z, d.dz);
         if (m_quadratic) {
@@ -172,57 +174,37 @@ class InteriorPoint {
         m_z += alphaDual * d.dz;
     }
 
-    // KKT of the reduced system: [P + A' W A, E'; E, 0] with W = Z S^-1, a tiny regularisation
-    // for free variables that no inequality touches.
+    // The reduced KKT matrix at W = Z S^-1 (see reduced_kkt.h).
     bool factorise() {
-        const auto n = m_x.size(), p = m_y.size();
-        const VectorXd weights = m_z.cwiseQuotient(m_s);
-        const Sparse normal = Sparse(m_p.A.transpose() * weights.asDiagonal() * m_p.A) + m_p.P;
-        std::vector<Eigen::Triplet<double>> triplets;
-        for (Eigen::Index col = 0; col < normal.outerSize(); ++col) {
-            for (Sparse::InnerIterator it(normal, col); it; ++it) {
-                triplets.emplace_back(it.row(), it.col(), it.value());
-            }
-        }
-        for (Eigen::Index col = 0; col < m_p.E.outerSize(); ++col) {
-            for (Sparse::InnerIterator it(m_p.E, col); it; ++it) {
-                triplets.emplace_back(n + it.row(), it.col(), it.value());
-                triplets.emplace_back(it.col(), n + it.row(), it.value());
-            }
-        }
-        for (Eigen::Index i = 0; i < n; ++i) {
-            triplets.emplace_back(i, i, 1e-12);
-        }
-        for (Eigen::Index i = 0; i < p; ++i) {
-            triplets.emplace_back(n + i, n + i, -1e-14);
-        }
-        Sparse kkt(n + p, n + p);
-        kkt.setFromTriplets(triplets.begin(), triplets.end());
-        m_lu.compute(kkt);
-        return m_lu.info() == Eigen::Success;
+        m_weights = m_z.cwiseQuotient(m_s);
+        return m_kkt.factorise(m_weights);
     }
 
-    Direction solve(const VectorXd& rDual, const VectorXd& rPrimal, const VectorXd& rEquality,
-                    const VectorXd& complement) const {
+    // Into `d`, with no allocation once the vectors have their sizes.
+    void solve(const VectorXd& rDual, const VectorXd& rPrimal, const VectorXd& rEquality,
+               const VectorXd& complement, Direction& d) {
         const auto n = m_x.size(), p = m_y.size();
         // dz = S^-1 (complement + Z rPrimal + Z A dx), ds = -rPrimal - A dx.
-        const VectorXd base = (complement + m_z.cwiseProduct(rPrimal)).cwiseQuotient(m_s);
-        VectorXd rhs(n + p);
-        rhs.head(n) = -rDual - m_p.A.transpose() * base;
-        rhs.tail(p) = -rEquality;
-        const VectorXd solution = m_lu.solve(rhs);
-        Direction d;
-        d.dx = solution.head(n);
-        d.dy = solution.tail(p);
+        m_base = (complement + m_z.cwiseProduct(rPrimal)).cwiseQuotient(m_s);
+        // Products inside a sum are accumulated into the sum term by term by Eigen; the
+        // iterates' last bits depend on that order, so these stay single expressions.
+        m_rhs.head(n) = -rDual - m_p.A.transpose() * m_base;
+        m_rhs.tail(p) = -rEquality;
+        m_kkt.solve(m_rhs, m_solution);
+        d.dx = m_solution.head(n);
+        d.dy = m_solution.tail(p);
         d.ds = -rPrimal - m_p.A * d.dx;
-        d.dz = base + m_z.cwiseProduct(m_p.A * d.dx).cwiseQuotient(m_s);
-        return d;
+        m_rowsTimesDx.noalias() = m_p.A * d.dx;
+        d.dz = m_base + m_z.cwiseProduct(m_rowsTimesDx).cwiseQuotient(m_s);
     }
 
     const ConvexProgram& m_p;
     bool m_quadratic;
+    ReducedKkt m_kkt;
     VectorXd m_x, m_y, m_s, m_z;
-    Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> m_lu;
+    // Work vectors of the Newton steps, kept across iterations.
+    VectorXd m_weights, m_complement, m_base, m_rhs, m_solution, m_rowsTimesDx;
+    Direction m_affine, m_corrected;
 };
 
 bool sizesMatch(const ConvexProgram& problem) {

@@ -371,19 +371,6 @@ const job::DisplayScene& ToolpathView::scene() const {
     return m_vtk->scene;
 }
 
-void ToolpathView::setSchedule(const scheduling::ScheduleResult& schedule) {
-    std::vector<toolpath::ClRecord> records(schedule.newTips.size());
-    for (std::size_t i = 0; i < records.size() && i < schedule.newAxes.size(); ++i) {
-        records[i].tip = schedule.newTips[i];
-        records[i].axis = schedule.newAxes[i];
-    }
-    job::DisplaySceneInput input;
-    input.pass = records;
-    input.toolRadius = m_vtk->toolRadius;
-    input.schedule = &schedule;
-    showScene(job::buildDisplayScene(input));
-}
-
 void ToolpathView::setTimeline(const job::JobResult& result) {
     m_timeline = {};
     m_tableLetter = QLatin1Char(result.machine.letter(kinematics::AxisId::A));

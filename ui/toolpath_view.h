@@ -9,7 +9,6 @@
 // ("Axes shown").
 
 #include "core/job/display_scene.h"
-#include "core/scheduling/schedule.h"
 
 #include <QColor>
 #include <QImage>
@@ -64,10 +63,6 @@ class ToolpathView final : public QWidget {
     // isometric view when the scene has no predecessor.
     void showScene(const job::DisplayScene& scene);
     const job::DisplayScene& scene() const;
-
-    // Compatibility with the view before showScene: the re-scheduled tips and axes alone (no
-    // blade, no original axes). Prefer showScene(job::buildDisplayScene(result)).
-    void setSchedule(const scheduling::ScheduleResult& schedule);
 
     // Program line, time and A of every record of the cutting pass, for positionReadout();
     // from the re-scheduled program when the job has one.

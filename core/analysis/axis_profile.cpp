@@ -23,7 +23,7 @@ std::string recordName(std::size_t index, int line) {
 
 bool lentSeriesFit(const PathSamples& path) {
     const auto fits = [&](std::size_t lent) { return lent == 0 || lent == path.size(); };
-    return fits(path.tips.size()) && fits(path.toolAxes.size()) && fits(path.feeds.size());
+    return fits(path.toolAxes.size()) && fits(path.feeds.size());
 }
 
 bool axesFinite(const kinematics::MachineAxes& m) {

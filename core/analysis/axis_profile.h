@@ -133,17 +133,26 @@ struct AxisProfile {
 };
 
 // The tool path an analysis reads: a program's records, or new tool poses over them. A
-// re-scheduled pass keeps each record's feed and source line and has new tips and tool axes;
-// when the written program times its blocks anew, its feeds too. Lending the new poses this way
-// spares a copy of every record (112 bytes each) for the analysis of the new motion.
+// re-scheduled pass keeps each record's ball centre, feed and source line and has new tool
+// axes (and so new tips); when the written program times its blocks anew, its feeds too.
+// Lending the new poses this way spares a copy of every record (112 bytes each) for the
+// analysis of the new motion.
 struct PathSamples {
     std::span<const toolpath::ClRecord> records;
-    std::span<const Vec3> tips = {};     // empty: the records' tips
     std::span<const Vec3> toolAxes = {}; // empty: the records' tool axes
-    std::span<const double> feeds = {};  // empty: the records' feeds (mm/s)
+    // With toolAxes: > 0 when the poses keep the records' ball centres of this radius (mm), the
+    // tips then being tipOfBall(centre, toolAxes[i], R); 0: the records' tips.
+    double keptCentreRadius = 0.0;
+    std::span<const double> feeds = {}; // empty: the records' feeds (mm/s)
 
     std::size_t size() const { return records.size(); }
-    const Vec3& tip(std::size_t i) const { return tips.empty() ? records[i].tip : tips[i]; }
+    Vec3 tip(std::size_t i) const {
+        if (keptCentreRadius > 0.0 && !toolAxes.empty()) {
+            return tipOfBall(toolpath::ballCentre(records[i], keptCentreRadius), toolAxes[i],
+                             keptCentreRadius);
+        }
+        return records[i].tip;
+    }
     const Vec3& toolAxis(std::size_t i) const {
         return toolAxes.empty() ? records[i].axis : toolAxes[i];
     }

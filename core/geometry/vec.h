@@ -25,4 +25,11 @@ inline bool isFinite(const Vec3& v) {
     return v.allFinite();
 }
 
+// O = Q - R V: the tip of a ball-end tool of radius R whose ball centre is Q, for the tool axis
+// V. A re-scheduled pose keeps its ball centre, so its tip is made from the centre whenever it
+// is read (nothing keeps the tips of a schedule), always with this arithmetic: the same bits.
+inline Vec3 tipOfBall(const Vec3& centre, const Vec3& axis, double radius) {
+    return centre - radius * axis;
+}
+
 } // namespace bladeaxis

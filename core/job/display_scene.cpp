@@ -336,8 +336,7 @@ bool cadSurface(DisplayScene& scene, const DisplaySceneInput& input) {
 }
 
 bool scheduleMatches(const DisplaySceneInput& input) {
-    return input.schedule != nullptr && input.schedule->newTips.size() == input.pass.size() &&
-           input.schedule->newAxes.size() == input.pass.size();
+    return input.schedule != nullptr && input.schedule->newAxes.size() == input.pass.size();
 }
 
 void fillPoints(DisplayScene& scene, const DisplaySceneInput& input,
@@ -353,7 +352,10 @@ void fillPoints(DisplayScene& scene, const DisplaySceneInput& input,
         const Vec3 axis = record.axis.normalized();
         scene.originalAxes.push_back(axis);
         scene.centres.push_back(record.tip + scene.toolRadius * axis);
-        scene.tips.push_back(rescheduled ? input.schedule->newTips[r] : record.tip);
+        // The schedule keeps the ball centres and no tips.
+        scene.tips.push_back(rescheduled ? tipOfBall(scene.centres.back(),
+                                                     input.schedule->newAxes[r], scene.toolRadius)
+                                         : record.tip);
         scene.layer.push_back(layerOfRecord[r]);
         if (rescheduled) {
             scene.rescheduledAxes.push_back(input.schedule->newAxes[r].normalized());

@@ -37,12 +37,13 @@ scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
 
 // IK of the new poses with A unwrapped from the original A of the first record, so the new
 // program starts where the old one did and A stays continuous.
-Result<std::vector<kinematics::MachineAxes>>
-newMachineAxes(const RescheduleInput& input, const scheduling::ScheduleResult& schedule) {
+Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInput& input,
+                                                            const RescheduleOutcome& outcome) {
+    const analysis::PathSamples samples = rescheduledSamples(passOf(input), outcome);
     std::vector<kinematics::ToolPose> poses;
-    poses.reserve(schedule.newTips.size());
-    for (std::size_t i = 0; i < schedule.newTips.size(); ++i) {
-        poses.push_back({schedule.newTips[i], schedule.newAxes[i]});
+    poses.reserve(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        poses.push_back({samples.tip(i), samples.toolAxis(i)});
     }
     auto solved = kinematics::inverseKinematicsAlong(
         input.machine->chain, poses, input.originalAxes.front().a, input.parameters.threads);
@@ -297,8 +298,8 @@ std::vector<toolpath::ClRecord> rescheduledRecords(std::span<const ClRecord> pas
 analysis::PathSamples rescheduledSamples(std::span<const ClRecord> pass,
                                          const RescheduleOutcome& outcome) {
     return {.records = pass,
-            .tips = outcome.schedule.newTips,
             .toolAxes = outcome.schedule.newAxes,
+            .keptCentreRadius = outcome.toolRadius,
             .feeds = outcome.passFeeds};
 }
 
@@ -318,11 +319,12 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(error);
     }
     RescheduleOutcome outcome = outcomeFrom(std::move(*schedule));
+    outcome.toolRadius = input.toolRadius;
     outcome.stageSeconds.schedule = clock.lap();
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
-    auto axes = newMachineAxes(input, outcome.schedule);
+    auto axes = newMachineAxes(input, outcome);
     if (!axes) {
         return std::unexpected(axes.error());
     }

@@ -20,10 +20,13 @@ namespace bladeaxis::job {
 
 struct CuttingPass;
 
-// The new tips and tool axes are the schedule's (schedule.newTips, schedule.newAxes, one per
-// pass record); rescheduledRecords() gives them as records where a writer wants records.
+// The new tool axes are the schedule's (schedule.newAxes, one per pass record), and each new
+// tip keeps its record's ball centre of radius toolRadius (tipOfBall); rescheduledSamples()
+// gives the new poses as the analysis reads them, rescheduledRecords() as records where a
+// writer wants records.
 struct RescheduleOutcome {
     scheduling::ScheduleResult schedule;
+    double toolRadius = 0.0; // mm, the ball whose centres the schedule keeps
     // Per pass record, A continuous; shared with the new motion's profile, which reads its
     // positions from them.
     analysis::SharedMachineAxes axes;

@@ -11,13 +11,11 @@
 
 namespace bladeaxis::scheduling {
 
-ReconstructedPath reconstructAxes(std::span<const Vec3> centres, std::span<const double> thetaAbs,
-                                  double tiltB0, int traversalSign, double toolRadius,
-                                  unsigned threads) {
+ReconstructedPath reconstructAxes(std::span<const double> thetaAbs, double tiltB0,
+                                  int traversalSign, unsigned threads) {
     ReconstructedPath path;
-    const std::size_t n = std::min(centres.size(), thetaAbs.size());
+    const std::size_t n = thetaAbs.size();
     path.axes.resize(n);
-    path.tips.resize(n);
     // axisFromPlaneAngle with the tilt's sine and cosine taken once (the same arithmetic).
     const double axial = std::sin(tiltB0);
     const double inPlane = std::cos(tiltB0);
@@ -27,7 +25,6 @@ ReconstructedPath reconstructAxes(std::span<const Vec3> centres, std::span<const
             const Vec3 axis(axial, -traversalSign * std::sin(angle) * inPlane,
                             std::cos(angle) * inPlane);
             path.axes[i] = axis;
-            path.tips[i] = centres[i] - toolRadius * axis;
         }
     });
     return path;
@@ -74,8 +71,9 @@ ReconstructionCheck checkRange(std::span<const Vec3> centres, const Reconstructe
     double maxLengthSquared = -kInfinity;
     for (std::size_t i = begin; i < end; ++i) {
         const Vec3& v = path.axes[i];
-        maxCentreSquared =
-            std::max(maxCentreSquared, (path.tips[i] + toolRadius * v - centres[i]).squaredNorm());
+        maxCentreSquared = std::max(
+            maxCentreSquared,
+            (tipOfBall(centres[i], v, toolRadius) + toolRadius * v - centres[i]).squaredNorm());
         const double lengthSquared = v.squaredNorm();
         minLengthSquared = std::min(minLengthSquared, lengthSquared);
         maxLengthSquared = std::max(maxLengthSquared, lengthSquared);

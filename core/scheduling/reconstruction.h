@@ -1,6 +1,6 @@
 #pragma once
-// Spec §6.1, §6.2, §6.5: new tool axes from the absolute in-plane angle and B0, new tips
-// O = Q - R V, and the cheap reconstruction checks.
+// Spec §6.1, §6.2, §6.5: new tool axes from the absolute in-plane angle and B0, and the cheap
+// reconstruction checks. The new tips O = Q - R V are not kept (tipOfBall makes them).
 
 #include "core/geometry/vec.h"
 
@@ -12,15 +12,14 @@ namespace bladeaxis::scheduling {
 
 struct ReconstructedPath {
     std::vector<Vec3> axes; // unit V_i with V . a = sin B0
-    std::vector<Vec3> tips; // O_i = Q_i - R V_i, mm
 };
 
-ReconstructedPath reconstructAxes(std::span<const Vec3> centres, std::span<const double> thetaAbs,
-                                  double tiltB0, int traversalSign, double toolRadius,
-                                  unsigned threads = 1);
+// One unit axis per absolute in-plane angle.
+ReconstructedPath reconstructAxes(std::span<const double> thetaAbs, double tiltB0,
+                                  int traversalSign, unsigned threads = 1);
 
 struct ReconstructionCheck {
-    double maxCentreErrorMm = 0.0; // max |O + R V - Q|
+    double maxCentreErrorMm = 0.0; // max |O + R V - Q|, O = tipOfBall(Q, V, R)
     double maxUnitError = 0.0;     // max ||V| - 1|
     double maxTiltError = 0.0;     // max |V . a - sin B0|
     std::size_t reversals = 0;     // sign changes of dtheta beyond tol::kReversalStepRad (§6.4)

@@ -190,7 +190,6 @@ void keepOriginalAxes(ReconstructedPath& rebuilt, std::span<const LayerResult> l
         const InputRange inputs = inputsOfLayer(layers, k, input.centres.size());
         for (std::size_t i = inputs.begin; i < inputs.end; ++i) {
             rebuilt.axes[i] = input.axes[i].normalized();
-            rebuilt.tips[i] = input.centres[i] - input.toolRadius * rebuilt.axes[i];
         }
     }
 }
@@ -206,8 +205,8 @@ void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput
     }
     const std::vector<double> thetaAbsolute =
         absoluteAngles(result.layers, n, Orientation::Rescheduled, threads);
-    ReconstructedPath rebuilt = reconstructAxes(input.centres, thetaAbsolute, path.tiltB0,
-                                                path.traversalSign, input.toolRadius, threads);
+    ReconstructedPath rebuilt =
+        reconstructAxes(thetaAbsolute, path.tiltB0, path.traversalSign, threads);
     keepOriginalAxes(rebuilt, result.layers, input);
     result.check = checkReconstruction(input.centres, rebuilt, thetaAbsolute, path.tiltB0,
                                        input.toolRadius, threads);
@@ -215,7 +214,6 @@ void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput
         countReversals(absoluteAngles(result.layers, n, Orientation::Original, threads),
                        tol::kReversalStepRad, threads);
     result.newAxes = std::move(rebuilt.axes);
-    result.newTips = std::move(rebuilt.tips);
 }
 
 // §6.5 junction gap: where layer k ends and layer k+1 starts, in absolute angle. The shared

@@ -64,7 +64,9 @@ bool isFlagged(const LayerResult& layer);
 
 struct ScheduleResult {
     std::vector<LayerResult> layers;
-    std::vector<Vec3> newAxes, newTips;  // per input sample
+    // Per input sample. The new tips are not kept (24 bytes per sample): each keeps its input's
+    // ball centre, so it is tipOfBall(centres[i], newAxes[i], R).
+    std::vector<Vec3> newAxes;
     double tiltB0 = 0.0;                 // rad
     int traversalSign = 1;               // w . a of §1.3; the machine sigma = -traversalSign
     std::vector<std::size_t> basePoints; // input indices of the base points

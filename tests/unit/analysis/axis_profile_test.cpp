@@ -193,38 +193,40 @@ TEST(AnalyseAxisMotion, RejectsEmptyMismatchedAndFeedlessInput) {
     EXPECT_FALSE(analyseAxisMotion(line.axes, line.records, override).has_value());
 }
 
-// A re-scheduled pass lends its new tips, tool axes and feeds instead of copying every record:
-// the analysis must be the one of records that carry them.
+// A re-scheduled pass lends its new tool axes and feeds instead of copying every record, and its
+// poses keep the records' ball centres: the analysis must be the one of records that carry them.
 TEST(AnalyseAxisMotion, LentPosesAndFeedsGiveWhatRecordsCarryingThemGive) {
     const Program line = straightLine(Vec3(1.0, 2.0, -2.0) / 3.0, 40, 30.0, 0.01, 0.002);
+    constexpr double kRadius = 4.0;
     Program moved = line;
-    std::vector<Vec3> tips, toolAxes;
+    std::vector<Vec3> toolAxes;
     std::vector<double> feeds;
     for (std::size_t i = 0; i < moved.records.size(); ++i) {
         toolpath::ClRecord& record = moved.records[i];
-        record.tip += Vec3(0.0, 0.1 * std::sin(0.3 * static_cast<double>(i)), 0.0);
-        record.axis = Vec3(0.0, 0.2, 1.0).normalized();
+        const Vec3 centre = toolpath::ballCentre(line.records[i], kRadius);
+        record.axis =
+            Vec3(0.0, 0.2 + 0.05 * std::sin(0.3 * static_cast<double>(i)), 1.0).normalized();
+        record.tip = tipOfBall(centre, record.axis, kRadius);
         record.feed = 20.0 + static_cast<double>(i % 3);
-        tips.push_back(record.tip);
         toolAxes.push_back(record.axis);
         feeds.push_back(record.feed);
     }
-    AxisProfileOptions centre;
-    centre.feedReference = FeedReference::Centre;
-    centre.toolRadius = 4.0;
-    const Result<AxisProfile> carried = analyseAxisMotion(moved.axes, moved.records, centre);
+    const AxisProfileOptions tip; // the tip's path: the lent axes move it
+    const Result<AxisProfile> carried = analyseAxisMotion(moved.axes, moved.records, tip);
     const PathSamples lent{
-        .records = line.records, .tips = tips, .toolAxes = toolAxes, .feeds = feeds};
-    const Result<AxisProfile> borrowed = analyseAxisMotion(line.axes, lent, centre);
+        .records = line.records, .toolAxes = toolAxes, .keptCentreRadius = kRadius, .feeds = feeds};
+    const Result<AxisProfile> borrowed = analyseAxisMotion(line.axes, lent, tip);
     ASSERT_TRUE(carried.has_value() && borrowed.has_value());
     EXPECT_EQ(borrowed->feed, carried->feed);
     EXPECT_EQ(borrowed->pathParameter, carried->pathParameter);
     EXPECT_EQ(borrowed->axis(AxisId::A).acceleration, carried->axis(AxisId::A).acceleration);
     EXPECT_NE(borrowed->pathParameter,
-              analyseAxisMotion(line.axes, line.records, centre)->pathParameter);
+              analyseAxisMotion(line.axes, line.records, tip)->pathParameter);
 
-    const PathSamples fewTips{.records = line.records, .tips = std::span(tips).first(5)};
-    const Result<AxisProfile> mismatched = analyseAxisMotion(line.axes, fewTips, centre);
+    const PathSamples fewAxes{.records = line.records,
+                              .toolAxes = std::span(toolAxes).first(5),
+                              .keptCentreRadius = kRadius};
+    const Result<AxisProfile> mismatched = analyseAxisMotion(line.axes, fewAxes, tip);
     ASSERT_FALSE(mismatched.has_value());
     EXPECT_EQ(mismatched.error().code, ErrorCode::InvalidArgument);
 }

@@ -249,7 +249,7 @@ toolpath::Toolpath rescheduledPath(const toolpath::Toolpath& original, double ra
     EXPECT_TRUE(scheduled.has_value()) << scheduled.error().toString();
     toolpath::Toolpath rescheduled = original;
     for (std::size_t i = 0; scheduled && i < rescheduled.records.size(); ++i) {
-        rescheduled.records[i].tip = scheduled->newTips[i];
+        rescheduled.records[i].tip = tipOfBall(input.centres[i], scheduled->newAxes[i], radius);
         rescheduled.records[i].axis = scheduled->newAxes[i];
     }
     return rescheduled;

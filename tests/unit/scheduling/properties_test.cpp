@@ -207,7 +207,8 @@ TEST(SchedulingProperties, TipReconstructionKeepsEveryBallCentre) {
         ASSERT_EQ(m.result.newAxes.size(), in.centres.size());
         double worst = 0.0;
         for (std::size_t i = 0; i < in.centres.size(); ++i) {
-            const Vec3 q = m.result.newTips[i] + in.toolRadius * m.result.newAxes[i];
+            const Vec3 q = tipOfBall(in.centres[i], m.result.newAxes[i], in.toolRadius) +
+                           in.toolRadius * m.result.newAxes[i];
             worst = std::max(worst, (q - in.centres[i]).norm());
             ASSERT_NEAR(m.result.newAxes[i].norm(), 1.0, 1e-12);
         }
@@ -313,7 +314,9 @@ TEST(SchedulingProperties, TranslationAlongTheRotaryAxisMovesOnlyX) {
         ASSERT_EQ(second->newAxes.size(), m.result.newAxes.size());
         for (std::size_t i = 0; i < moved.centres.size(); ++i) {
             ASSERT_LT((second->newAxes[i] - m.result.newAxes[i]).norm(), 1e-9) << i;
-            const Vec3 tipChange = second->newTips[i] - m.result.newTips[i];
+            const Vec3 tipChange =
+                tipOfBall(moved.centres[i], second->newAxes[i], moved.toolRadius) -
+                tipOfBall(m.input.centres[i], m.result.newAxes[i], m.input.toolRadius);
             ASSERT_NEAR(tipChange.x(), shift.x(), 1e-8) << i;
             ASSERT_NEAR(tipChange.y(), 0.0, 1e-8) << i;
             ASSERT_NEAR(tipChange.z(), 0.0, 1e-8) << i;

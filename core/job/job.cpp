@@ -406,6 +406,9 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     input.layerEdits = spec.layerEdits;
     input.analysis = spec.analysis;
     input.analysis.toolRadius = input.toolRadius;
+    // The new motion's axes are differentiated beside the one-threaded re-read check and then
+    // alone: on every core, as the input's are (the figures do not depend on the threads).
+    input.analysis.threads = spec.parameters.threads;
     input.analysis.blockTimes =
         passIsBlockTimed(result.program, result.pass.first, result.pass.count);
     // Nothing reads the input's text after the rewrite but a demo's outputs, which write the

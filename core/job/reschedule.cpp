@@ -341,7 +341,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     // With the release it starts after the rewrite: the profile it makes (about 110 bytes per
     // record while it runs) would otherwise stand beside the input's text and the written one
     // at the rewrite's end, where a job's memory peaks (a million-block job: 670-690 MB
-    // beside the rewrite, 593-614 MB after it).
+    // beside the rewrite, 593-614 MB after it, with the schedule's tips still kept).
     const bool feedsFromWritten = input.analysis.blockTimes;
     const bool analyseAtOnce = input.analyseNewMotion && !feedsFromWritten;
     const auto startAnalysis = [&] {

@@ -234,9 +234,9 @@ std::vector<double> AxisSeries::accelerations(std::size_t n) const {
 }
 
 std::vector<double> AxisProfile::positions(kinematics::AxisId id) const {
-    std::vector<double> values(sampleRecord.size());
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        values[i] = position(id, i);
+    std::vector<double> values;
+    if (!sampleRecord.empty()) { // a profile without samples may have no machine axes
+        sampledAxis(*recordAxes, sampleRecord, id, values);
     }
     return values;
 }

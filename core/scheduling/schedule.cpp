@@ -194,7 +194,8 @@ void keepOriginalAxes(ReconstructedPath& rebuilt, std::span<const LayerResult> l
     }
 }
 
-void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput& input,
+// result.tiltB0 and result.traversalSign are the plane path's.
+void assemble(ScheduleResult& result, const ScheduleInput& input,
               std::vector<LayerOutcome>& outcomes, unsigned threads) {
     const std::size_t n = input.centres.size();
     result.layers.reserve(outcomes.size());
@@ -206,9 +207,9 @@ void assemble(ScheduleResult& result, const PlanePath& path, const ScheduleInput
     const std::vector<double> thetaAbsolute =
         absoluteAngles(result.layers, n, Orientation::Rescheduled, threads);
     ReconstructedPath rebuilt =
-        reconstructAxes(thetaAbsolute, path.tiltB0, path.traversalSign, threads);
+        reconstructAxes(thetaAbsolute, result.tiltB0, result.traversalSign, threads);
     keepOriginalAxes(rebuilt, result.layers, input);
-    result.check = checkReconstruction(input.centres, rebuilt, thetaAbsolute, path.tiltB0,
+    result.check = checkReconstruction(input.centres, rebuilt, thetaAbsolute, result.tiltB0,
                                        input.toolRadius, threads);
     result.originalReversals =
         countReversals(absoluteAngles(result.layers, n, Orientation::Original, threads),
@@ -333,7 +334,10 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
     if (auto applied = applyKeyPointEdits(outcomes, overrides, perLayer); !applied) {
         return std::unexpected(applied.error());
     }
-    assemble(result, *path, input, outcomes, parameters.threads);
+    // The layers have what they need of the plane path: its per-point arrays (about 50 bytes
+    // per point) are not held beside the new axes.
+    *path = PlanePath{};
+    assemble(result, input, outcomes, parameters.threads);
     checkJunctions(result);
     addCheckWarnings(result);
     return result;

@@ -43,7 +43,13 @@ Status validateInput(std::span<const kinematics::MachineAxes> axes, const PathSa
     }
     if (!lentSeriesFit(path)) {
         return makeError(ErrorCode::InvalidArgument,
-                         "axis motion: the new tips, tool axes or feeds are not one per record");
+                         "axis motion: the new tool axes or feeds are not one per record");
+    }
+    // New axes over the records' own tips would move every ball centre: not a re-scheduled pass.
+    if (!path.toolAxes.empty() && !(path.keptCentreRadius > 0.0)) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "axis motion: new tool axes are lent without the radius of the ball "
+                         "centres they keep");
     }
     if (path.size() == 0) {
         return makeError(ErrorCode::InvalidArgument, "axis motion: no records to analyse");

@@ -140,8 +140,8 @@ struct AxisProfile {
 struct PathSamples {
     std::span<const toolpath::ClRecord> records;
     std::span<const Vec3> toolAxes = {}; // empty: the records' tool axes
-    // With toolAxes: > 0 when the poses keep the records' ball centres of this radius (mm), the
-    // tips then being tipOfBall(centre, toolAxes[i], R); 0: the records' tips.
+    // Required (> 0) with toolAxes: the radius (mm) of the records' ball centres the new poses
+    // keep, whose tips are then tipOfBall(centre, toolAxes[i], R).
     double keptCentreRadius = 0.0;
     std::span<const double> feeds = {}; // empty: the records' feeds (mm/s)
 

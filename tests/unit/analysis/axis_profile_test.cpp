@@ -229,6 +229,10 @@ TEST(AnalyseAxisMotion, LentPosesAndFeedsGiveWhatRecordsCarryingThemGive) {
     const Result<AxisProfile> mismatched = analyseAxisMotion(line.axes, fewAxes, tip);
     ASSERT_FALSE(mismatched.has_value());
     EXPECT_EQ(mismatched.error().code, ErrorCode::InvalidArgument);
+    const PathSamples withoutRadius{.records = line.records, .toolAxes = toolAxes};
+    const Result<AxisProfile> unknownCentres = analyseAxisMotion(line.axes, withoutRadius, tip);
+    ASSERT_FALSE(unknownCentres.has_value());
+    EXPECT_EQ(unknownCentres.error().code, ErrorCode::InvalidArgument);
 }
 
 // A profile keeps no positions of its own: it reads them from the machine axes it was made from,

@@ -147,11 +147,9 @@ struct PathSamples {
 
     std::size_t size() const { return records.size(); }
     Vec3 tip(std::size_t i) const {
-        if (keptCentreRadius > 0.0 && !toolAxes.empty()) {
-            return tipOfBall(toolpath::ballCentre(records[i], keptCentreRadius), toolAxes[i],
-                             keptCentreRadius);
-        }
-        return records[i].tip;
+        return toolAxes.empty() ? records[i].tip
+                                : tipOfBall(toolpath::ballCentre(records[i], keptCentreRadius),
+                                            toolAxes[i], keptCentreRadius);
     }
     const Vec3& toolAxis(std::size_t i) const {
         return toolAxes.empty() ? records[i].axis : toolAxes[i];

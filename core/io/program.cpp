@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <type_traits>
 
 namespace bladeaxis::io {
 
@@ -228,21 +227,33 @@ const std::string& LoadedProgram::text() const {
                       document);
 }
 
+namespace {
+
+// Swapped with an empty one: clear() would keep the capacity.
+template <class Container>
+void freeStorage(Container& container) {
+    Container().swap(container);
+}
+
+// What only each format's rewriter reads.
+void releaseRewriteSourcesOf(nc::GcodeProgram& program) {
+    freeStorage(program.text);
+    freeStorage(program.sources);
+    freeStorage(program.programmedFeeds);
+}
+void releaseRewriteSourcesOf(cl::AptProgram& program) {
+    freeStorage(program.text);
+    freeStorage(program.source);
+}
+void releaseRewriteSourcesOf(table::TableProgram& program) {
+    freeStorage(program.text);
+    freeStorage(program.sources);
+}
+
+} // namespace
+
 void LoadedProgram::releaseRewriteSources() {
-    // Swapped with empty ones: clear() would keep the capacity.
-    std::visit(
-        [](auto& program) {
-            std::string().swap(program.text);
-            if constexpr (std::is_same_v<std::decay_t<decltype(program)>, cl::AptProgram>) {
-                decltype(program.source)().swap(program.source);
-            } else {
-                decltype(program.sources)().swap(program.sources);
-            }
-            if constexpr (std::is_same_v<std::decay_t<decltype(program)>, nc::GcodeProgram>) {
-                std::vector<double>().swap(program.programmedFeeds);
-            }
-        },
-        document);
+    std::visit([](auto& program) { releaseRewriteSourcesOf(program); }, document);
 }
 
 std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t first,

@@ -33,6 +33,7 @@ bool wantsBatch(const std::vector<std::string>& arguments) {
 
 int main(int argc, char** argv) {
     bladeaxis::returnLargeBlocksToTheSystem();
+    bladeaxis::backLargeBlocksWithHugePages();
     const std::vector<std::string> arguments =
         bladeaxis::app::expandSubcommand(std::vector<std::string>(argv, argv + argc));
     if (!wantsBatch(arguments)) {

@@ -1,6 +1,6 @@
 #pragma once
-// How the process hands large freed blocks back to the system. Called once by a program's main
-// (the application, the benchmarks), never by the libraries: it sets a process-wide policy.
+// How the process maps and hands back large blocks. Called once by a program's main (the
+// application, the benchmarks), never by the libraries: each sets a process-wide policy.
 
 namespace bladeaxis {
 
@@ -13,5 +13,18 @@ namespace bladeaxis {
 // time (the first touch of fresh pages is paid either way by arrays of that size).
 // Elsewhere than glibc this does nothing.
 void returnLargeBlocksToTheSystem();
+
+// Asks the kernel to back every block of 4 MB or more allocated with `new` (the per-record
+// arrays and texts of a job) with transparent huge pages. Linux's default THP mode
+// ("madvise") gives them only to memory that asks for them. A large job's time is dominated by
+// the first touch of fresh memory: with 4 KiB pages a five-million-block job takes about
+// 1.5 million page faults and spends more time in the kernel than in its own arithmetic; with
+// 2 MiB pages it takes about 0.1 million. The resident peak grows by at most the unused part
+// of a block's last huge page. Where the kernel has no huge pages, or THP is off, or in an
+// address-sanitizer build (whose allocator serves `new`), this does nothing.
+void backLargeBlocksWithHugePages();
+
+// Whether backLargeBlocksWithHugePages() is in force in this process (for tests).
+bool largeBlocksAreAdvisedHugePages();
 
 } // namespace bladeaxis

@@ -202,9 +202,10 @@ BENCHMARK(BM_FullJobFiveMillionBlocks)
 
 } // namespace
 
-// The memory policy of the application (app/main.cpp), so that the peaks are the ones a user
-// sees.
+// The memory policy of the application (app/main.cpp), so that the peaks and times are the
+// ones a user sees.
 int main(int argc, char** argv) {
     bladeaxis::returnLargeBlocksToTheSystem();
+    bladeaxis::backLargeBlocksWithHugePages();
     return bladeaxis::bench::runBenchmarks(argc, argv);
 }

@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sstream>
+#include <string>
 #include <unistd.h>
 
 namespace bladeaxis {
@@ -47,6 +51,54 @@ TEST(MemoryPolicy, AFreedLargeArrayNoLongerCountsAsResident) {
     touchAndFree(8u << 20);
     const std::size_t after = residentBytes();
     EXPECT_LT(after, before + (2u << 20)) << "resident before " << before << ", after " << after;
+}
+
+// The VmFlags line of the mapping that holds `address` in /proc/self/smaps ("" if none). The
+// kernel marks a range advised MADV_HUGEPAGE with the flag "hg", whether or not huge pages
+// were free to back it, so the advice is seen without depending on the host's memory.
+std::string mappingFlagsOf(const void* address) {
+    const auto where = reinterpret_cast<std::uintptr_t>(address);
+    std::ifstream smaps("/proc/self/smaps");
+    std::string line;
+    bool inside = false;
+    while (std::getline(smaps, line)) {
+        std::uintptr_t begin = 0, end = 0;
+        char dash = 0;
+        std::istringstream range(line);
+        if (range >> std::hex >> begin >> dash >> end && dash == '-') {
+            inside = begin <= where && where < end;
+        } else if (inside && line.rfind("VmFlags:", 0) == 0) {
+            return line;
+        }
+    }
+    return {};
+}
+
+bool hasFlag(const std::string& flags, const std::string& flag) {
+    return (flags + " ").find(" " + flag + " ") != std::string::npos;
+}
+
+bool kernelHasTransparentHugePages() {
+    return std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled");
+}
+
+TEST(MemoryPolicy, ALargeBlockAsksForHugePagesAndASmallerOneDoesNot) {
+    if (kOwnAllocator || !kernelHasTransparentHugePages()) {
+        GTEST_SKIP() << "no transparent huge pages here, or the sanitizer's allocator serves new";
+    }
+    returnLargeBlocksToTheSystem(); // each block of 1 MB or more on a mapping of its own
+    backLargeBlocksWithHugePages();
+    ASSERT_TRUE(largeBlocksAreAdvisedHugePages());
+    const std::size_t large = 16u << 20;
+    const std::size_t small = 2u << 20;
+    const auto largeBlock = std::make_unique<char[]>(large);
+    const auto smallBlock = std::make_unique<char[]>(small);
+    const std::string largeFlags = mappingFlagsOf(largeBlock.get() + large / 2);
+    const std::string smallFlags = mappingFlagsOf(smallBlock.get() + small / 2);
+    ASSERT_FALSE(largeFlags.empty());
+    ASSERT_FALSE(smallFlags.empty());
+    EXPECT_TRUE(hasFlag(largeFlags, "hg")) << largeFlags;
+    EXPECT_FALSE(hasFlag(smallFlags, "hg")) << smallFlags;
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 #endif
 #if defined(__linux__)
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 namespace bladeaxis {
@@ -20,21 +21,36 @@ std::atomic<bool> adviseHugePages{false};
 
 constexpr std::size_t kAdviseFromBytes = std::size_t{4} << 20;
 
+std::uintptr_t pageBytes() {
+#if defined(__linux__)
+    static const auto bytes = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+    return bytes;
+#else
+    return 4096;
+#endif
+}
+
+// The whole pages inside [block, block + bytes): [first, end), empty when first >= end.
+struct PageRange {
+    std::uintptr_t first = 0, end = 0;
+};
+PageRange wholePagesIn(void* block, std::size_t bytes) {
+    const std::uintptr_t page = pageBytes();
+    const auto begin = reinterpret_cast<std::uintptr_t>(block);
+    return {(begin + page - 1) & ~(page - 1), (begin + bytes) & ~(page - 1)};
+}
+
 #if defined(__linux__) && defined(MADV_HUGEPAGE) && !defined(__SANITIZE_ADDRESS__)
 #define BLADEAXIS_REPLACES_NEW 1
-
-constexpr std::uintptr_t kPageBytes = 4096;
 
 // Marks the whole pages inside the block. With blocks of 1 MB or more mapped on their own
 // (returnLargeBlocksToTheSystem), they are still untouched here, so the first touch of each
 // aligned 2 MiB stretch maps one huge page instead of 512 small ones. The advice is a hint:
 // a refusal (EINVAL where THP is compiled out) changes nothing but speed.
 void adviseHugePagesFor(void* block, std::size_t bytes) {
-    const auto begin =
-        (reinterpret_cast<std::uintptr_t>(block) + kPageBytes - 1) & ~(kPageBytes - 1);
-    const auto end = (reinterpret_cast<std::uintptr_t>(block) + bytes) & ~(kPageBytes - 1);
-    if (end > begin) {
-        ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+    const PageRange pages = wholePagesIn(block, bytes);
+    if (pages.end > pages.first) {
+        ::madvise(reinterpret_cast<void*>(pages.first), pages.end - pages.first, MADV_HUGEPAGE);
     }
 }
 #endif
@@ -56,6 +72,20 @@ void backLargeBlocksWithHugePages() {
 
 bool largeBlocksAreAdvisedHugePages() {
     return adviseHugePages.load(std::memory_order_relaxed);
+}
+
+void returnWholePagesToTheSystem(void* begin, std::size_t bytes) {
+#if defined(__linux__)
+    const PageRange pages = wholePagesIn(begin, bytes);
+    if (pages.end > pages.first) {
+        // Advice on memory this process owns cannot fail but for a kernel without it; the
+        // pages then stay resident until the block is freed, as without the call.
+        ::madvise(reinterpret_cast<void*>(pages.first), pages.end - pages.first, MADV_DONTNEED);
+    }
+#else
+    (void)begin;
+    (void)bytes;
+#endif
 }
 
 } // namespace bladeaxis

@@ -2,6 +2,8 @@
 // How the process maps and hands back large blocks. Called once by a program's main (the
 // application, the benchmarks), never by the libraries: each sets a process-wide policy.
 
+#include <cstddef>
+
 namespace bladeaxis {
 
 // The C library (glibc) serves a freed block of up to 32 MB again from its heap the next time,
@@ -26,5 +28,12 @@ void backLargeBlocksWithHugePages();
 
 // Whether backLargeBlocksWithHugePages() is in force in this process (for tests).
 bool largeBlocksAreAdvisedHugePages();
+
+// Gives the whole pages inside [begin, begin + bytes) of a block back to the system now, while
+// the block stays allocated: for the front of a large array its owner has read for the last
+// time but frees only as a whole, later. Those pages read as zeros afterwards (Linux
+// MADV_DONTNEED on private memory); the partial pages at either end keep their bytes.
+// Elsewhere than Linux this does nothing.
+void returnWholePagesToTheSystem(void* begin, std::size_t bytes);
 
 } // namespace bladeaxis

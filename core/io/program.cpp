@@ -1,6 +1,7 @@
 #include "core/io/program.h"
 
 #include "core/base/file_io.h"
+#include "core/base/memory_policy.h"
 #include "core/io/nc/dialect.h"
 
 #include <algorithm>
@@ -254,6 +255,27 @@ void releaseRewriteSourcesOf(table::TableProgram& program) {
 
 void LoadedProgram::releaseRewriteSources() {
     std::visit([](auto& program) { releaseRewriteSourcesOf(program); }, document);
+}
+
+namespace {
+
+// The front of a container, up to `end` elements, back to the system (whole pages only).
+template <class Container>
+void returnFront(Container& container, std::size_t end) {
+    const std::size_t count = std::min(end, container.size());
+    returnWholePagesToTheSystem(container.data(), count * sizeof(*container.data()));
+}
+
+} // namespace
+
+void LoadedProgram::releaseRewriteSourcesBefore(std::size_t textEnd, std::size_t blockEnd) {
+    auto* gcode = std::get_if<nc::GcodeProgram>(&document);
+    if (gcode == nullptr) {
+        return;
+    }
+    returnFront(gcode->text, textEnd);
+    returnFront(gcode->sources, blockEnd);
+    returnFront(gcode->programmedFeeds, blockEnd);
 }
 
 std::optional<bool> programsToolTip(const LoadedProgram& program, std::size_t first,

@@ -415,6 +415,10 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     // generated program (demo_blade.nc).
     if (!spec.demo) {
         input.rewritten = [&program = result.program] { program.releaseRewriteSources(); };
+        input.rewrittenUpTo = [&program = result.program](std::size_t textEnd,
+                                                          std::size_t blockEnd) {
+            program.releaseRewriteSourcesBefore(textEnd, blockEnd);
+        };
     }
     auto outcome = reschedule(input, cancel);
     if (!outcome) {

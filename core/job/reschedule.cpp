@@ -40,13 +40,14 @@ scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
 Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInput& input,
                                                             const RescheduleOutcome& outcome) {
     const analysis::PathSamples samples = rescheduledSamples(passOf(input), outcome);
-    std::vector<kinematics::ToolPose> poses;
-    poses.reserve(samples.size());
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        poses.push_back({samples.tip(i), samples.toolAxis(i)});
-    }
-    auto solved = kinematics::inverseKinematicsAlong(
-        input.machine->chain, poses, input.originalAxes.front().a, input.parameters.threads);
+    // The poses are made as the IK reads them: an array of them (48 bytes per record) would
+    // stand beside the schedule and the new axes, where read-schedule-write's memory peaks.
+    const auto poseAt = [&samples](std::size_t i) {
+        return kinematics::ToolPose{samples.tip(i), samples.toolAxis(i)};
+    };
+    auto solved =
+        kinematics::inverseKinematicsAlong(input.machine->chain, samples.size(), poseAt,
+                                           input.originalAxes.front().a, input.parameters.threads);
     if (solved.failedIndex) {
         Error error = solved.failure;
         error.where = {input.program->path().sourceFile, passOf(input)[*solved.failedIndex].line,
@@ -62,7 +63,8 @@ Result<std::string> rewriteProgram(const RescheduleInput& input, const Reschedul
     if (const auto* gcode = std::get_if<io::nc::GcodeProgram>(&input.program->document)) {
         if (!io::programsToolTip(*input.program, input.passFirst, input.passCount)
                  .value_or(false)) {
-            return io::nc::rewriteGcodePass(*gcode, input.passFirst, passAxes, *input.machine);
+            return io::nc::rewriteGcodePass(*gcode, input.passFirst, passAxes, *input.machine,
+                                            input.rewrittenUpTo);
         }
         // Tool-tip programming writes the tip in the workpiece frame, not the machine's X Y Z.
         std::vector<kinematics::MachineAxes> words(passAxes.begin(), passAxes.end());
@@ -72,7 +74,8 @@ Result<std::string> rewriteProgram(const RescheduleInput& input, const Reschedul
             axes.y = tip.y();
             axes.z = tip.z();
         }
-        return io::nc::rewriteGcodePass(*gcode, input.passFirst, words, *input.machine);
+        return io::nc::rewriteGcodePass(*gcode, input.passFirst, words, *input.machine,
+                                        input.rewrittenUpTo);
     }
     std::vector<ClRecord> records = all;
     std::ranges::copy(rescheduledRecords(passOf(input), outcome),
@@ -353,12 +356,15 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         analysed = startAnalysis();
     }
     auto text = rewriteProgram(input, outcome);
+    if (input.rewritten) {
+        // Also after a failed rewrite, which may have given back part of the text already.
+        input.rewritten();
+    }
     if (!text) {
         return std::unexpected(text.error());
     }
     outcome.programText = std::move(*text);
     if (input.rewritten) {
-        input.rewritten();
         analysed = startAnalysis();
     }
     outcome.stageSeconds.rewrite = clock.lap();

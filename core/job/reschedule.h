@@ -7,6 +7,7 @@
 #include "core/analysis/constant_feed.h"
 #include "core/base/error.h"
 #include "core/base/progress.h"
+#include "core/io/nc/gcode_writer.h"
 #include "core/io/program.h"
 #include "core/scheduling/schedule.h"
 
@@ -62,10 +63,16 @@ struct RescheduleInput {
     // Both on in every job; the benchmarks switch them off to time read-schedule-write alone.
     bool verifyByRereading = true;
     bool analyseNewMotion = true;
-    // Called once the program is rewritten, before it is read back: the rewrite was the last
-    // reader of the input's text, and a job frees it here (releaseRewriteSources), where its
-    // memory peaks. Nothing of the re-scheduling reads the program's text after this.
+    // Called once the program is rewritten (or its rewrite failed), before it is read back: the
+    // rewrite was the last reader of the input's text, and a job frees it here
+    // (releaseRewriteSources). Nothing of the re-scheduling reads the program's text after this.
     std::function<void()> rewritten;
+    // Called as a G-code rewrite goes with how far it has read the input (see
+    // io::nc::RewrittenUpTo): a job that frees the text once rewritten gives those pages back at
+    // once (releaseRewriteSourcesBefore), so that the text read and the text written do not
+    // stand side by side at the rewrite's end, where read-schedule-write's memory peaks. Only
+    // with `rewritten` set.
+    io::nc::RewrittenUpTo rewrittenUpTo;
 };
 
 // Largest ball-centre deviation accepted when the written program is read back: the program's

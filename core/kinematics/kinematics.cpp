@@ -59,32 +59,43 @@ MachineAxes axesAt(const TableAHeadB& chain, const ToolPose& pose, double bMath,
 
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const ToolPose> poses,
                                      double aStart, unsigned threads) {
+    return inverseKinematicsAlong(
+        chain, poses.size(), [poses](std::size_t i) { return poses[i]; }, aStart, threads);
+}
+
+IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count,
+                                     const std::function<ToolPose(std::size_t)>& poseAt,
+                                     double aStart, unsigned threads) {
     IkAlongResult result;
-    const std::size_t n = poses.size();
     // The angles of every pose at once (they need no neighbour), the earliest failure wins.
-    std::vector<AxisAngles> angles(n);
-    const std::size_t failed = forEachUntilFirstFailure(n, threads, [&](std::size_t i) {
-        auto solved = axisAngles(poses[i]);
+    // They wait in the result's own a and b (math convention, A wrapped) until the axes are
+    // made, rather than in an array of their own.
+    result.axes.resize(count);
+    const std::size_t failed = forEachUntilFirstFailure(count, threads, [&](std::size_t i) {
+        auto solved = axisAngles(poseAt(i));
         if (solved) {
-            angles[i] = *solved;
+            result.axes[i].b = solved->bMath;
+            result.axes[i].a = solved->aMathWrapped;
         }
         return solved.has_value();
     });
-    if (failed < n) {
+    if (failed < count) {
+        result.axes.clear();
         result.failedIndex = failed;
-        result.failure = axisAngles(poses[failed]).error();
+        result.failure = axisAngles(poseAt(failed)).error();
         return result;
     }
     // A continuous: each angle on the branch nearest the previous one, in order.
     double reference = chain.aSign * aStart;
-    for (AxisAngles& pose : angles) {
-        pose.aMathWrapped = geometry::unwrapNear(pose.aMathWrapped, reference);
-        reference = pose.aMathWrapped;
+    for (MachineAxes& axes : result.axes) {
+        axes.a = geometry::unwrapNear(axes.a, reference);
+        reference = axes.a;
     }
-    result.axes.resize(n);
-    forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
+    forEachRange(count, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
-            result.axes[i] = axesAt(chain, poses[i], angles[i].bMath, angles[i].aMathWrapped);
+            const double bMath = result.axes[i].b;
+            const double aMath = result.axes[i].a;
+            result.axes[i] = axesAt(chain, poseAt(i), bMath, aMath);
         }
     });
     return result;

@@ -6,6 +6,7 @@
 #include "core/geometry/vec.h"
 #include "core/kinematics/machine_model.h"
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -36,6 +37,11 @@ struct IkAlongResult {
     Error failure; // meaningful when failedIndex is set
 };
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const ToolPose> poses,
+                                     double aStart, unsigned threads = 1);
+// The same for `count` poses made on demand: poseAt(i) is called (from up to `threads`
+// threads, twice per pose) instead of a pose array being kept, 48 bytes per pose.
+IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count,
+                                     const std::function<ToolPose(std::size_t)>& poseAt,
                                      double aStart, unsigned threads = 1);
 
 // Tool axis for a given programmed A and B, in W (spec §6.1 with the sign conventions).

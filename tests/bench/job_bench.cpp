@@ -95,6 +95,11 @@ void BM_ReadScheduleWriteMillionBlocks(benchmark::State& state) {
         input.parameters = scheduling::bestPreset();
         input.verifyByRereading = false;
         input.analyseNewMotion = false;
+        // As a job does: the input's text is given back as the rewrite reads past it.
+        input.rewritten = [&program] { program->releaseRewriteSources(); };
+        input.rewrittenUpTo = [&program](std::size_t textEnd, std::size_t blockEnd) {
+            program->releaseRewriteSourcesBefore(textEnd, blockEnd);
+        };
         auto outcome = job::reschedule(input, CancelToken{});
         if (!outcome) {
             fail("reschedule", outcome.error());

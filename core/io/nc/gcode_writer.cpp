@@ -157,11 +157,12 @@ class Rewriter {
         m_combinedFeed = program.programmedFeeds.size() == program.path.records.size();
     }
 
-    Result<std::string> run(const NewAxes& newAxes) {
+    Result<std::string> run(const NewAxes& newAxes, const RewrittenUpTo& rewrittenUpTo) {
         const std::string& text = m_program.text;
         std::string out;
         out.reserve(text.size() + text.size() / 16);
         std::size_t cursor = 0;
+        std::size_t reported = 0;
         for (std::size_t k = 0; k < newAxes.size(); ++k) {
             const RecordSource& source = m_program.sources[k];
             const std::string_view line = lineAt(source.lineBegin);
@@ -181,12 +182,20 @@ class Rewriter {
             out.append(text, cursor, source.lineBegin - cursor);
             appendEdited(out, line, edits);
             cursor = source.lineBegin + line.size();
+            // The blocks of a flat program stand in file order: nothing before the cursor,
+            // nor any source up to this block's, is read again.
+            if (rewrittenUpTo && cursor - reported >= kReportEveryBytes) {
+                rewrittenUpTo(cursor, k + 1);
+                reported = cursor;
+            }
         }
         out.append(text, cursor, std::string::npos);
         return out;
     }
 
   private:
+    static constexpr std::size_t kReportEveryBytes = std::size_t{4} << 20;
+
     struct AxisContext {
         std::size_t axis = 0;
         bool incremental = false;
@@ -544,7 +553,8 @@ void Rewriter::appendEdited(std::string& out, std::string_view line, std::vector
 
 Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t passFirst,
                                      std::span<const MachineAxes> passAxes,
-                                     const MachineModel& machine) {
+                                     const MachineModel& machine,
+                                     const RewrittenUpTo& rewrittenUpTo) {
     const std::size_t records = program.path.records.size();
     if (program.sources.size() != records) {
         return makeError(ErrorCode::InvalidArgument,
@@ -561,7 +571,7 @@ Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t pa
     if (Status valid = validateAxes(program, newAxes, machine); !valid) {
         return std::unexpected(std::move(valid.error()));
     }
-    return Rewriter(program, machine).run(newAxes);
+    return Rewriter(program, machine).run(newAxes, rewrittenUpTo);
 }
 
 Result<std::string> rewriteGcode(const GcodeProgram& program, std::span<const MachineAxes> newAxes,

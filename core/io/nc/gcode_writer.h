@@ -18,6 +18,7 @@
 #include "core/kinematics/machine_model.h"
 
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 
@@ -29,11 +30,17 @@ Result<std::string> rewriteGcode(const GcodeProgram& program,
                                  std::span<const kinematics::MachineAxes> newAxes,
                                  const kinematics::MachineModel& machine);
 
+// Told, every few megabytes of a rewrite, how far it has read the program: it reads the text
+// before `textEnd` and the block sources (and programmed feeds) before `blockEnd` no more. A
+// job gives those pages back as it goes (io::LoadedProgram::releaseRewriteSourcesBefore).
+using RewrittenUpTo = std::function<void(std::size_t textEnd, std::size_t blockEnd)>;
+
 // rewriteGcode of one pass: records [passFirst, passFirst + passAxes.size()) get passAxes, every
 // other record is written with the axes it was read with (its text is unchanged).
 Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t passFirst,
                                      std::span<const kinematics::MachineAxes> passAxes,
-                                     const kinematics::MachineModel& machine);
+                                     const kinematics::MachineModel& machine,
+                                     const RewrittenUpTo& rewrittenUpTo = {});
 
 // rewriteGcode, then an atomic write that refuses to overwrite the program's source file.
 Status writeGcodeFile(const std::filesystem::path& out, const GcodeProgram& program,

@@ -1,13 +1,18 @@
 // Programs are recognised by content; the extension only breaks ties and a contradicting one is
 // reported. Text in no known format and binary files get one error naming what was expected.
 
+#include "core/base/number_io.h"
+#include "core/base/units.h"
+#include "core/io/nc/gcode_writer.h"
 #include "core/io/program.h"
 #include "core/kinematics/machine_model.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace bladeaxis::io {
 namespace {
@@ -121,6 +126,69 @@ TEST(ReleasedRewriteSources, LeaveTheRecordsAndFreeTheText) {
         EXPECT_EQ(program->path().records.back().line, last.line) << name;
         EXPECT_EQ(programsToolTip(*program, 0, records), false) << name;
     }
+}
+
+ReadOptions inDegrees() {
+    ReadOptions options;
+    options.angleUnit = AngleUnit::Degrees;
+    return options;
+}
+
+// A program of `lines` feed blocks, about 45 bytes each, turning A by 0.01 deg per block.
+std::string longProgram(std::size_t lines) {
+    std::string text = "%\nO1000\nG21 G90 G94 F600\n";
+    for (std::size_t i = 0; i < lines; ++i) {
+        const double t = static_cast<double>(i);
+        text += "N" + std::to_string(10 * (i + 1)) + " G1 X" + formatFixed(1e-3 * t, 3) + " Y" +
+                formatFixed(20.0 * std::cos(1e-3 * t), 3) + " Z" +
+                formatFixed(30.0 + 2.0 * std::sin(1e-3 * t), 3) + " A" + formatFixed(1e-2 * t, 3) +
+                " B0.\n";
+    }
+    return text + "M30\n%\n";
+}
+
+// A job gives back the input's text and block sources as the rewrite reads past them: the
+// rewrite must never read them again, so the written text is the one a rewrite that is told
+// nothing gives, and what it reports only grows and stays inside the program.
+TEST(ReleasedRewriteSources, AGcodeRewriteThatGivesBackWhatItReadWritesTheSameText) {
+    const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    const std::string text = longProgram(200'000); // about 9 MB: reported twice at least
+    const auto reference =
+        io::parseProgram(text, "long.nc", ProgramFormat::Gcode, machine, inDegrees());
+    ASSERT_TRUE(reference.has_value()) << reference.error().toString();
+    const auto& referenceGcode = std::get<nc::GcodeProgram>(reference->document);
+    std::vector<kinematics::MachineAxes> pass;
+    for (const toolpath::ClRecord& record : reference->path().records) {
+        pass.push_back(*record.axes);
+        pass.back().a += units::degToRad(0.5); // every block's A word changes
+    }
+    const auto told = nc::rewriteGcodePass(referenceGcode, 0, pass, machine);
+    ASSERT_TRUE(told.has_value()) << told.error().toString();
+
+    auto consumed = io::parseProgram(text, "long.nc", ProgramFormat::Gcode, machine, inDegrees());
+    ASSERT_TRUE(consumed.has_value());
+    std::vector<std::pair<std::size_t, std::size_t>> reports;
+    const auto givenBack =
+        nc::rewriteGcodePass(std::get<nc::GcodeProgram>(consumed->document), 0, pass, machine,
+                             [&](std::size_t textEnd, std::size_t blockEnd) {
+                                 reports.emplace_back(textEnd, blockEnd);
+                                 consumed->releaseRewriteSourcesBefore(textEnd, blockEnd);
+                             });
+    ASSERT_TRUE(givenBack.has_value()) << givenBack.error().toString();
+    EXPECT_EQ(*givenBack, *told);
+    ASSERT_GE(reports.size(), 2u);
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+        EXPECT_LE(reports[i].first, text.size());
+        EXPECT_LE(reports[i].second, pass.size());
+        if (i > 0) {
+            EXPECT_GT(reports[i].first, reports[i - 1].first);
+            EXPECT_GT(reports[i].second, reports[i - 1].second);
+        }
+    }
+    // The text after the last report is still the input's, byte for byte.
+    const std::string& kept = consumed->text();
+    ASSERT_EQ(kept.size(), text.size());
+    EXPECT_EQ(kept.substr(reports.back().first), text.substr(reports.back().first));
 }
 
 } // namespace

@@ -181,5 +181,33 @@ TEST(InverseKinematicsAlong, ReportsTheFirstFailingPoseWhateverTheThreads) {
     EXPECT_TRUE(result.axes.empty());
 }
 
+// The job makes each new pose when the IK reads it instead of keeping an array of them.
+TEST(InverseKinematicsAlong, PosesMadeOnDemandGiveThePoseArraysResultBitForBit) {
+    TableAHeadB chain;
+    chain.pivotLength = 250.0;
+    chain.tableOffset = Vec3(0.0, 10.0, -5.0);
+    const std::vector<ToolPose> poses = spiralPoses(50'000);
+    const IkAlongResult fromArray = inverseKinematicsAlong(chain, poses, 0.3, 1);
+    const IkAlongResult onDemand = inverseKinematicsAlong(
+        chain, poses.size(), [&poses](std::size_t i) { return poses[i]; }, 0.3, 2);
+    ASSERT_FALSE(fromArray.failedIndex || onDemand.failedIndex);
+    ASSERT_EQ(onDemand.axes.size(), poses.size());
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        ASSERT_TRUE(fromArray.axes[i].a == onDemand.axes[i].a &&
+                    fromArray.axes[i].b == onDemand.axes[i].b &&
+                    fromArray.axes[i].x == onDemand.axes[i].x &&
+                    fromArray.axes[i].y == onDemand.axes[i].y &&
+                    fromArray.axes[i].z == onDemand.axes[i].z)
+            << i;
+    }
+    std::vector<ToolPose> failing = poses;
+    failing[20'000].axis = Vec3::UnitX();
+    const IkAlongResult failed = inverseKinematicsAlong(
+        chain, failing.size(), [&failing](std::size_t i) { return failing[i]; }, 0.0, 2);
+    ASSERT_TRUE(failed.failedIndex.has_value());
+    EXPECT_EQ(*failed.failedIndex, 20'000u);
+    EXPECT_TRUE(failed.axes.empty());
+}
+
 } // namespace
 } // namespace bladeaxis::kinematics

@@ -131,11 +131,17 @@ TEST(InverseKinematics, RejectsNanZeroAndAxisParallelToA) {
     EXPECT_NE(parallel.error().message.find("parallel to the A axis"), std::string::npos);
 }
 
-// A spiral of poses turning several times, long enough to be split over threads.
-std::vector<ToolPose> spiralPoses(std::size_t count) {
+// The chain the spiral poses are made with.
+TableAHeadB spiralChain() {
     TableAHeadB chain;
     chain.pivotLength = 250.0;
     chain.tableOffset = Vec3(0.0, 10.0, -5.0);
+    return chain;
+}
+
+// A spiral of poses turning several times, long enough to be split over threads.
+std::vector<ToolPose> spiralPoses(std::size_t count) {
+    const TableAHeadB chain = spiralChain();
     std::vector<ToolPose> poses;
     for (std::size_t i = 0; i < count; ++i) {
         const double a = 1e-3 * static_cast<double>(i);
@@ -147,9 +153,7 @@ std::vector<ToolPose> spiralPoses(std::size_t count) {
 }
 
 TEST(InverseKinematicsAlong, SeveralThreadsGiveTheOneThreadResultBitForBit) {
-    TableAHeadB chain;
-    chain.pivotLength = 250.0;
-    chain.tableOffset = Vec3(0.0, 10.0, -5.0);
+    const TableAHeadB chain = spiralChain();
     const std::vector<ToolPose> poses = spiralPoses(100'000);
     const IkAlongResult serial = inverseKinematicsAlong(chain, poses, 0.0, 1);
     const IkAlongResult parallel = inverseKinematicsAlong(chain, poses, 0.0, 3);
@@ -183,9 +187,7 @@ TEST(InverseKinematicsAlong, ReportsTheFirstFailingPoseWhateverTheThreads) {
 
 // The job makes each new pose when the IK reads it instead of keeping an array of them.
 TEST(InverseKinematicsAlong, PosesMadeOnDemandGiveThePoseArraysResultBitForBit) {
-    TableAHeadB chain;
-    chain.pivotLength = 250.0;
-    chain.tableOffset = Vec3(0.0, 10.0, -5.0);
+    const TableAHeadB chain = spiralChain();
     const std::vector<ToolPose> poses = spiralPoses(50'000);
     const IkAlongResult fromArray = inverseKinematicsAlong(chain, poses, 0.3, 1);
     const IkAlongResult onDemand = inverseKinematicsAlong(

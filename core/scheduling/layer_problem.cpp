@@ -198,7 +198,7 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
                                              std::span<const double> margins, double shortLengthMm,
                                              unsigned threads) {
     const std::size_t count = split.layers.size();
-    const std::size_t points = path.points.size();
+    const std::size_t points = path.arcLength.size();
     std::vector<AbsoluteLayer> absolute(count);
     forEachItem(count, points, threads, [&](std::size_t k) {
         absolute[k] = absoluteLayer(path, channel, split.layers[k], margins[k]);

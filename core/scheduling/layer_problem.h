@@ -27,7 +27,8 @@ struct LayerProblem {
 
 // Hulls per layer (margins: one per layer of the split), junctions J_k = min(HI_k(0),
 // HI_{k-1}(end)), free end values clamped into the hull (and monotone), and the feasibility checks
-// of §2.5 and §4.6.
+// of §2.5 and §4.6. Of the plane path it reads the arc length and the original angle only (the
+// scheduling frees the rest before).
 std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawChannel& channel,
                                              const LayerSplit& split,
                                              std::span<const double> margins, double shortLengthMm,

@@ -48,6 +48,13 @@ namespace {
 constexpr double kJunctionGapRad = 1e-9;
 
 // Channel stage (§1.5-§2): everything before the layers become independent.
+// Frees what `value` holds now: a moved-in empty value releases the storage, where a vector's
+// clear() would keep it.
+template <class T>
+void freeStorage(T& value) {
+    value = T{};
+}
+
 struct ChannelStage {
     TangentField tangents;
     CurvatureAnalysis curvature;
@@ -114,7 +121,7 @@ std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems, const P
                                     std::span<const ScheduleParameters> layerParameters,
                                     const ScheduleParameters& p, const CancelToken* cancel) {
     std::vector<LayerOutcome> outcomes(problems.size());
-    forEachItem(problems.size(), path.points.size(), p.threads, [&](std::size_t k) {
+    forEachItem(problems.size(), path.firstInput.size(), p.threads, [&](std::size_t k) {
         if (cancel != nullptr && cancel->isCancelled()) {
             return;
         }
@@ -204,6 +211,11 @@ void assemble(ScheduleResult& result, const ScheduleInput& input,
                                outcome.warnings.end());
         result.layers.push_back(std::move(outcome.result));
     }
+    // The original angles are counted and dropped first: beside the new angles and axes they
+    // would add 8 bytes per sample where read-schedule-write's memory peaks.
+    result.originalReversals =
+        countReversals(absoluteAngles(result.layers, n, Orientation::Original, threads),
+                       tol::kReversalStepRad, threads);
     const std::vector<double> thetaAbsolute =
         absoluteAngles(result.layers, n, Orientation::Rescheduled, threads);
     ReconstructedPath rebuilt =
@@ -211,9 +223,6 @@ void assemble(ScheduleResult& result, const ScheduleInput& input,
     keepOriginalAxes(rebuilt, result.layers, input);
     result.check = checkReconstruction(input.centres, rebuilt, thetaAbsolute, result.tiltB0,
                                        input.toolRadius, threads);
-    result.originalReversals =
-        countReversals(absoluteAngles(result.layers, n, Orientation::Original, threads),
-                       tol::kReversalStepRad, threads);
     result.newAxes = std::move(rebuilt.axes);
 }
 
@@ -316,13 +325,20 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
     for (const ScheduleParameters& layer : perLayer) {
         margins.push_back(layer.marginRad);
     }
-    std::vector<LayerProblem> problems =
-        buildLayerProblems(*path, stage->channel, stage->split, margins,
-                           4.0 * stage->tangents.chordLengthMm, parameters.threads);
-    // The layer problems carry what the layers need of the tangents, the curvature and the raw
-    // channel: freed here, their per-point arrays (about 60 bytes per point) are not held beside
-    // the layers' results.
+    // The layer problems read the raw channel, the split and the plane path's arc length and
+    // original angle. What else the stages made is freed before the problems are built, and
+    // those after: read-schedule-write's memory peaks here, and each per-point array freed is
+    // 8-24 bytes per point less beside the problems and then the layers' results.
+    const double shortLengthMm = 4.0 * stage->tangents.chordLengthMm;
+    freeStorage(stage->tangents);
+    freeStorage(stage->curvature);
+    freeStorage(path->points);
+    freeStorage(path->sampleOfInput);
+    std::vector<LayerProblem> problems = buildLayerProblems(
+        *path, stage->channel, stage->split, margins, shortLengthMm, parameters.threads);
     *stage = ChannelStage{};
+    freeStorage(path->arcLength);     // the layers read only firstInput of the plane path
+    freeStorage(path->originalAngle); // from here on
     for (const LayerProblem& problem : problems) {
         result.warnings.insert(result.warnings.end(), problem.warnings.begin(),
                                problem.warnings.end());
@@ -334,8 +350,8 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
     if (auto applied = applyKeyPointEdits(outcomes, overrides, perLayer); !applied) {
         return std::unexpected(applied.error());
     }
-    // The layers have what they need of the plane path: its per-point arrays (about 50 bytes
-    // per point) are not held beside the new axes.
+    // The layers have what they need of the plane path: its input index per point (8 bytes) is
+    // not held beside the new axes.
     *path = PlanePath{};
     assemble(result, input, outcomes, parameters.threads);
     checkJunctions(result);

@@ -1,5 +1,7 @@
 #include "ui/job_thread.h"
 
+#include "core/base/memory_policy.h"
+
 #include <string>
 #include <utility>
 
@@ -29,6 +31,9 @@ JobThread::JobThread(job::JobSpec spec, QObject* parent)
     : QThread(parent), m_spec(std::move(spec)) {}
 
 void JobThread::run() {
+    // The jobs before this one freed their small blocks into the C library's arenas; they go
+    // back to the system, so that this job's memory starts where a fresh process's would.
+    returnFreedHeapToTheSystem();
     SignalProgressSink sink(*this);
     auto showOriginal = [this](const job::JobResult& partial) {
         job::DisplayScene scene = job::buildDisplayScene(partial);

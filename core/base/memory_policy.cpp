@@ -74,6 +74,12 @@ bool largeBlocksAreAdvisedHugePages() {
     return adviseHugePages.load(std::memory_order_relaxed);
 }
 
+void returnFreedHeapToTheSystem() {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+}
+
 void returnWholePagesToTheSystem(void* begin, std::size_t bytes) {
 #if defined(__linux__)
     const PageRange pages = wholePagesIn(begin, bytes);

@@ -60,6 +60,7 @@ void BM_ParseAndAnalyseMillionBlocks(benchmark::State& state) {
     spec.reschedule = false;
     std::size_t records = 0;
     for (auto _ : state) {
+        returnFreedHeapToTheSystem(); // as the GUI does before each job
         auto result = runJob(spec);
         if (!result) {
             fail("job", result.error());
@@ -77,6 +78,7 @@ void BM_ReadScheduleWriteMillionBlocks(benchmark::State& state) {
     const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
     const fs::path output = fs::temp_directory_path() / "bladeaxis_bench_million_new.nc";
     for (auto _ : state) {
+        returnFreedHeapToTheSystem(); // as the GUI does before each job
         auto program = io::loadProgram(millionProgram(), machine);
         if (!program) {
             fail("read", program.error());
@@ -122,6 +124,7 @@ void BM_FullJobMillionBlocks(benchmark::State& state) {
     spec.outputProgram = fs::temp_directory_path() / "bladeaxis_bench_million_job.nc";
     job::RescheduleOutcome::StageSeconds stages;
     for (auto _ : state) {
+        returnFreedHeapToTheSystem(); // as the GUI does before each job
         auto result = runJob(spec);
         if (!result) {
             fail("job", result.error());

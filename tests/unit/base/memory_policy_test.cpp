@@ -55,6 +55,31 @@ TEST(MemoryPolicy, AFreedLargeArrayNoLongerCountsAsResident) {
     EXPECT_LT(after, before + (2u << 20)) << "resident before " << before << ", after " << after;
 }
 
+// 64 MB of small blocks (below the mapping threshold: from the heap) are written and freed
+// but for the last, which keeps the heap's top from shrinking by itself: glibc keeps the rest,
+// resident, for later allocations until it is asked to give it back.
+TEST(MemoryPolicy, FreedSmallBlocksLeaveTheResidentSetWhenTheHeapIsGivenBack) {
+    if (kOwnAllocator) {
+        GTEST_SKIP() << "an address-sanitizer build has its own allocator";
+    }
+    constexpr std::size_t kBlock = 4096;
+    constexpr std::size_t kBlocks = (64u << 20) / kBlock;
+    std::vector<std::unique_ptr<char[]>> blocks(kBlocks);
+    for (auto& block : blocks) {
+        block = std::make_unique<char[]>(kBlock);
+        block[kBlock / 2] = 1;
+    }
+    const auto top = std::make_unique<char[]>(kBlock);
+    for (auto& block : blocks) {
+        block.reset();
+    }
+    const std::size_t freed = residentBytes();
+    returnFreedHeapToTheSystem();
+    const std::size_t givenBack = residentBytes();
+    EXPECT_LT(givenBack + (48u << 20), freed)
+        << "resident after the frees " << freed << ", after giving the heap back " << givenBack;
+}
+
 // The VmFlags line of the mapping that holds `address` in /proc/self/smaps ("" if none). The
 // kernel marks a range advised MADV_HUGEPAGE with the flag "hg", whether or not huge pages
 // were free to back it, so the advice is seen without depending on the host's memory.

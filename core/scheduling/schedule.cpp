@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace bladeaxis::scheduling {
 
@@ -91,8 +92,14 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
     const CurvatureSettings settings = curvatureSettings(p, path, stage.tangents, radius);
     stage.curvature = analyseCurvature(path.arcLength, stage.tangents.curvature,
                                        stage.tangents.turning, settings, p.threads);
+    // Each per-point array goes once read for the last time: the channel is built where the
+    // scheduling's memory peaks (beside the plane path and the input).
+    freeStorage(stage.tangents.curvature);
     stage.split = splitLayers(stage.tangents.forwardAngle, stage.curvature.smoothedCurvature,
                               stage.curvature.runs, p.basePoint);
+    freeStorage(stage.curvature.smoothedCurvature); // the runs stay: the channel reads them
+    freeStorage(stage.curvature.hysteresis);
+    freeStorage(stage.curvature.state);
     stage.channel = buildRawChannel(stage.tangents, stage.curvature.runs,
                                     p.taperHalfAngleRad + p.safetyAngleRad, p.threads);
     if (p.visibility == Visibility::Global) {
@@ -187,29 +194,42 @@ InputRange inputsOfLayer(std::span<const LayerResult> layers, std::size_t k, std
             k + 1 < layers.size() ? layers[k + 1].inputIndex.front() : n};
 }
 
-// MONOTONE_INFEASIBLE layers keep the input orientation.
-void keepOriginalAxes(ReconstructedPath& rebuilt, std::span<const LayerResult> layers,
-                      const ScheduleInput& input) {
+// An input of a MONOTONE_INFEASIBLE layer, which keeps its input orientation.
+struct KeptAxis {
+    std::size_t input = 0;
+    Vec3 axis;
+};
+
+std::vector<KeptAxis> axesOfKeptLayers(std::span<const LayerResult> layers,
+                                       const ScheduleInput& input) {
+    std::vector<KeptAxis> kept;
     for (std::size_t k = 0; k < layers.size(); ++k) {
         if (!keepsOriginal(layers[k])) {
             continue;
         }
         const InputRange inputs = inputsOfLayer(layers, k, input.centres.size());
         for (std::size_t i = inputs.begin; i < inputs.end; ++i) {
-            rebuilt.axes[i] = input.axes[i].normalized();
+            kept.push_back({i, input.axes[i].normalized()});
         }
     }
+    return kept;
 }
 
 // result.tiltB0 and result.traversalSign are the plane path's.
+// `axesRead` is called once the input's tool axes are read for the last time.
 void assemble(ScheduleResult& result, const ScheduleInput& input,
-              std::vector<LayerOutcome>& outcomes, unsigned threads) {
+              std::vector<LayerOutcome>& outcomes, const std::function<void()>& axesRead,
+              unsigned threads) {
     const std::size_t n = input.centres.size();
     result.layers.reserve(outcomes.size());
     for (LayerOutcome& outcome : outcomes) {
         result.warnings.insert(result.warnings.end(), outcome.warnings.begin(),
                                outcome.warnings.end());
         result.layers.push_back(std::move(outcome.result));
+    }
+    const std::vector<KeptAxis> kept = axesOfKeptLayers(result.layers, input);
+    if (axesRead) {
+        axesRead();
     }
     // The original angles are counted and dropped first: beside the new angles and axes they
     // would add 8 bytes per sample where read-schedule-write's memory peaks.
@@ -220,7 +240,9 @@ void assemble(ScheduleResult& result, const ScheduleInput& input,
         absoluteAngles(result.layers, n, Orientation::Rescheduled, threads);
     ReconstructedPath rebuilt =
         reconstructAxes(thetaAbsolute, result.tiltB0, result.traversalSign, threads);
-    keepOriginalAxes(rebuilt, result.layers, input);
+    for (const KeptAxis& original : kept) {
+        rebuilt.axes[original.input] = original.axis;
+    }
     result.check = checkReconstruction(input.centres, rebuilt, thetaAbsolute, result.tiltB0,
                                        input.toolRadius, threads);
     result.newAxes = std::move(rebuilt.axes);
@@ -289,9 +311,14 @@ std::vector<double> absoluteAngles(std::span<const LayerResult> layers, std::siz
     return angles;
 }
 
-Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
-                                const CancelToken* cancel,
-                                std::span<const LayerOverride> overrides) {
+namespace {
+
+// schedule(), told when the input's tool axes are read for the last time (`axesRead`).
+Result<ScheduleResult> scheduleInput(const ScheduleInput& input,
+                                     const ScheduleParameters& parameters,
+                                     const CancelToken* cancel,
+                                     std::span<const LayerOverride> overrides,
+                                     const std::function<void()>& axesRead) {
     if (auto status = validateParameters(parameters); !status) {
         return std::unexpected(status.error());
     }
@@ -353,10 +380,25 @@ Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParame
     // The layers have what they need of the plane path: its input index per point (8 bytes) is
     // not held beside the new axes.
     *path = PlanePath{};
-    assemble(result, input, outcomes, parameters.threads);
+    assemble(result, input, outcomes, axesRead, parameters.threads);
     checkJunctions(result);
     addCheckWarnings(result);
     return result;
+}
+
+} // namespace
+
+Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
+                                const CancelToken* cancel,
+                                std::span<const LayerOverride> overrides) {
+    return scheduleInput(input, parameters, cancel, overrides, {});
+}
+
+Result<ScheduleResult> schedule(ScheduleInput&& input, const ScheduleParameters& parameters,
+                                const CancelToken* cancel,
+                                std::span<const LayerOverride> overrides) {
+    return scheduleInput(input, parameters, cancel, overrides,
+                         [&axes = input.axes] { freeStorage(axes); });
 }
 
 } // namespace bladeaxis::scheduling

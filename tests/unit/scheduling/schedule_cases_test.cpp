@@ -207,6 +207,31 @@ TEST(ScheduleCases, TaperNearNinetyDegreesIsMonotoneInfeasibleAndKeepsTheOrigina
     EXPECT_EQ(stepReported, largest > 1e-9);
 }
 
+// A job gives its input up (the tool axes are freed before the new axes are made): the layers
+// that keep the original orientation still get the input's axes, and every figure is the same.
+TEST(ScheduleCases, AnInputGivenUpGivesTheResultOfAKeptOne) {
+    ScheduleParameters parameters = bestPreset();
+    parameters.taperHalfAngleRad = units::degToRad(85.0); // some layers keep the original
+    const ScheduleInput input = helix(2.0);
+    const auto kept = schedule(input, parameters);
+    ScheduleInput copy = input;
+    const auto givenUp = schedule(std::move(copy), parameters);
+    ASSERT_TRUE(kept.has_value() && givenUp.has_value());
+    EXPECT_GT(kept->layers.size(), 1u);
+    ASSERT_EQ(givenUp->newAxes.size(), kept->newAxes.size());
+    for (std::size_t i = 0; i < kept->newAxes.size(); ++i) {
+        ASSERT_EQ(givenUp->newAxes[i], kept->newAxes[i]) << i;
+    }
+    ASSERT_EQ(givenUp->layers.size(), kept->layers.size());
+    for (std::size_t k = 0; k < kept->layers.size(); ++k) {
+        EXPECT_EQ(givenUp->layers[k].theta, kept->layers[k].theta) << k;
+        EXPECT_EQ(givenUp->layers[k].flags, kept->layers[k].flags) << k;
+    }
+    EXPECT_EQ(givenUp->originalReversals, kept->originalReversals);
+    EXPECT_EQ(givenUp->check.maxCentreErrorMm, kept->check.maxCentreErrorMm);
+    EXPECT_TRUE(copy.axes.empty()); // freed once read
+}
+
 TEST(ScheduleCases, NoisyCoordinatesStillGiveAMonotoneSchedule) {
     ScheduleInput input = helix(3.0);
     for (Vec3& q : input.centres) { // rounding to 1e-3 mm imitates G-code

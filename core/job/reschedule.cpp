@@ -60,11 +60,15 @@ Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInpu
 Result<std::string> rewriteProgram(const RescheduleInput& input, const RescheduleOutcome& outcome) {
     const std::span<const kinematics::MachineAxes> passAxes = *outcome.axes;
     const auto& all = input.program->path().records;
+    // Pages given back read as zeros: only a program released after the rewrite may lose them.
+    const io::nc::RewrittenUpTo keepEverything;
+    const io::nc::RewrittenUpTo& rewrittenUpTo =
+        input.rewritten ? input.rewrittenUpTo : keepEverything;
     if (const auto* gcode = std::get_if<io::nc::GcodeProgram>(&input.program->document)) {
         if (!io::programsToolTip(*input.program, input.passFirst, input.passCount)
                  .value_or(false)) {
             return io::nc::rewriteGcodePass(*gcode, input.passFirst, passAxes, *input.machine,
-                                            input.rewrittenUpTo);
+                                            rewrittenUpTo);
         }
         // Tool-tip programming writes the tip in the workpiece frame, not the machine's X Y Z.
         std::vector<kinematics::MachineAxes> words(passAxes.begin(), passAxes.end());
@@ -75,7 +79,7 @@ Result<std::string> rewriteProgram(const RescheduleInput& input, const Reschedul
             axes.z = tip.z();
         }
         return io::nc::rewriteGcodePass(*gcode, input.passFirst, words, *input.machine,
-                                        input.rewrittenUpTo);
+                                        rewrittenUpTo);
     }
     std::vector<ClRecord> records = all;
     std::ranges::copy(rescheduledRecords(passOf(input), outcome),

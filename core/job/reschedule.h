@@ -70,8 +70,8 @@ struct RescheduleInput {
     // Called as a G-code rewrite goes with how far it has read the input (see
     // io::nc::RewrittenUpTo): a job that frees the text once rewritten gives those pages back at
     // once (releaseRewriteSourcesBefore), so that the text read and the text written do not
-    // stand side by side at the rewrite's end, where read-schedule-write's memory peaks. Only
-    // with `rewritten` set.
+    // stand side by side at the rewrite's end, where read-schedule-write's memory peaks.
+    // Ignored without `rewritten`: the pages given back read as zeros.
     io::nc::RewrittenUpTo rewrittenUpTo;
 };
 

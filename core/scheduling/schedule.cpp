@@ -48,7 +48,6 @@ namespace {
 // computed from the same junction value, so anything above round-off is a real step.
 constexpr double kJunctionGapRad = 1e-9;
 
-// Channel stage (§1.5-§2): everything before the layers become independent.
 // Frees what `value` holds now: a moved-in empty value releases the storage, where a vector's
 // clear() would keep it.
 template <class T>
@@ -56,6 +55,7 @@ void freeStorage(T& value) {
     value = T{};
 }
 
+// Channel stage (§1.5-§2): everything before the layers become independent.
 struct ChannelStage {
     TangentField tangents;
     CurvatureAnalysis curvature;
@@ -313,12 +313,11 @@ std::vector<double> absoluteAngles(std::span<const LayerResult> layers, std::siz
 
 namespace {
 
-// schedule(), told when the input's tool axes are read for the last time (`axesRead`).
-Result<ScheduleResult> scheduleInput(const ScheduleInput& input,
-                                     const ScheduleParameters& parameters,
-                                     const CancelToken* cancel,
-                                     std::span<const LayerOverride> overrides,
-                                     const std::function<void()>& axesRead) {
+// schedule(), telling `axesRead` when the input's tool axes are read for the last time.
+Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
+                                    const ScheduleParameters& parameters, const CancelToken* cancel,
+                                    std::span<const LayerOverride> overrides,
+                                    const std::function<void()>& axesRead) {
     if (auto status = validateParameters(parameters); !status) {
         return std::unexpected(status.error());
     }
@@ -363,9 +362,10 @@ Result<ScheduleResult> scheduleInput(const ScheduleInput& input,
     freeStorage(path->sampleOfInput);
     std::vector<LayerProblem> problems = buildLayerProblems(
         *path, stage->channel, stage->split, margins, shortLengthMm, parameters.threads);
+    // From here on the layers read only the plane path's input index.
     *stage = ChannelStage{};
-    freeStorage(path->arcLength);     // the layers read only firstInput of the plane path
-    freeStorage(path->originalAngle); // from here on
+    freeStorage(path->arcLength);
+    freeStorage(path->originalAngle);
     for (const LayerProblem& problem : problems) {
         result.warnings.insert(result.warnings.end(), problem.warnings.begin(),
                                problem.warnings.end());
@@ -391,14 +391,14 @@ Result<ScheduleResult> scheduleInput(const ScheduleInput& input,
 Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
                                 const CancelToken* cancel,
                                 std::span<const LayerOverride> overrides) {
-    return scheduleInput(input, parameters, cancel, overrides, {});
+    return scheduleFrom(input, parameters, cancel, overrides, {});
 }
 
 Result<ScheduleResult> schedule(ScheduleInput&& input, const ScheduleParameters& parameters,
                                 const CancelToken* cancel,
                                 std::span<const LayerOverride> overrides) {
-    return scheduleInput(input, parameters, cancel, overrides,
-                         [&axes = input.axes] { freeStorage(axes); });
+    return scheduleFrom(input, parameters, cancel, overrides,
+                        [&axes = input.axes] { freeStorage(axes); });
 }
 
 } // namespace bladeaxis::scheduling

@@ -1,6 +1,7 @@
 #include "core/io/program.h"
 
 #include "core/base/file_io.h"
+#include "core/base/free_storage.h"
 #include "core/base/memory_policy.h"
 #include "core/io/nc/dialect.h"
 
@@ -229,12 +230,6 @@ const std::string& LoadedProgram::text() const {
 }
 
 namespace {
-
-// Swapped with an empty one: clear() would keep the capacity.
-template <class Container>
-void freeStorage(Container& container) {
-    Container().swap(container);
-}
 
 // What only each format's rewriter reads.
 void releaseRewriteSourcesOf(nc::GcodeProgram& program) {

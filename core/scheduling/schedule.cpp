@@ -1,5 +1,6 @@
 #include "core/scheduling/schedule.h"
 
+#include "core/base/free_storage.h"
 #include "core/base/number_io.h"
 #include "core/base/parallel.h"
 #include "core/base/tolerances.h"
@@ -47,13 +48,6 @@ namespace {
 // §6.5 asks for 1e-12 on the axis vectors; the angles of two layers that meet at a junction are
 // computed from the same junction value, so anything above round-off is a real step.
 constexpr double kJunctionGapRad = 1e-9;
-
-// Frees what `value` holds now: a moved-in empty value releases the storage, where a vector's
-// clear() would keep it.
-template <class T>
-void freeStorage(T& value) {
-    value = T{};
-}
 
 // Channel stage (§1.5-§2): everything before the layers become independent.
 struct ChannelStage {
@@ -363,7 +357,7 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     std::vector<LayerProblem> problems = buildLayerProblems(
         *path, stage->channel, stage->split, margins, shortLengthMm, parameters.threads);
     // From here on the layers read only the plane path's input index.
-    *stage = ChannelStage{};
+    freeStorage(*stage);
     freeStorage(path->arcLength);
     freeStorage(path->originalAngle);
     for (const LayerProblem& problem : problems) {
@@ -379,7 +373,7 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     }
     // The layers have what they need of the plane path: its input index per point (8 bytes) is
     // not held beside the new axes.
-    *path = PlanePath{};
+    freeStorage(*path);
     assemble(result, input, outcomes, axesRead, parameters.threads);
     checkJunctions(result);
     addCheckWarnings(result);

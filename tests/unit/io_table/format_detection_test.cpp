@@ -6,6 +6,7 @@
 #include "core/io/nc/gcode_writer.h"
 #include "core/io/program.h"
 #include "core/kinematics/machine_model.h"
+#include "tests/unit/io_nc/gcode_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -128,12 +129,6 @@ TEST(ReleasedRewriteSources, LeaveTheRecordsAndFreeTheText) {
     }
 }
 
-ReadOptions inDegrees() {
-    ReadOptions options;
-    options.angleUnit = AngleUnit::Degrees;
-    return options;
-}
-
 // A program of `lines` feed blocks, about 45 bytes each, turning A by 0.01 deg per block.
 std::string longProgram(std::size_t lines) {
     std::string text = "%\nO1000\nG21 G90 G94 F600\n";
@@ -154,7 +149,7 @@ TEST(ReleasedRewriteSources, AGcodeRewriteThatGivesBackWhatItReadWritesTheSameTe
     const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
     const std::string text = longProgram(200'000); // about 9 MB: reported twice at least
     const auto reference =
-        io::parseProgram(text, "long.nc", ProgramFormat::Gcode, machine, inDegrees());
+        io::parseProgram(text, "long.nc", ProgramFormat::Gcode, machine, nc::test::inDegrees());
     ASSERT_TRUE(reference.has_value()) << reference.error().toString();
     const auto& referenceGcode = std::get<nc::GcodeProgram>(reference->document);
     std::vector<kinematics::MachineAxes> pass;
@@ -165,7 +160,8 @@ TEST(ReleasedRewriteSources, AGcodeRewriteThatGivesBackWhatItReadWritesTheSameTe
     const auto told = nc::rewriteGcodePass(referenceGcode, 0, pass, machine);
     ASSERT_TRUE(told.has_value()) << told.error().toString();
 
-    auto consumed = io::parseProgram(text, "long.nc", ProgramFormat::Gcode, machine, inDegrees());
+    auto consumed =
+        io::parseProgram(text, "long.nc", ProgramFormat::Gcode, machine, nc::test::inDegrees());
     ASSERT_TRUE(consumed.has_value());
     std::vector<std::pair<std::size_t, std::size_t>> reports;
     const auto givenBack =

@@ -143,6 +143,8 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
     if (programToStdout) {
         spec.outputProgram.clear();
     }
+    // Nothing reads the program after it is written: it goes to its file as the job runs.
+    spec.stageOutputProgram = true;
     std::ostream& summary = programToStdout ? err : out;
     BatchProgress progress(err, options.quiet, options.progress);
     CancelToken cancel;

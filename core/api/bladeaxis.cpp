@@ -97,7 +97,7 @@ Result<std::string> JobOutcome::programText() const {
         return makeError(ErrorCode::InvalidArgument,
                          "the job only analysed the program: there is no re-scheduled program");
     }
-    return m_state->result.rescheduled->programText;
+    return m_state->result.rescheduled->writtenText();
 }
 
 Status JobOutcome::writeProgram(const std::filesystem::path& path) const {

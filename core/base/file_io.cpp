@@ -1,13 +1,17 @@
 #include "core/base/file_io.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
+#include <optional>
 #include <random>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <utility>
 
 namespace bladeaxis {
 
@@ -129,10 +133,17 @@ fs::path folderOf(const fs::path& path) {
     return path.has_parent_path() ? path.parent_path() : fs::path(".");
 }
 
+// Why a write into the new content failed, in the words a user acts on.
+std::string writeFailure() {
+    return errno == ENOSPC || errno == EFBIG || errno == EDQUOT
+               ? "the disk is full or the file too large: " + reason()
+               : "write failed: " + reason();
+}
+
 // A descriptor for the new content: unnamed when the file system supports it, so that a killed
 // process leaves nothing behind; `named` is set to the sibling's name otherwise.
 int openTemporary(const fs::path& path, mode_t mode, fs::path& named) {
-    const int fd = ::open(folderOf(path).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, mode);
+    const int fd = ::open(folderOf(path).c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, mode);
     if (fd >= 0 || (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL)) {
         return fd;
     }
@@ -140,7 +151,7 @@ int openTemporary(const fs::path& path, mode_t mode, fs::path& named) {
     for (int attempt = 0; attempt < 16; ++attempt) {
         named =
             folderOf(path) / ("." + path.filename().string() + ".tmp" + std::to_string(device()));
-        const int sibling = ::open(named.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, mode);
+        const int sibling = ::open(named.c_str(), O_CREAT | O_EXCL | O_RDWR | O_CLOEXEC, mode);
         if (sibling >= 0 || errno != EEXIST) {
             return sibling;
         }
@@ -173,46 +184,7 @@ void syncFolder(const fs::path& path) {
     }
 }
 
-Status replaceRegularFile(const fs::path& path, std::string_view content, mode_t mode) {
-    fs::path named;
-    Descriptor fd(openTemporary(path, mode, named));
-    if (!fd.valid()) {
-        return failure(path,
-                       "cannot create the output in " + folderOf(path).string() + ": " + reason());
-    }
-    const auto discard = [&named] {
-        if (!named.empty()) {
-            ::unlink(named.c_str());
-        }
-    };
-    // The permission bits of the file replaced (open applied the umask to a new one).
-    if (::fchmod(fd.get(), mode) != 0 || !writeAll(fd.get(), content) || ::fsync(fd.get()) != 0) {
-        const std::string why = errno == ENOSPC || errno == EFBIG || errno == EDQUOT
-                                    ? "the disk is full or the file too large: " + reason()
-                                    : "write failed: " + reason();
-        discard();
-        return failure(path, why);
-    }
-    if (named.empty() && !nameTemporary(fd.get(), path, named)) {
-        return failure(path, "cannot name the new output: " + reason());
-    }
-    if (!fd.close()) {
-        discard();
-        return failure(path, "write failed: " + reason());
-    }
-    if (::rename(named.c_str(), path.c_str()) != 0) {
-        const std::string why = reason();
-        discard();
-        return failure(path, "cannot move the new output into place: " + why);
-    }
-    syncFolder(path);
-    return {};
-}
-
-} // namespace
-
-Status writeFileAtomically(const fs::path& path, std::string_view content,
-                           std::span<const fs::path> protectedInputs) {
+Status refuseInputs(const fs::path& path, std::span<const fs::path> protectedInputs) {
     for (const fs::path& input : protectedInputs) {
         if (isSameFile(path, input)) {
             return makeError(ErrorCode::WriteFailed,
@@ -220,18 +192,55 @@ Status writeFileAtomically(const fs::path& path, std::string_view content,
                              {path.string()});
         }
     }
+    return {};
+}
+
+// The permission bits a replaced file keeps, or a new file's under the umask; nothing when the
+// target is neither a regular file nor a new name.
+std::optional<mode_t> stagedMode(const fs::path& target) {
+    struct stat existing {};
+    if (::stat(target.c_str(), &existing) != 0) {
+        if (errno != ENOENT) {
+            return std::nullopt;
+        }
+        const mode_t umaskValue = ::umask(0);
+        ::umask(umaskValue);
+        return 0666 & ~umaskValue;
+    }
+    if (!S_ISREG(existing.st_mode)) {
+        return std::nullopt;
+    }
+    return existing.st_mode & 07777;
+}
+
+Status replaceRegularFile(const fs::path& path, std::string_view content) {
+    auto staged = StagedFile::open(path);
+    if (!staged) {
+        return std::unexpected(staged.error());
+    }
+    if (auto written = staged->append(content); !written) {
+        return written;
+    }
+    return staged->commit();
+}
+
+} // namespace
+
+Status writeFileAtomically(const fs::path& path, std::string_view content,
+                           std::span<const fs::path> protectedInputs) {
+    if (auto refused = refuseInputs(path, protectedInputs); !refused) {
+        return refused;
+    }
     const fs::path target = followLinks(path);
     struct stat existing {};
     if (::stat(target.c_str(), &existing) != 0) {
         if (errno != ENOENT) {
             return failure(path, "cannot write here: " + reason());
         }
-        const mode_t umaskValue = ::umask(0);
-        ::umask(umaskValue);
-        return replaceRegularFile(target, content, 0666 & ~umaskValue);
+        return replaceRegularFile(path, content);
     }
     if (S_ISREG(existing.st_mode)) {
-        return replaceRegularFile(target, content, existing.st_mode & 07777);
+        return replaceRegularFile(path, content);
     }
     if (S_ISCHR(existing.st_mode) || S_ISFIFO(existing.st_mode)) {
         return writeDirectly(target, content);
@@ -239,6 +248,159 @@ Status writeFileAtomically(const fs::path& path, std::string_view content,
     return failure(path, S_ISDIR(existing.st_mode)
                              ? "is a folder, expected a file name"
                              : "is neither a regular file, a character device nor a pipe");
+}
+
+struct StagedFile::State {
+    State(fs::path requestedPath, fs::path targetPath, fs::path sibling, int descriptor)
+        : requested(std::move(requestedPath)), target(std::move(targetPath)),
+          named(std::move(sibling)), fd(descriptor) {}
+    State(const State&) = delete;
+    State& operator=(const State&) = delete;
+    ~State() {
+        if (!committed && !named.empty()) {
+            ::unlink(named.c_str());
+        }
+    }
+
+    fs::path requested; // the path as given, for messages
+    fs::path target;    // the file the content replaces (links followed)
+    fs::path named;     // the content's sibling name while it has one (no unnamed files)
+    Descriptor fd;
+    std::size_t size = 0;
+    bool committed = false;
+};
+
+StagedFile::StagedFile(std::unique_ptr<State> state) : m_state(std::move(state)) {}
+StagedFile::StagedFile(StagedFile&&) noexcept = default;
+StagedFile& StagedFile::operator=(StagedFile&&) noexcept = default;
+StagedFile::~StagedFile() = default;
+
+bool StagedFile::isStageable(const fs::path& path) {
+    const fs::path target = followLinks(path);
+    std::error_code ec;
+    return fs::is_directory(folderOf(target), ec) && stagedMode(target).has_value();
+}
+
+Result<StagedFile> StagedFile::open(const fs::path& path,
+                                    std::span<const fs::path> protectedInputs) {
+    if (auto refused = refuseInputs(path, protectedInputs); !refused) {
+        return std::unexpected(refused.error());
+    }
+    const fs::path target = followLinks(path);
+    struct stat existing {};
+    if (::stat(target.c_str(), &existing) != 0 && errno != ENOENT) {
+        return std::unexpected(failure(path, "cannot write here: " + reason()).error());
+    }
+    const std::optional<mode_t> mode = stagedMode(target);
+    if (!mode) {
+        return std::unexpected(
+            failure(path, "is neither a regular file nor a new name: a folder, a pipe or a "
+                          "device cannot hold a file written in pieces")
+                .error());
+    }
+    fs::path named;
+    const int fd = openTemporary(target, *mode, named);
+    if (fd < 0) {
+        return std::unexpected(failure(path, "cannot create the output in " +
+                                                 folderOf(target).string() + ": " + reason())
+                                   .error());
+    }
+    auto state = std::make_unique<State>(path, target, std::move(named), fd);
+    // The permission bits of the file replaced (open applied the umask to a new one).
+    if (::fchmod(state->fd.get(), *mode) != 0) {
+        return std::unexpected(failure(path, "write failed: " + reason()).error());
+    }
+    return StagedFile(std::move(state));
+}
+
+Status StagedFile::append(std::string_view content) {
+    if (!writeAll(m_state->fd.get(), content)) {
+        return failure(m_state->requested, writeFailure());
+    }
+    m_state->size += content.size();
+    return {};
+}
+
+std::size_t StagedFile::size() const {
+    return m_state->size;
+}
+
+const fs::path& StagedFile::target() const {
+    return m_state->requested;
+}
+
+Status StagedFile::commit() {
+    State& state = *m_state;
+    if (::fsync(state.fd.get()) != 0) {
+        return failure(state.requested, writeFailure());
+    }
+    struct stat content {};
+    struct stat current {};
+    if (state.committed && ::fstat(state.fd.get(), &content) == 0 &&
+        ::stat(state.target.c_str(), &current) == 0 && content.st_dev == current.st_dev &&
+        content.st_ino == current.st_ino) {
+        return {}; // already there
+    }
+    if (state.named.empty() && !nameTemporary(state.fd.get(), state.target, state.named)) {
+        return failure(state.requested, "cannot name the new output: " + reason());
+    }
+    if (::rename(state.named.c_str(), state.target.c_str()) != 0) {
+        const std::string why = reason();
+        ::unlink(state.named.c_str()); // the descriptor keeps the content
+        state.named.clear();
+        return failure(state.requested, "cannot move the new output into place: " + why);
+    }
+    state.named.clear();
+    state.committed = true;
+    syncFolder(state.target);
+    return {};
+}
+
+Result<MappedText> StagedFile::mapText() const {
+    if (m_state->size == 0) {
+        return MappedText();
+    }
+    void* data = ::mmap(nullptr, m_state->size, PROT_READ, MAP_SHARED, m_state->fd.get(), 0);
+    if (data == MAP_FAILED) {
+        return makeError(ErrorCode::FileUnreadable,
+                         "cannot read the staged output back: " + reason(),
+                         {m_state->requested.string()});
+    }
+    return MappedText(static_cast<const char*>(data), m_state->size);
+}
+
+MappedText::MappedText(const char* data, std::size_t size) : m_data(data), m_size(size) {}
+
+MappedText::MappedText(MappedText&& other) noexcept
+    : m_data(std::exchange(other.m_data, nullptr)), m_size(std::exchange(other.m_size, 0)),
+      m_released(std::exchange(other.m_released, 0)) {}
+
+MappedText& MappedText::operator=(MappedText&& other) noexcept {
+    if (this != &other) {
+        this->~MappedText();
+        m_data = std::exchange(other.m_data, nullptr);
+        m_size = std::exchange(other.m_size, 0);
+        m_released = std::exchange(other.m_released, 0);
+    }
+    return *this;
+}
+
+MappedText::~MappedText() {
+    if (m_data != nullptr) {
+        ::munmap(const_cast<char*>(m_data), m_size);
+        m_data = nullptr;
+    }
+}
+
+void MappedText::releaseBefore(std::size_t offset) const {
+    static const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    const std::size_t end = std::min(offset, m_size) / page * page;
+    if (m_data == nullptr || end <= m_released) {
+        return;
+    }
+    // The mapping starts on a page; a shared file mapping reads dropped pages back from the file.
+    ::madvise(const_cast<char*>(m_data) + m_released, end - m_released, MADV_DONTNEED);
+    m_released = end;
 }
 
 } // namespace bladeaxis

@@ -5,6 +5,7 @@
 #include "core/base/error.h"
 
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -27,6 +28,65 @@ Result<std::string> readTextFile(const std::filesystem::path& path);
 // (also through hard links). Errors name the path and the system's reason.
 Status writeFileAtomically(const std::filesystem::path& path, std::string_view content,
                            std::span<const std::filesystem::path> protectedInputs = {});
+
+// A file's bytes mapped read-only, for reading a large file once from start to end: pages read
+// are in the resident set until releaseBefore() gives them back (the file keeps them).
+class MappedText {
+  public:
+    MappedText() = default;
+    MappedText(const char* data, std::size_t size);
+    MappedText(MappedText&&) noexcept;
+    MappedText& operator=(MappedText&&) noexcept;
+    MappedText(const MappedText&) = delete;
+    MappedText& operator=(const MappedText&) = delete;
+    ~MappedText();
+
+    std::string_view text() const { return {m_data, m_size}; }
+    // Takes the whole pages before `offset` out of the resident set; read again, they come back
+    // from the file with the same bytes.
+    void releaseBefore(std::size_t offset) const;
+
+  private:
+    const char* m_data = nullptr;
+    std::size_t m_size = 0;
+    mutable std::size_t m_released = 0; // bytes from the start already given back
+};
+
+// The content of a regular file written in pieces before it is given its name: it is an
+// unnamed temporary file in the target's folder (a `.name.tmpN` sibling where the file system
+// cannot make one unnamed) until commit() moves it over the target exactly as
+// writeFileAtomically does. Dropped uncommitted, nothing of it remains, also when the process is
+// killed (an unnamed file). A job writes a large output here while it runs instead of holding
+// it in memory, and reads it back from here (mapText).
+class StagedFile {
+  public:
+    // Refuses (WriteFailed) what writeFileAtomically refuses, and a target that is not a regular
+    // file or a new name (a pipe or a device cannot be staged: see isStageable).
+    static Result<StagedFile> open(const std::filesystem::path& path,
+                                   std::span<const std::filesystem::path> protectedInputs = {});
+    // True when `path` (after following links) is a regular file or a new name in an existing
+    // folder.
+    static bool isStageable(const std::filesystem::path& path);
+
+    StagedFile(StagedFile&&) noexcept;
+    StagedFile& operator=(StagedFile&&) noexcept;
+    ~StagedFile();
+
+    Status append(std::string_view content);
+    std::size_t size() const;
+    const std::filesystem::path& target() const;
+    // Syncs the content and moves it over the target. Once committed the file stays readable
+    // here; a second commit names it again (the same bytes).
+    Status commit();
+
+    // The content written so far, mapped read-only; see MappedText.
+    Result<MappedText> mapText() const;
+
+  private:
+    struct State;
+    explicit StagedFile(std::unique_ptr<State> state);
+    std::unique_ptr<State> m_state;
+};
 
 // True when both paths name the same existing file (after resolving links).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);

@@ -375,13 +375,12 @@ Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileN
     return LoadedProgram{std::move(*program), resolved};
 }
 
-Result<std::size_t> streamProgramRecords(std::string_view text, std::string_view fileName,
-                                         ProgramFormat format,
-                                         const kinematics::MachineModel& machine,
-                                         const ReadOptions& options,
-                                         const nc::RecordChunkConsumer& consume) {
+Result<std::size_t>
+streamProgramRecords(std::string_view text, std::string_view fileName, ProgramFormat format,
+                     const kinematics::MachineModel& machine, const ReadOptions& options,
+                     const nc::RecordChunkConsumer& consume, const nc::TextReadUpTo& readUpTo) {
     if (format == ProgramFormat::Gcode) {
-        return nc::streamGcodeRecords(text, fileName, machine, options, consume);
+        return nc::streamGcodeRecords(text, fileName, machine, options, consume, readUpTo);
     }
     auto program = parseTextFormat(text, fileName, format, machine, options);
     if (!program) {

@@ -98,12 +98,11 @@ Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileN
 // Reads a program of `format` and hands its records (in the engine's frame, as parseProgram
 // gives them) to `consume` in order; returns their number. G-code is streamed and its records
 // are not kept (nc::streamGcodeRecords); CL data and point tables are parsed whole and handed
-// on at once.
-Result<std::size_t> streamProgramRecords(std::string_view text, std::string_view fileName,
-                                         ProgramFormat format,
-                                         const kinematics::MachineModel& machine,
-                                         const ReadOptions& options,
-                                         const nc::RecordChunkConsumer& consume);
+// on at once (`readUpTo` is then told nothing).
+Result<std::size_t>
+streamProgramRecords(std::string_view text, std::string_view fileName, ProgramFormat format,
+                     const kinematics::MachineModel& machine, const ReadOptions& options,
+                     const nc::RecordChunkConsumer& consume, const nc::TextReadUpTo& readUpTo = {});
 
 // Parses text already in memory (the demo program is generated, never read from disk).
 Result<LoadedProgram> parseProgram(std::string_view text, std::string_view fileName,

@@ -420,6 +420,14 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
             program.releaseRewriteSourcesBefore(textEnd, blockEnd);
         };
     }
+    if (spec.stageOutputProgram && !spec.outputProgram.empty() &&
+        StagedFile::isStageable(spec.outputProgram)) {
+        auto staged = StagedFile::open(spec.outputProgram, protectedInputsOf(spec));
+        if (!staged) {
+            return std::unexpected(staged.error());
+        }
+        input.stagedProgram = std::make_shared<StagedFile>(std::move(*staged));
+    }
     auto outcome = reschedule(input, cancel);
     if (!outcome) {
         return std::unexpected(outcome.error());

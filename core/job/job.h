@@ -44,7 +44,13 @@ struct JobSpec {
     // applied on every run; a key-point edit the layer's channel refuses fails the job.
     std::vector<scheduling::LayerOverride> layerEdits;
     std::filesystem::path outputProgram; // the re-scheduled program; empty: not written
-    std::filesystem::path outputCl;      // the re-scheduled toolpath as CL data (APT); empty: none
+    // Write the re-scheduled program beside outputProgram while the job runs (an unnamed file
+    // until writeJobOutputs moves it into place) instead of keeping its text in memory: the
+    // batch front end, which writes the program and nothing reads it after. The result's
+    // programText is then empty (RescheduleOutcome::writtenText reads the file). Ignored when
+    // outputProgram is empty or cannot be staged (a pipe, a device).
+    bool stageOutputProgram = false;
+    std::filesystem::path outputCl; // the re-scheduled toolpath as CL data (APT); empty: none
     CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)
     std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none
     std::filesystem::path jobFile;   // the job file this spec was read from, if any
@@ -105,9 +111,13 @@ inline constexpr const char* kEditedMethod = "edited";
 // does it; the window calls it after a re-run for an edit, which keeps the comparison it had.
 Status appendEditedMethod(JobResult& result, const JobSpec& spec);
 
-// Writes the re-scheduled program to spec.outputProgram, and report.json, axes.csv and
-// layers.csv (and demo_blade.nc for a demo job; compare.json, compare.csv and report.html for a
-// comparison) into spec.outputDir, each atomically; refuses to overwrite the input program.
+// The files a job reads, which no output may replace (also through links).
+std::vector<std::filesystem::path> protectedInputsOf(const JobSpec& spec);
+
+// Writes the re-scheduled program to spec.outputProgram (moving a staged one into place), and
+// report.json, axes.csv and layers.csv (and demo_blade.nc for a demo job; compare.json, compare.csv
+// and report.html for a comparison) into spec.outputDir, each atomically; refuses to overwrite the
+// input program.
 Status writeJobOutputs(const JobSpec& spec, const JobResult& result);
 
 // Per layer of the re-scheduled pass: A reversals and peak A velocity/acceleration before and

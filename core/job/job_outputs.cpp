@@ -320,10 +320,12 @@ Status writeOutputProgram(const JobSpec& spec, const JobResult& result,
             return refused;
         }
     }
-    if (auto status =
-            writeFileAtomically(spec.outputProgram, result.rescheduled->programText, inputs);
-        !status) {
-        return status;
+    const Status written =
+        result.rescheduled->stagedProgram
+            ? result.rescheduled->stagedProgram->commit()
+            : writeFileAtomically(spec.outputProgram, result.rescheduled->programText, inputs);
+    if (!written) {
+        return written;
     }
     return writeOutputCl(spec, result, inputs);
 }
@@ -445,8 +447,7 @@ Status writeReportFolder(const JobSpec& spec, const JobResult& result,
 
 } // namespace
 
-Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
-    // Every file the job read is an input no output may replace, through links too.
+std::vector<fs::path> protectedInputsOf(const JobSpec& spec) {
     std::vector<fs::path> inputs;
     for (const fs::path& input :
          {spec.demo ? fs::path() : spec.program, spec.machineFile, spec.cad.file, spec.jobFile}) {
@@ -454,6 +455,11 @@ Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
             inputs.push_back(input);
         }
     }
+    return inputs;
+}
+
+Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
+    const std::vector<fs::path> inputs = protectedInputsOf(spec);
     if (auto status = createOutputFolder(spec); !status) {
         return status;
     }

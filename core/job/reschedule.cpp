@@ -1,6 +1,7 @@
 #include "core/job/reschedule.h"
 
 #include "core/analysis/time_optimal.h"
+#include "core/base/free_storage.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
 #include "core/io/cl/apt.h"
@@ -64,11 +65,18 @@ Result<std::string> rewriteProgram(const RescheduleInput& input, const Reschedul
     const io::nc::RewrittenUpTo keepEverything;
     const io::nc::RewrittenUpTo& rewrittenUpTo =
         input.rewritten ? input.rewrittenUpTo : keepEverything;
+    // A staged program takes the G-code as it is written (keepWritten appends the rest).
+    io::nc::WrittenPiece toStaged;
+    if (input.stagedProgram) {
+        toStaged = [&staged = *input.stagedProgram](std::string_view piece) {
+            return staged.append(piece);
+        };
+    }
     if (const auto* gcode = std::get_if<io::nc::GcodeProgram>(&input.program->document)) {
         if (!io::programsToolTip(*input.program, input.passFirst, input.passCount)
                  .value_or(false)) {
             return io::nc::rewriteGcodePass(*gcode, input.passFirst, passAxes, *input.machine,
-                                            rewrittenUpTo);
+                                            rewrittenUpTo, toStaged);
         }
         // Tool-tip programming writes the tip in the workpiece frame, not the machine's X Y Z.
         std::vector<kinematics::MachineAxes> words(passAxes.begin(), passAxes.end());
@@ -79,7 +87,7 @@ Result<std::string> rewriteProgram(const RescheduleInput& input, const Reschedul
             axes.z = tip.z();
         }
         return io::nc::rewriteGcodePass(*gcode, input.passFirst, words, *input.machine,
-                                        rewrittenUpTo);
+                                        rewrittenUpTo, toStaged);
     }
     std::vector<ClRecord> records = all;
     std::ranges::copy(rescheduledRecords(passOf(input), outcome),
@@ -103,7 +111,7 @@ struct WrittenProgram {
 // is read and then dropped, so the check never holds a second program (about 140 bytes per
 // record) beside the first.
 Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string_view text,
-                                       bool keepFeeds) {
+                                       bool keepFeeds, const io::nc::TextReadUpTo& readUpTo) {
     const toolpath::Toolpath& original = input.program->path();
     const std::size_t passEnd = input.passFirst + input.passCount;
     WrittenProgram written;
@@ -130,7 +138,7 @@ Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string
     };
     auto count = io::streamProgramRecords(text, original.sourceFile + " (re-scheduled)",
                                           input.program->format(), *input.machine,
-                                          input.program->options, compare);
+                                          input.program->options, compare, readUpTo);
     if (!count) {
         Error error = count.error();
         error.code = ErrorCode::Internal;
@@ -143,6 +151,38 @@ Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string
                                                   std::to_string(original.records.size()));
     }
     return written;
+}
+
+// The written program from memory, or mapped from its staged file with its pages given back
+// as the reader passes them (a shared file mapping reads dropped pages again from the file).
+Result<WrittenProgram> readBackWritten(const RescheduleInput& input,
+                                       const RescheduleOutcome& outcome, bool keepFeeds) {
+    if (!outcome.stagedProgram) {
+        return readBackWritten(input, outcome.programText, keepFeeds, {});
+    }
+    auto mapped = outcome.stagedProgram->mapText();
+    if (!mapped) {
+        return std::unexpected(mapped.error());
+    }
+    const io::nc::TextReadUpTo giveBack = [&mapped](std::size_t offset) {
+        mapped->releaseBefore(offset);
+    };
+    return readBackWritten(input, mapped->text(), keepFeeds, giveBack);
+}
+
+// The written program goes into the outcome, or to the staged file when the job gives one: the
+// rewrite has streamed G-code there already, other formats arrive whole and are freed here.
+Status keepWritten(const RescheduleInput& input, std::string text, RescheduleOutcome& outcome) {
+    if (!input.stagedProgram) {
+        outcome.programText = std::move(text);
+        return {};
+    }
+    if (auto staged = input.stagedProgram->append(text); !staged) {
+        return staged;
+    }
+    freeStorage(text);
+    outcome.stagedProgram = input.stagedProgram;
+    return {};
 }
 
 RescheduleOutcome outcomeFrom(scheduling::ScheduleResult schedule) {
@@ -289,6 +329,17 @@ bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::
     return false;
 }
 
+Result<std::string> RescheduleOutcome::writtenText() const {
+    if (!stagedProgram) {
+        return programText;
+    }
+    auto mapped = stagedProgram->mapText();
+    if (!mapped) {
+        return std::unexpected(mapped.error());
+    }
+    return std::string(mapped->text());
+}
+
 std::vector<toolpath::ClRecord> rescheduledRecords(std::span<const ClRecord> pass,
                                                    const RescheduleOutcome& outcome) {
     std::vector<ClRecord> records(pass.begin(), pass.end());
@@ -367,7 +418,9 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     if (!text) {
         return std::unexpected(text.error());
     }
-    outcome.programText = std::move(*text);
+    if (auto kept = keepWritten(input, std::move(*text), outcome); !kept) {
+        return std::unexpected(kept.error());
+    }
     if (input.rewritten) {
         analysed = startAnalysis();
     }
@@ -376,7 +429,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(status.error());
     }
     auto written = input.verifyByRereading || feedsFromWritten
-                       ? readBackWritten(input, outcome.programText, feedsFromWritten)
+                       ? readBackWritten(input, outcome, feedsFromWritten)
                        : Result<WrittenProgram>(WrittenProgram{});
     outcome.stageSeconds.verify = clock.lap();
     if (!written) {

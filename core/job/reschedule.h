@@ -6,12 +6,14 @@
 #include "core/analysis/axis_profile.h"
 #include "core/analysis/constant_feed.h"
 #include "core/base/error.h"
+#include "core/base/file_io.h"
 #include "core/base/progress.h"
 #include "core/io/nc/gcode_writer.h"
 #include "core/io/program.h"
 #include "core/scheduling/schedule.h"
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -37,7 +39,11 @@ struct RescheduleOutcome {
     analysis::AxisProfile profile; // axis motion of the new program
     analysis::ConstantFeedTime constantFeed;
     std::optional<double> timeOptimal; // s, T2 of the new motion
-    std::string programText;           // the whole rewritten program
+    // The whole rewritten program; empty when it was staged (stagedProgram).
+    std::string programText;
+    // The rewritten program written to its output file while the job ran, not yet in place
+    // (RescheduleInput::stagedProgram); writeJobOutputs commits it.
+    std::shared_ptr<StagedFile> stagedProgram;
     // Verification (spec §6.5 and the acceptance): ball centres of the re-read output
     // against the input's, and the smallest distance of the new orientation to the raw channel.
     double maxCentreDeviationMm = 0.0;
@@ -48,6 +54,9 @@ struct RescheduleOutcome {
     struct StageSeconds {
         double schedule = 0.0, kinematics = 0.0, rewrite = 0.0, verify = 0.0, analysis = 0.0;
     } stageSeconds;
+
+    // The rewritten program's text, from memory or read back from its staged file.
+    Result<std::string> writtenText() const;
 };
 
 struct RescheduleInput {
@@ -73,6 +82,11 @@ struct RescheduleInput {
     // stand side by side at the rewrite's end, where read-schedule-write's memory peaks.
     // Ignored without `rewritten`: the pages given back read as zeros.
     io::nc::RewrittenUpTo rewrittenUpTo;
+    // Where the rewritten program goes instead of memory: its text is appended here and freed,
+    // and the re-read check reads it back from the file, mapped, giving its pages back as it
+    // goes. A million-block program's text (65 bytes per record) then does not stand beside the
+    // new motion's analysis, where a job's memory peaks. Null: kept in programText.
+    std::shared_ptr<StagedFile> stagedProgram;
 };
 
 // Largest ball-centre deviation accepted when the written program is read back: the program's

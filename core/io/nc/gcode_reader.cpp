@@ -129,7 +129,9 @@ void applyStatedTools(const std::vector<StatedTool>& tools, bool inch, GcodeProg
 // hands them to its consumer in runs and clears them (with their sources and feeds).
 class RecordOutlet {
   public:
-    explicit RecordOutlet(const RecordChunkConsumer* consume) : m_consume(consume) {}
+    explicit RecordOutlet(const RecordChunkConsumer* consume,
+                          const TextReadUpTo* readUpTo = nullptr)
+        : m_consume(consume), m_readUpTo(readUpTo) {}
 
     void afterBlock(GcodeProgram& program) {
         if (!m_firstInch && !program.sources.empty()) {
@@ -146,6 +148,9 @@ class RecordOutlet {
         }
         (*m_consume)(m_handedOn, program.path.records);
         m_handedOn += program.path.records.size();
+        if (m_readUpTo != nullptr && *m_readUpTo && !program.sources.empty()) {
+            (*m_readUpTo)(program.sources.back().lineBegin);
+        }
         program.path.records.clear();
         program.sources.clear();
         program.programmedFeeds.clear();
@@ -155,6 +160,7 @@ class RecordOutlet {
 
   private:
     const RecordChunkConsumer* m_consume;
+    const TextReadUpTo* m_readUpTo;
     std::size_t m_handedOn = 0;
     std::optional<bool> m_firstInch;
 };
@@ -315,7 +321,8 @@ Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName
 Result<std::size_t> streamGcodeRecords(std::string_view text, std::string_view fileName,
                                        const kinematics::MachineModel& machine,
                                        const ReadOptions& options,
-                                       const RecordChunkConsumer& consume) {
+                                       const RecordChunkConsumer& consume,
+                                       const TextReadUpTo& readUpTo) {
     GcodeProgram program;
     if (Status ready = prepareProgram(text, fileName, options, program); !ready) {
         return std::unexpected(ready.error());
@@ -328,7 +335,7 @@ Result<std::size_t> streamGcodeRecords(std::string_view text, std::string_view f
         records = first + chunk.size();
         consume(first, chunk);
     };
-    RecordOutlet outlet(&counting);
+    RecordOutlet outlet(&counting, &readUpTo);
     if (Status read = interpretProgram(program, text, fileName, machine, options, outlet); !read) {
         return std::unexpected(read.error());
     }

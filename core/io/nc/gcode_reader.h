@@ -59,18 +59,24 @@ Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName
 using RecordChunkConsumer =
     std::function<void(std::size_t first, std::span<const toolpath::ClRecord> records)>;
 
+// How far a streamed read has read its text: nothing before `offset` is read again. A reader
+// of a large mapped file gives those pages back (MappedText::releaseBefore).
+using TextReadUpTo = std::function<void(std::size_t offset)>;
+
 // The most records a streamed read hands on at a time.
 inline constexpr std::size_t kStreamChunkRecords = 4096;
 
 // Reads `text` as parseGcode does (the same records, checks and errors) but keeps none of its
 // records: they go to `consume` in order, in runs of at most kStreamChunkRecords. A check that
 // looks at each record once, such as reading a written program back, then holds a few hundred
-// kilobytes instead of about 140 bytes per record. Returns the number of records. On an error
+// kilobytes instead of about 140 bytes per record. After each run it tells `readUpTo` how far
+// it has read. Returns the number of records. On an error
 // `consume` may already have seen the records before it.
 Result<std::size_t> streamGcodeRecords(std::string_view text, std::string_view fileName,
                                        const kinematics::MachineModel& machine,
                                        const ReadOptions& options,
-                                       const RecordChunkConsumer& consume);
+                                       const RecordChunkConsumer& consume,
+                                       const TextReadUpTo& readUpTo = {});
 
 // Reads the whole file (FileNotFound / FileUnreadable) and parses it.
 Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,

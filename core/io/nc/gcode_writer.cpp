@@ -157,10 +157,11 @@ class Rewriter {
         m_combinedFeed = program.programmedFeeds.size() == program.path.records.size();
     }
 
-    Result<std::string> run(const NewAxes& newAxes, const RewrittenUpTo& rewrittenUpTo) {
+    Result<std::string> run(const NewAxes& newAxes, const RewrittenUpTo& rewrittenUpTo,
+                            const WrittenPiece& writtenPiece) {
         const std::string& text = m_program.text;
         std::string out;
-        out.reserve(text.size() + text.size() / 16);
+        out.reserve(writtenPiece ? kPieceBytes + kPieceBytes / 4 : text.size() + text.size() / 16);
         std::size_t cursor = 0;
         std::size_t reported = 0;
         for (std::size_t k = 0; k < newAxes.size(); ++k) {
@@ -188,13 +189,26 @@ class Rewriter {
                 rewrittenUpTo(cursor, k + 1);
                 reported = cursor;
             }
+            if (writtenPiece && out.size() >= kPieceBytes) {
+                if (Status handed = writtenPiece(out); !handed) {
+                    return std::unexpected(std::move(handed.error()));
+                }
+                out.clear();
+            }
         }
         out.append(text, cursor, std::string::npos);
+        if (writtenPiece) {
+            if (Status handed = writtenPiece(out); !handed) {
+                return std::unexpected(std::move(handed.error()));
+            }
+            return std::string();
+        }
         return out;
     }
 
   private:
     static constexpr std::size_t kReportEveryBytes = std::size_t{4} << 20;
+    static constexpr std::size_t kPieceBytes = std::size_t{4} << 20;
 
     struct AxisContext {
         std::size_t axis = 0;
@@ -554,7 +568,8 @@ void Rewriter::appendEdited(std::string& out, std::string_view line, std::vector
 Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t passFirst,
                                      std::span<const MachineAxes> passAxes,
                                      const MachineModel& machine,
-                                     const RewrittenUpTo& rewrittenUpTo) {
+                                     const RewrittenUpTo& rewrittenUpTo,
+                                     const WrittenPiece& writtenPiece) {
     const std::size_t records = program.path.records.size();
     if (program.sources.size() != records) {
         return makeError(ErrorCode::InvalidArgument,
@@ -571,7 +586,7 @@ Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t pa
     if (Status valid = validateAxes(program, newAxes, machine); !valid) {
         return std::unexpected(std::move(valid.error()));
     }
-    return Rewriter(program, machine).run(newAxes, rewrittenUpTo);
+    return Rewriter(program, machine).run(newAxes, rewrittenUpTo, writtenPiece);
 }
 
 Result<std::string> rewriteGcode(const GcodeProgram& program, std::span<const MachineAxes> newAxes,

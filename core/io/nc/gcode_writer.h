@@ -35,12 +35,19 @@ Result<std::string> rewriteGcode(const GcodeProgram& program,
 // job gives those pages back as it goes (io::LoadedProgram::releaseRewriteSourcesBefore).
 using RewrittenUpTo = std::function<void(std::size_t textEnd, std::size_t blockEnd)>;
 
+// Takes the written text in order, a few megabytes at a time (a job appends it to the output
+// file it stages); an error stops the rewrite with it.
+using WrittenPiece = std::function<Status(std::string_view piece)>;
+
 // rewriteGcode of one pass: records [passFirst, passFirst + passAxes.size()) get passAxes, every
-// other record is written with the axes it was read with (its text is unchanged).
+// other record is written with the axes it was read with (its text is unchanged). With
+// `writtenPiece` every byte of the text goes there and the result is empty: the written program
+// is never whole in memory.
 Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t passFirst,
                                      std::span<const kinematics::MachineAxes> passAxes,
                                      const kinematics::MachineModel& machine,
-                                     const RewrittenUpTo& rewrittenUpTo = {});
+                                     const RewrittenUpTo& rewrittenUpTo = {},
+                                     const WrittenPiece& writtenPiece = {});
 
 // rewriteGcode, then an atomic write that refuses to overwrite the program's source file.
 Status writeGcodeFile(const std::filesystem::path& out, const GcodeProgram& program,

@@ -84,6 +84,44 @@ TEST(StreamedReading, HandsOnEveryRecordAWholeParseGivesInOrderAndInBoundedRuns)
     }
 }
 
+// The re-read check maps the written file and gives its pages back behind the reader: what the
+// reader says it has read must lie before every block it hands on later, at a line start.
+TEST(StreamedReading, SaysHowFarItHasReadAndNeverHandsOnABlockBeforeThat) {
+    const std::string text = helicalProgram(3 * static_cast<int>(kStreamChunkRecords) + 517);
+    std::vector<std::size_t> lineStarts{0, 0}; // 1-based lines
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            lineStarts.push_back(i + 1);
+        }
+    }
+    std::vector<std::size_t> reports;
+    std::size_t readUpTo = 0;
+    bool handedOnBeforeReport = false;
+    const auto count = streamGcodeRecords(
+        text, "t.nc", kinematics::defaultBladeMachine(), {},
+        [&](std::size_t, std::span<const ClRecord> run) {
+            for (const ClRecord& record : run) {
+                handedOnBeforeReport = handedOnBeforeReport ||
+                                       lineStarts[static_cast<std::size_t>(record.line)] < readUpTo;
+            }
+        },
+        [&](std::size_t offset) {
+            reports.push_back(offset);
+            readUpTo = offset;
+        });
+    ASSERT_TRUE(count.has_value()) << count.error().toString();
+    EXPECT_FALSE(handedOnBeforeReport);
+    ASSERT_GE(reports.size(), 4u);
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+        EXPECT_LE(reports[i], text.size());
+        EXPECT_EQ(text[reports[i] - 1], '\n') << "not at a line start: " << reports[i];
+        if (i > 0) {
+            EXPECT_GT(reports[i], reports[i - 1]);
+        }
+    }
+    EXPECT_GT(reports.back(), text.size() / 2);
+}
+
 TEST(StreamedReading, RefusesWhatAWholeParseRefusesWithTheSameMessage) {
     std::string text = helicalProgram(2 * static_cast<int>(kStreamChunkRecords));
     // A macro variable deep in the program, after runs have been handed on.

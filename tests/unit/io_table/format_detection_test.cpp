@@ -187,5 +187,42 @@ TEST(ReleasedRewriteSources, AGcodeRewriteThatGivesBackWhatItReadWritesTheSameTe
     EXPECT_EQ(kept.substr(reports.back().first), text.substr(reports.back().first));
 }
 
+// A job stages the written program in its output file as the rewrite goes: the pieces, in
+// order, are the text a rewrite into memory gives, and a piece refused stops the rewrite.
+TEST(RewriteInPieces, TheWrittenPiecesAreTheTextARewriteIntoMemoryGives) {
+    const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    const std::string text = longProgram(200'000);
+    const auto program =
+        io::parseProgram(text, "long.nc", ProgramFormat::Gcode, machine, nc::test::inDegrees());
+    ASSERT_TRUE(program.has_value()) << program.error().toString();
+    const auto& gcode = std::get<nc::GcodeProgram>(program->document);
+    std::vector<kinematics::MachineAxes> pass;
+    for (const toolpath::ClRecord& record : program->path().records) {
+        pass.push_back(*record.axes);
+        pass.back().a += units::degToRad(0.25);
+    }
+    const auto whole = nc::rewriteGcodePass(gcode, 0, pass, machine);
+    ASSERT_TRUE(whole.has_value()) << whole.error().toString();
+
+    std::string joined;
+    std::size_t pieces = 0;
+    const auto streamed =
+        nc::rewriteGcodePass(gcode, 0, pass, machine, {}, [&](std::string_view piece) -> Status {
+            joined += piece;
+            ++pieces;
+            return {};
+        });
+    ASSERT_TRUE(streamed.has_value()) << streamed.error().toString();
+    EXPECT_TRUE(streamed->empty());
+    EXPECT_GE(pieces, 3u);
+    EXPECT_EQ(joined, *whole);
+
+    const auto refused = nc::rewriteGcodePass(gcode, 0, pass, machine, {}, [](std::string_view) {
+        return makeError(ErrorCode::WriteFailed, "the disk is full");
+    });
+    ASSERT_FALSE(refused.has_value());
+    EXPECT_EQ(refused.error().code, ErrorCode::WriteFailed);
+}
+
 } // namespace
 } // namespace bladeaxis::io

@@ -143,8 +143,10 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
     if (programToStdout) {
         spec.outputProgram.clear();
     }
-    // Nothing reads the program after it is written: it goes to its file as the job runs.
+    // Nothing reads the program after it is written, nor the input's text but the rewrite: the
+    // one goes to its file as the job runs, the other is read again from its file.
     spec.stageOutputProgram = true;
+    spec.dropInputText = true;
     std::ostream& summary = programToStdout ? err : out;
     BatchProgress progress(err, options.quiet, options.progress);
     CancelToken cancel;

@@ -1,13 +1,18 @@
 #pragma once
 // Freeing what a container or a struct of containers holds while the object stays alive.
 
+#include <utility>
+
 namespace bladeaxis {
 
-// Leaves `value` empty with its storage returned: a moved-in empty value releases it, where a
-// vector's clear() would keep its capacity.
+// Leaves `value` empty with its storage returned, where a vector's clear() would keep its
+// capacity. The storage is swapped into an empty value that frees it: assigning an empty value
+// would keep a string's buffer (libstdc++ copies a short string's characters into it).
 template <class T>
 void freeStorage(T& value) {
-    value = T{};
+    T empty{};
+    using std::swap;
+    swap(value, empty);
 }
 
 } // namespace bladeaxis

@@ -263,6 +263,15 @@ void returnFront(Container& container, std::size_t end) {
 
 } // namespace
 
+void LoadedProgram::dropTextKeptInItsFile(const FileSnapshot& file) {
+    auto* gcode = std::get_if<nc::GcodeProgram>(&document);
+    if (gcode == nullptr || static_cast<std::size_t>(file.size) != gcode->text.size()) {
+        return;
+    }
+    freeStorage(gcode->text);
+    textFile = file;
+}
+
 void LoadedProgram::releaseRewriteSourcesBefore(std::size_t textEnd, std::size_t blockEnd) {
     auto* gcode = std::get_if<nc::GcodeProgram>(&document);
     if (gcode == nullptr) {
@@ -316,13 +325,13 @@ Result<LoadedProgram> readTextFormat(std::string_view text, std::string_view fil
         if (!table) {
             return std::unexpected(table.error());
         }
-        return LoadedProgram{std::move(*table), options};
+        return LoadedProgram{std::move(*table), options, std::nullopt};
     }
     auto apt = cl::parseApt(text, fileName, options);
     if (!apt) {
         return std::unexpected(apt.error());
     }
-    return LoadedProgram{std::move(*apt), options};
+    return LoadedProgram{std::move(*apt), options, std::nullopt};
 }
 
 // Such a program read and turned into the engine's frame, the one place every read does it.
@@ -372,7 +381,7 @@ Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileN
     }
     ReadOptions resolved = options;
     resolved.angleUnit = program->angleUnit; // the written program is read back in it
-    return LoadedProgram{std::move(*program), resolved};
+    return LoadedProgram{std::move(*program), resolved, std::nullopt};
 }
 
 Result<std::size_t>

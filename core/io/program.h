@@ -3,6 +3,7 @@
 // while keeping the document its writer needs, and write it back with new orientations.
 
 #include "core/base/error.h"
+#include "core/base/forward_text.h"
 #include "core/io/cl/apt_reader.h"
 #include "core/io/nc/gcode_reader.h"
 #include "core/io/read_options.h"
@@ -41,11 +42,15 @@ struct LoadedProgram {
     // The options the program was read with, as resolved by the reader (a detected angle unit
     // is recorded here): the written program is read back with the same ones.
     ReadOptions options;
+    // The file a G-code program's text is read again from by its rewrite, once the text was
+    // dropped (dropTextKeptInItsFile); empty while the text is in memory.
+    std::optional<FileSnapshot> textFile;
 
     const toolpath::Toolpath& path() const;
     // For the checks that normalise the input before scheduling (B noise snapped to its median).
     toolpath::Toolpath& mutablePath();
-    // The program as read, byte for byte; empty once released (releaseRewriteSources).
+    // The program as read, byte for byte; empty once released (releaseRewriteSources) or
+    // dropped (dropTextKeptInItsFile).
     const std::string& text() const;
     ProgramFormat format() const;
     std::optional<NcDialect> dialect() const; // of a G-code family program
@@ -63,6 +68,11 @@ struct LoadedProgram {
     // releases the rewrite sources once the rewrite ends (or fails) may call it; a
     // million-block job then holds up to 85 MB less at the rewrite's end. Other formats: nothing.
     void releaseRewriteSourcesBefore(std::size_t textEnd, std::size_t blockEnd);
+    // Frees a G-code program's text (61 bytes per block on a typical program), which only its
+    // rewrite reads: the rewrite reads it again from `file`, the file it was parsed from, and
+    // refuses a file written since. Other formats keep their text (their rewriters read it
+    // whole); so does a program whose file changed while it was read.
+    void dropTextKeptInItsFile(const FileSnapshot& file);
 };
 
 // Whether the records [first, first + count) are programmed as the tool tip in the workpiece

@@ -97,7 +97,8 @@ Result<std::vector<kinematics::MachineAxes>> passAxes(std::span<const ClRecord> 
     return axes;
 }
 
-// The text is parsed and dropped: the document keeps the one copy the writer needs.
+// The program read and parsed: the document keeps the one copy of the text the writer needs,
+// or with spec.dropInputText none (the rewrite reads the file again).
 Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::MachineModel& machine,
                                     std::optional<double>& toolRadius) {
     if (spec.demo) {
@@ -111,12 +112,25 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
     if (spec.program.empty()) {
         return makeError(ErrorCode::InvalidArgument, "no input program given (or use --demo)");
     }
-    auto content =
-        spec.programText ? Result<std::string>(*spec.programText) : readTextFile(spec.program);
-    if (!content) {
-        return std::unexpected(content.error());
+    if (spec.programText) {
+        return io::readProgramText(*spec.programText, spec.program, machine, spec.read);
     }
-    return io::readProgramText(*content, spec.program, machine, spec.read);
+    // The file as it was before and after its text was read: the same file, unchanged, is the
+    // one a dropped text can be read again from.
+    std::optional<FileSnapshot> before;
+    if (spec.dropInputText) {
+        if (auto snapshot = snapshotOf(spec.program)) {
+            before = std::move(*snapshot);
+        }
+    }
+    // The text read is the parsed program's own: no copy of it stands beside the records.
+    auto program = io::loadProgram(spec.program, machine, spec.read);
+    if (program && before) {
+        if (const auto after = snapshotOf(spec.program); after && after->sameFileAs(*before)) {
+            program->dropTextKeptInItsFile(*after);
+        }
+    }
+    return program;
 }
 
 Status analyse(JobResult& result, const JobSpec& spec) {

@@ -61,22 +61,23 @@ Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInpu
 Result<std::string> rewriteProgram(const RescheduleInput& input, const RescheduleOutcome& outcome) {
     const std::span<const kinematics::MachineAxes> passAxes = *outcome.axes;
     const auto& all = input.program->path().records;
+    io::nc::RewriteStreams streams;
     // Pages given back read as zeros: only a program released after the rewrite may lose them.
-    const io::nc::RewrittenUpTo keepEverything;
-    const io::nc::RewrittenUpTo& rewrittenUpTo =
-        input.rewritten ? input.rewrittenUpTo : keepEverything;
+    if (input.rewritten) {
+        streams.rewrittenUpTo = input.rewrittenUpTo;
+    }
     // A staged program takes the G-code as it is written (keepWritten appends the rest).
-    io::nc::WrittenPiece toStaged;
     if (input.stagedProgram) {
-        toStaged = [&staged = *input.stagedProgram](std::string_view piece) {
+        streams.writtenPiece = [&staged = *input.stagedProgram](std::string_view piece) {
             return staged.append(piece);
         };
     }
+    streams.textFile = input.program->textFile;
     if (const auto* gcode = std::get_if<io::nc::GcodeProgram>(&input.program->document)) {
         if (!io::programsToolTip(*input.program, input.passFirst, input.passCount)
                  .value_or(false)) {
             return io::nc::rewriteGcodePass(*gcode, input.passFirst, passAxes, *input.machine,
-                                            rewrittenUpTo, toStaged);
+                                            streams);
         }
         // Tool-tip programming writes the tip in the workpiece frame, not the machine's X Y Z.
         std::vector<kinematics::MachineAxes> words(passAxes.begin(), passAxes.end());
@@ -86,8 +87,7 @@ Result<std::string> rewriteProgram(const RescheduleInput& input, const Reschedul
             axes.y = tip.y();
             axes.z = tip.z();
         }
-        return io::nc::rewriteGcodePass(*gcode, input.passFirst, words, *input.machine,
-                                        rewrittenUpTo, toStaged);
+        return io::nc::rewriteGcodePass(*gcode, input.passFirst, words, *input.machine, streams);
     }
     std::vector<ClRecord> records = all;
     std::ranges::copy(rescheduledRecords(passOf(input), outcome),

@@ -1,6 +1,7 @@
 #include "core/io/nc/gcode_writer.h"
 
 #include "core/base/file_io.h"
+#include "core/base/forward_text.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
 #include "core/io/nc/detail/axis_motion.h"
@@ -157,16 +158,28 @@ class Rewriter {
         m_combinedFeed = program.programmedFeeds.size() == program.path.records.size();
     }
 
-    Result<std::string> run(const NewAxes& newAxes, const RewrittenUpTo& rewrittenUpTo,
-                            const WrittenPiece& writtenPiece) {
-        const std::string& text = m_program.text;
+    Result<std::string> run(const NewAxes& newAxes, ForwardText& text,
+                            const RewriteStreams& streams) {
         std::string out;
-        out.reserve(writtenPiece ? kPieceBytes + kPieceBytes / 4 : text.size() + text.size() / 16);
+        out.reserve(streams.writtenPiece ? kPieceBytes + kPieceBytes / 4
+                                         : text.size() + text.size() / 16);
         std::size_t cursor = 0;
         std::size_t reported = 0;
         for (std::size_t k = 0; k < newAxes.size(); ++k) {
             const RecordSource& source = m_program.sources[k];
-            const std::string_view line = lineAt(source.lineBegin);
+            // A long run of unchanged blocks is copied on, so that a text read again from its
+            // file needs a window of a few megabytes only.
+            if (source.lineBegin - cursor >= kPieceBytes) {
+                if (Status copied = copyText(text, cursor, source.lineBegin, out, streams);
+                    !copied) {
+                    return std::unexpected(std::move(copied.error()));
+                }
+                cursor = source.lineBegin;
+            }
+            const std::string_view line = text.lineFrom(source.lineBegin);
+            if (text.failure()) {
+                return std::unexpected(*text.failure());
+            }
             const std::array<double, 5> before = m_written;
             std::vector<Edit>& edits = m_edits;
             edits.clear();
@@ -180,25 +193,25 @@ class Rewriter {
             if (edits.empty()) {
                 continue;
             }
-            out.append(text, cursor, source.lineBegin - cursor);
+            out.append(text.range(cursor, source.lineBegin));
             appendEdited(out, line, edits);
             cursor = source.lineBegin + line.size();
             // The blocks of a flat program stand in file order: nothing before the cursor,
             // nor any source up to this block's, is read again.
-            if (rewrittenUpTo && cursor - reported >= kReportEveryBytes) {
-                rewrittenUpTo(cursor, k + 1);
+            text.releaseBefore(cursor);
+            if (streams.rewrittenUpTo && cursor - reported >= kReportEveryBytes) {
+                streams.rewrittenUpTo(cursor, k + 1);
                 reported = cursor;
             }
-            if (writtenPiece && out.size() >= kPieceBytes) {
-                if (Status handed = writtenPiece(out); !handed) {
-                    return std::unexpected(std::move(handed.error()));
-                }
-                out.clear();
+            if (Status handed = handOnPiece(out, streams, kPieceBytes); !handed) {
+                return std::unexpected(std::move(handed.error()));
             }
         }
-        out.append(text, cursor, std::string::npos);
-        if (writtenPiece) {
-            if (Status handed = writtenPiece(out); !handed) {
+        if (Status copied = copyText(text, cursor, text.size(), out, streams); !copied) {
+            return std::unexpected(std::move(copied.error()));
+        }
+        if (streams.writtenPiece) {
+            if (Status handed = handOnPiece(out, streams, 0); !handed) {
                 return std::unexpected(std::move(handed.error()));
             }
             return std::string();
@@ -228,16 +241,34 @@ class Rewriter {
         return isModuloForm(c.form) || (c.axis == m_tableWord && m_modulo);
     }
 
-    std::string_view lineAt(std::uint32_t begin) const {
-        const std::string_view text = m_program.text;
-        const void* newline = std::memchr(text.data() + begin, '\n', text.size() - begin);
-        std::size_t end =
-            newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - text.data())
-                    : text.size();
-        if (end > begin && text[end - 1] == '\r') {
-            --end;
+    // With a piece taker, hands `out` on once it holds at least `least` bytes.
+    static Status handOnPiece(std::string& out, const RewriteStreams& streams, std::size_t least) {
+        if (!streams.writtenPiece || out.size() < least || (least == 0 && out.empty())) {
+            return {};
         }
-        return text.substr(begin, end - begin);
+        if (Status handed = streams.writtenPiece(out); !handed) {
+            return handed;
+        }
+        out.clear();
+        return {};
+    }
+
+    // Copies the unchanged text [begin, end) on, a window at a time.
+    static Status copyText(ForwardText& text, std::size_t begin, std::size_t end, std::string& out,
+                           const RewriteStreams& streams) {
+        while (begin < end) {
+            const std::size_t stop = std::min(end, begin + kPieceBytes);
+            out.append(text.range(begin, stop));
+            if (text.failure()) {
+                return std::unexpected(*text.failure());
+            }
+            text.releaseBefore(stop);
+            begin = stop;
+            if (Status handed = handOnPiece(out, streams, kPieceBytes); !handed) {
+                return handed;
+            }
+        }
+        return {};
     }
 
     bool radians() const { return m_program.angleUnit == AngleUnit::Radians; }
@@ -567,9 +598,7 @@ void Rewriter::appendEdited(std::string& out, std::string_view line, std::vector
 
 Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t passFirst,
                                      std::span<const MachineAxes> passAxes,
-                                     const MachineModel& machine,
-                                     const RewrittenUpTo& rewrittenUpTo,
-                                     const WrittenPiece& writtenPiece) {
+                                     const MachineModel& machine, const RewriteStreams& streams) {
     const std::size_t records = program.path.records.size();
     if (program.sources.size() != records) {
         return makeError(ErrorCode::InvalidArgument,
@@ -586,7 +615,15 @@ Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t pa
     if (Status valid = validateAxes(program, newAxes, machine); !valid) {
         return std::unexpected(std::move(valid.error()));
     }
-    return Rewriter(program, machine).run(newAxes, rewrittenUpTo, writtenPiece);
+    if (streams.textFile) {
+        auto text = ForwardText::reopen(*streams.textFile);
+        if (!text) {
+            return std::unexpected(text.error());
+        }
+        return Rewriter(program, machine).run(newAxes, *text, streams);
+    }
+    ForwardText text(program.text);
+    return Rewriter(program, machine).run(newAxes, text, streams);
 }
 
 Result<std::string> rewriteGcode(const GcodeProgram& program, std::span<const MachineAxes> newAxes,

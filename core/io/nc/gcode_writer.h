@@ -14,6 +14,7 @@
 // naming the block, and nothing is returned.
 
 #include "core/base/error.h"
+#include "core/base/forward_text.h"
 #include "core/io/nc/gcode_program.h"
 #include "core/kinematics/machine_model.h"
 
@@ -39,15 +40,23 @@ using RewrittenUpTo = std::function<void(std::size_t textEnd, std::size_t blockE
 // file it stages); an error stops the rewrite with it.
 using WrittenPiece = std::function<Status(std::string_view piece)>;
 
+// How a rewrite reads and writes when the text is not all in memory.
+struct RewriteStreams {
+    RewrittenUpTo rewrittenUpTo;
+    // Given, every byte of the written text goes there and the rewrite returns an empty text:
+    // the written program is never whole in memory.
+    WrittenPiece writtenPiece;
+    // Given, the program's text is read again from this file (refused when it is no longer the
+    // file that was parsed) instead of from program.text, which may then be empty.
+    std::optional<FileSnapshot> textFile;
+};
+
 // rewriteGcode of one pass: records [passFirst, passFirst + passAxes.size()) get passAxes, every
-// other record is written with the axes it was read with (its text is unchanged). With
-// `writtenPiece` every byte of the text goes there and the result is empty: the written program
-// is never whole in memory.
+// other record is written with the axes it was read with (its text is unchanged).
 Result<std::string> rewriteGcodePass(const GcodeProgram& program, std::size_t passFirst,
                                      std::span<const kinematics::MachineAxes> passAxes,
                                      const kinematics::MachineModel& machine,
-                                     const RewrittenUpTo& rewrittenUpTo = {},
-                                     const WrittenPiece& writtenPiece = {});
+                                     const RewriteStreams& streams = {});
 
 // rewriteGcode, then an atomic write that refuses to overwrite the program's source file.
 Status writeGcodeFile(const std::filesystem::path& out, const GcodeProgram& program,

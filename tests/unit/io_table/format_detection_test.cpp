@@ -1,6 +1,7 @@
 // Programs are recognised by content; the extension only breaks ties and a contradicting one is
 // reported. Text in no known format and binary files get one error naming what was expected.
 
+#include "core/base/forward_text.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
 #include "core/io/nc/gcode_writer.h"
@@ -10,8 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -142,6 +147,25 @@ std::string longProgram(std::size_t lines) {
     return text + "M30\n%\n";
 }
 
+// The ways a rewrite is told to stream, one at a time.
+nc::RewriteStreams reportingTo(nc::RewrittenUpTo rewrittenUpTo) {
+    nc::RewriteStreams streams;
+    streams.rewrittenUpTo = std::move(rewrittenUpTo);
+    return streams;
+}
+nc::RewriteStreams inPieces(nc::WrittenPiece writtenPiece,
+                            std::optional<FileSnapshot> textFile = std::nullopt) {
+    nc::RewriteStreams streams;
+    streams.writtenPiece = std::move(writtenPiece);
+    streams.textFile = std::move(textFile);
+    return streams;
+}
+nc::RewriteStreams fromFile(std::optional<FileSnapshot> textFile) {
+    nc::RewriteStreams streams;
+    streams.textFile = std::move(textFile);
+    return streams;
+}
+
 // A job gives back the input's text and block sources as the rewrite reads past them: the
 // rewrite must never read them again, so the written text is the one a rewrite that is told
 // nothing gives, and what it reports only grows and stays inside the program.
@@ -166,10 +190,10 @@ TEST(ReleasedRewriteSources, AGcodeRewriteThatGivesBackWhatItReadWritesTheSameTe
     std::vector<std::pair<std::size_t, std::size_t>> reports;
     const auto givenBack =
         nc::rewriteGcodePass(std::get<nc::GcodeProgram>(consumed->document), 0, pass, machine,
-                             [&](std::size_t textEnd, std::size_t blockEnd) {
+                             reportingTo([&](std::size_t textEnd, std::size_t blockEnd) {
                                  reports.emplace_back(textEnd, blockEnd);
                                  consumed->releaseRewriteSourcesBefore(textEnd, blockEnd);
-                             });
+                             }));
     ASSERT_TRUE(givenBack.has_value()) << givenBack.error().toString();
     EXPECT_EQ(*givenBack, *told);
     ASSERT_GE(reports.size(), 2u);
@@ -206,22 +230,98 @@ TEST(RewriteInPieces, TheWrittenPiecesAreTheTextARewriteIntoMemoryGives) {
 
     std::string joined;
     std::size_t pieces = 0;
-    const auto streamed =
-        nc::rewriteGcodePass(gcode, 0, pass, machine, {}, [&](std::string_view piece) -> Status {
-            joined += piece;
-            ++pieces;
-            return {};
-        });
+    const auto streamed = nc::rewriteGcodePass(gcode, 0, pass, machine,
+                                               inPieces([&](std::string_view piece) -> Status {
+                                                   joined += piece;
+                                                   ++pieces;
+                                                   return {};
+                                               }));
     ASSERT_TRUE(streamed.has_value()) << streamed.error().toString();
     EXPECT_TRUE(streamed->empty());
     EXPECT_GE(pieces, 3u);
     EXPECT_EQ(joined, *whole);
 
-    const auto refused = nc::rewriteGcodePass(gcode, 0, pass, machine, {}, [](std::string_view) {
-        return makeError(ErrorCode::WriteFailed, "the disk is full");
-    });
+    const auto refused =
+        nc::rewriteGcodePass(gcode, 0, pass, machine, inPieces([](std::string_view) {
+                                 return makeError(ErrorCode::WriteFailed, "the disk is full");
+                             }));
     ASSERT_FALSE(refused.has_value());
     EXPECT_EQ(refused.error().code, ErrorCode::WriteFailed);
+}
+
+// The batch front end drops the input's text once parsed and has the rewrite read it again from
+// its file: the written text is the one a rewrite from memory gives, and a file written since
+// it was read is refused rather than rewritten.
+class RewriteFromTheFile : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        m_file = std::filesystem::temp_directory_path() /
+                 ("bladeaxis_reread_" + std::to_string(::getpid()) + ".nc");
+        m_text = longProgram(200'000); // several windows of the file
+        std::ofstream(m_file, std::ios::binary) << m_text;
+    }
+    void TearDown() override { std::filesystem::remove(m_file); }
+
+    std::filesystem::path m_file;
+    std::string m_text;
+};
+
+TEST_F(RewriteFromTheFile, GivesTheTextARewriteFromMemoryGives) {
+    const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    auto program = io::loadProgram(m_file, machine, nc::test::inDegrees());
+    ASSERT_TRUE(program.has_value()) << program.error().toString();
+    std::vector<kinematics::MachineAxes> pass;
+    for (const toolpath::ClRecord& record : program->path().records) {
+        pass.push_back(*record.axes);
+        pass.back().a += units::degToRad(0.25);
+    }
+    const auto& gcode = std::get<nc::GcodeProgram>(program->document);
+    const auto fromMemory = nc::rewriteGcodePass(gcode, 0, pass, machine);
+    ASSERT_TRUE(fromMemory.has_value()) << fromMemory.error().toString();
+
+    const auto snapshot = snapshotOf(m_file);
+    ASSERT_TRUE(snapshot.has_value());
+    program->dropTextKeptInItsFile(*snapshot);
+    EXPECT_TRUE(program->text().empty());
+    ASSERT_TRUE(program->textFile.has_value());
+    const auto rereadText =
+        nc::rewriteGcodePass(gcode, 0, pass, machine, fromFile(program->textFile));
+    ASSERT_TRUE(rereadText.has_value()) << rereadText.error().toString();
+    EXPECT_EQ(*rereadText, *fromMemory);
+
+    std::string joined;
+    const auto piecewise = nc::rewriteGcodePass(gcode, 0, pass, machine,
+                                                inPieces(
+                                                    [&](std::string_view piece) -> Status {
+                                                        joined += piece;
+                                                        return {};
+                                                    },
+                                                    program->textFile));
+    ASSERT_TRUE(piecewise.has_value()) << piecewise.error().toString();
+    EXPECT_EQ(joined, *fromMemory);
+}
+
+TEST_F(RewriteFromTheFile, RefusesAFileWrittenAgainSinceItWasRead) {
+    const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
+    auto program = io::loadProgram(m_file, machine, nc::test::inDegrees());
+    ASSERT_TRUE(program.has_value()) << program.error().toString();
+    program->dropTextKeptInItsFile(*snapshotOf(m_file));
+    std::vector<kinematics::MachineAxes> pass;
+    for (const toolpath::ClRecord& record : program->path().records) {
+        pass.push_back(*record.axes);
+    }
+    // Another post of the same length: only the modification time tells it apart.
+    std::string other = m_text;
+    other[other.find("X")] = 'Y';
+    std::filesystem::last_write_time(m_file, std::filesystem::last_write_time(m_file) +
+                                                 std::chrono::seconds(1));
+    std::ofstream(m_file, std::ios::binary | std::ios::in | std::ios::out) << other;
+    const auto refused = nc::rewriteGcodePass(std::get<nc::GcodeProgram>(program->document), 0,
+                                              pass, machine, fromFile(program->textFile));
+    ASSERT_FALSE(refused.has_value());
+    EXPECT_EQ(refused.error().code, ErrorCode::FileUnreadable);
+    EXPECT_NE(refused.error().toString().find("changed while the job ran"), std::string::npos)
+        << refused.error().toString();
 }
 
 } // namespace

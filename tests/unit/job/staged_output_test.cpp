@@ -75,6 +75,18 @@ TEST_F(StagedOutput, AStagedProgramIsPutInPlaceWithTheBytesOfAProgramKeptInMemor
     EXPECT_EQ(filesInFolder(), (std::vector<std::string>{"blade.nc", "rescheduled.nc"}));
 }
 
+TEST_F(StagedOutput, AnInputTextDroppedOnceParsedIsReadAgainForTheSameProgram) {
+    const auto kept = run(m_spec);
+    ASSERT_TRUE(kept.has_value()) << kept.error().toString();
+    m_spec.dropInputText = true;
+    m_spec.stageOutputProgram = true;
+    const auto dropped = run(m_spec);
+    ASSERT_TRUE(dropped.has_value()) << dropped.error().toString();
+    EXPECT_TRUE(dropped->programText().empty());
+    EXPECT_TRUE(dropped->program.textFile.has_value());
+    EXPECT_EQ(*dropped->rescheduled->writtenText(), kept->rescheduled->programText);
+}
+
 TEST_F(StagedOutput, AJobWhoseOutputsAreNotWrittenLeavesNothingBehind) {
     m_spec.stageOutputProgram = true;
     {

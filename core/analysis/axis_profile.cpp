@@ -193,13 +193,17 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
         knots = motionKnots(profile.pathParameter, axes, profile.sampleRecord);
         profile.mergedShortChords = n - knots.size();
     }
-    // Each axis's positions are gathered for its own differentiation and dropped after it, but
-    // A's: without merged samples they are the whole program's A, which the reversal audit reads.
-    std::vector<double> sampledA;
+    // The reversals are audited over every record's A (without merged samples those are the
+    // samples' A) before the derivatives, so that no axis's positions outlive its own fit.
+    {
+        std::vector<double> a(axes.size());
+        std::transform(axes.begin(), axes.end(), a.begin(),
+                       [](const kinematics::MachineAxes& m) { return m.a; });
+        profile.aReversals = auditReversals(a);
+    }
+    // Each axis's positions are gathered for its own differentiation and dropped after it.
     const PositionsOf positionsOf = [&](std::size_t k, std::vector<double>& scratch) {
-        const kinematics::AxisId id = kinematics::kAllAxes[k];
-        return sampledAxis(axes, profile.sampleRecord, id,
-                           id == kinematics::AxisId::A ? sampledA : scratch);
+        return sampledAxis(axes, profile.sampleRecord, kinematics::kAllAxes[k], scratch);
     };
     std::vector<Result<AxisSeries>> series = differentiateAxes(
         profile.pathParameter, kinematics::kAllAxes.size(), positionsOf, profile.feed,
@@ -212,14 +216,6 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
             return std::unexpected(std::move(error));
         }
         profile.axes[static_cast<int>(id)] = std::move(*axis);
-    }
-    if (profile.mergedDuplicates == 0) {
-        profile.aReversals = auditReversals(sampledA);
-    } else {
-        std::vector<double> a(axes.size());
-        std::transform(axes.begin(), axes.end(), a.begin(),
-                       [](const kinematics::MachineAxes& m) { return m.a; });
-        profile.aReversals = auditReversals(a);
     }
     return profile;
 }

@@ -196,10 +196,10 @@ Status refuseInputs(const fs::path& path, std::span<const fs::path> protectedInp
 }
 
 // The permission bits a replaced file keeps, or a new file's under the umask; nothing when the
-// target is neither a regular file nor a new name.
-std::optional<mode_t> stagedMode(const fs::path& target) {
+// path (resolved by the kernel, through every link) is neither a regular file nor a new name.
+std::optional<mode_t> stagedMode(const fs::path& path) {
     struct stat existing {};
-    if (::stat(target.c_str(), &existing) != 0) {
+    if (::stat(path.c_str(), &existing) != 0) {
         if (errno != ENOENT) {
             return std::nullopt;
         }
@@ -231,9 +231,10 @@ Status writeFileAtomically(const fs::path& path, std::string_view content,
     if (auto refused = refuseInputs(path, protectedInputs); !refused) {
         return refused;
     }
-    const fs::path target = followLinks(path);
+    // What the path names as the kernel resolves it: /dev/stdout on a pipe is a link to
+    // "pipe:[N]", which names no file when read as a path.
     struct stat existing {};
-    if (::stat(target.c_str(), &existing) != 0) {
+    if (::stat(path.c_str(), &existing) != 0) {
         if (errno != ENOENT) {
             return failure(path, "cannot write here: " + reason());
         }
@@ -243,7 +244,7 @@ Status writeFileAtomically(const fs::path& path, std::string_view content,
         return replaceRegularFile(path, content);
     }
     if (S_ISCHR(existing.st_mode) || S_ISFIFO(existing.st_mode)) {
-        return writeDirectly(target, content);
+        return writeDirectly(path, content);
     }
     return failure(path, S_ISDIR(existing.st_mode)
                              ? "is a folder, expected a file name"
@@ -276,9 +277,8 @@ StagedFile& StagedFile::operator=(StagedFile&&) noexcept = default;
 StagedFile::~StagedFile() = default;
 
 bool StagedFile::isStageable(const fs::path& path) {
-    const fs::path target = followLinks(path);
     std::error_code ec;
-    return fs::is_directory(folderOf(target), ec) && stagedMode(target).has_value();
+    return fs::is_directory(folderOf(followLinks(path)), ec) && stagedMode(path).has_value();
 }
 
 Result<StagedFile> StagedFile::open(const fs::path& path,
@@ -288,10 +288,10 @@ Result<StagedFile> StagedFile::open(const fs::path& path,
     }
     const fs::path target = followLinks(path);
     struct stat existing {};
-    if (::stat(target.c_str(), &existing) != 0 && errno != ENOENT) {
+    if (::stat(path.c_str(), &existing) != 0 && errno != ENOENT) {
         return std::unexpected(failure(path, "cannot write here: " + reason()).error());
     }
-    const std::optional<mode_t> mode = stagedMode(target);
+    const std::optional<mode_t> mode = stagedMode(path);
     if (!mode) {
         return std::unexpected(
             failure(path, "is neither a regular file nor a new name: a folder, a pipe or a "

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 namespace bladeaxis {
 namespace {
@@ -60,6 +62,23 @@ TEST_F(FileIo, FailedWriteLeavesNoPartialOrTemporaryFile) {
     const auto status = writeFileAtomically(m_dir / "no_such_dir" / "out.nc", "x");
     ASSERT_FALSE(status.has_value());
     EXPECT_TRUE(fs::is_empty(m_dir));
+}
+
+// `-o /dev/stdout` in a pipe: /dev/stdout links to /proc/self/fd/1, whose link text
+// ("pipe:[N]") names no file; the kernel resolves it to the pipe, which is written directly.
+TEST_F(FileIo, APipeReachedThroughAProcessFdLinkIsWrittenDirectly) {
+    int ends[2];
+    ASSERT_EQ(::pipe(ends), 0);
+    const fs::path path = "/proc/self/fd/" + std::to_string(ends[1]);
+    EXPECT_FALSE(StagedFile::isStageable(path));
+    const auto status = writeFileAtomically(path, "G1 X1.000\nM30\n");
+    ::close(ends[1]);
+    char buffer[64] = {};
+    const ssize_t got = ::read(ends[0], buffer, sizeof buffer);
+    ::close(ends[0]);
+    ASSERT_TRUE(status.has_value()) << status.error().toString();
+    EXPECT_EQ(std::string(buffer, static_cast<std::size_t>(std::max<ssize_t>(got, 0))),
+              "G1 X1.000\nM30\n");
 }
 
 } // namespace

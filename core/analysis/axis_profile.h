@@ -135,7 +135,7 @@ struct AxisProfile {
 // The tool path an analysis reads: a program's records, or new tool poses over them. A
 // re-scheduled pass keeps each record's ball centre, feed and source line and has new tool
 // axes (and so new tips); when the written program times its blocks anew, its feeds too.
-// Lending the new poses this way spares a copy of every record (112 bytes each) for the
+// Lending the new poses this way spares a copy of every record (104 bytes each) for the
 // analysis of the new motion.
 struct PathSamples {
     std::span<const toolpath::ClRecord> records;

@@ -1,5 +1,7 @@
 #include "core/base/file_io.h"
 
+#include "core/base/memory_policy.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -393,14 +395,14 @@ MappedText::~MappedText() {
 }
 
 void MappedText::releaseBefore(std::size_t offset) const {
-    static const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
-    const std::size_t end = std::min(offset, m_size) / page * page;
+    const std::size_t end = std::min(offset, m_size);
     if (m_data == nullptr || end <= m_released) {
         return;
     }
-    // The mapping starts on a page; a shared file mapping reads dropped pages back from the file.
-    ::madvise(const_cast<char*>(m_data) + m_released, end - m_released, MADV_DONTNEED);
-    m_released = end;
+    // The mapping starts on a page and what was given back ends on one, so the pages from
+    // m_released on are whole.
+    m_released +=
+        returnWholePagesToTheSystem(const_cast<char*>(m_data) + m_released, end - m_released);
 }
 
 } // namespace bladeaxis

@@ -80,17 +80,20 @@ void returnFreedHeapToTheSystem() {
 #endif
 }
 
-void returnWholePagesToTheSystem(void* begin, std::size_t bytes) {
+std::size_t returnWholePagesToTheSystem(void* begin, std::size_t bytes) {
 #if defined(__linux__)
     const PageRange pages = wholePagesIn(begin, bytes);
-    if (pages.end > pages.first) {
-        // Advice on memory this process owns cannot fail but for a kernel without it; the
-        // pages then stay resident until the block is freed, as without the call.
-        ::madvise(reinterpret_cast<void*>(pages.first), pages.end - pages.first, MADV_DONTNEED);
+    if (pages.end <= pages.first) {
+        return 0;
     }
+    // Advice on memory this process owns cannot fail but for a kernel without it; the pages
+    // then stay resident until the block is freed, as without the call.
+    ::madvise(reinterpret_cast<void*>(pages.first), pages.end - pages.first, MADV_DONTNEED);
+    return pages.end - reinterpret_cast<std::uintptr_t>(begin);
 #else
     (void)begin;
     (void)bytes;
+    return 0;
 #endif
 }
 

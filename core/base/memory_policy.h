@@ -40,8 +40,9 @@ void returnFreedHeapToTheSystem();
 // Gives the whole pages inside [begin, begin + bytes) of a block back to the system now, while
 // the block stays allocated: for the front of a large array its owner has read for the last
 // time but frees only as a whole, later. Those pages read as zeros afterwards (Linux
-// MADV_DONTNEED on private memory); the partial pages at either end keep their bytes.
-// Elsewhere than Linux this does nothing.
-void returnWholePagesToTheSystem(void* begin, std::size_t bytes);
+// MADV_DONTNEED on private memory; a shared file mapping reads them again from its file); the
+// partial pages at either end keep their bytes. Returns how far from `begin` the pages given
+// back reach (0 when none, and elsewhere than Linux, where this does nothing).
+std::size_t returnWholePagesToTheSystem(void* begin, std::size_t bytes);
 
 } // namespace bladeaxis

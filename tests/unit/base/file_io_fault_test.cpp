@@ -3,6 +3,7 @@
 // the destination holds the old file or the whole new one, never a part of it.
 
 #include "core/base/file_io.h"
+#include "tests/support/scratch_folder.h"
 
 #include <gtest/gtest.h>
 
@@ -24,15 +25,6 @@ namespace fs = std::filesystem;
 
 class FileIoFaults : public ::testing::Test {
   protected:
-    void SetUp() override {
-        m_dir = fs::temp_directory_path() /
-                ("bladeaxis_file_faults_" +
-                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
-    }
-    void TearDown() override { fs::remove_all(m_dir); }
-
     void put(const fs::path& path, const std::string& content) const {
         std::ofstream(path, std::ios::binary) << content;
     }
@@ -42,7 +34,8 @@ class FileIoFaults : public ::testing::Test {
             std::distance(fs::directory_iterator(m_dir), fs::directory_iterator()));
     }
 
-    fs::path m_dir;
+    test::ScratchFolder m_scratch{"bladeaxis_file_faults_"};
+    const fs::path& m_dir = m_scratch.path();
 };
 
 TEST_F(FileIoFaults, ASymbolicLinkIsFollowedAndStaysALink) {

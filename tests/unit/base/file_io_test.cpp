@@ -1,4 +1,5 @@
 #include "core/base/file_io.h"
+#include "tests/support/scratch_folder.h"
 
 #include <gtest/gtest.h>
 
@@ -14,16 +15,8 @@ namespace fs = std::filesystem;
 
 class FileIo : public ::testing::Test {
   protected:
-    void SetUp() override {
-        m_dir = fs::temp_directory_path() /
-                ("bladeaxis_file_io_" +
-                 std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
-    }
-    void TearDown() override { fs::remove_all(m_dir); }
-    fs::path m_dir;
+    test::ScratchFolder m_scratch{"bladeaxis_file_io_"};
+    const fs::path& m_dir = m_scratch.path();
 };
 
 TEST_F(FileIo, WrittenContentReadsBackIdentically) {

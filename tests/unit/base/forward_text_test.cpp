@@ -1,4 +1,5 @@
 #include "core/base/forward_text.h"
+#include "tests/support/scratch_folder.h"
 
 #include <gtest/gtest.h>
 
@@ -15,9 +16,6 @@ namespace fs = std::filesystem;
 class ForwardTexts : public ::testing::Test {
   protected:
     void SetUp() override {
-        m_file = fs::temp_directory_path() /
-                 ("bladeaxis_forward_" + std::to_string(::getpid()) +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".nc");
         // Lines ending in CR LF, one of them far longer than a first look at a line, spread
         // over several of the file's windows.
         for (int i = 0; m_text.size() < (std::size_t{9} << 20); ++i) {
@@ -29,8 +27,6 @@ class ForwardTexts : public ::testing::Test {
         }
         std::ofstream(m_file, std::ios::binary) << m_text;
     }
-    void TearDown() override { fs::remove(m_file); }
-
     ForwardText reopened() const {
         auto snapshot = snapshotOf(m_file);
         EXPECT_TRUE(snapshot.has_value());
@@ -39,7 +35,8 @@ class ForwardTexts : public ::testing::Test {
         return std::move(*text);
     }
 
-    fs::path m_file;
+    test::ScratchFolder m_scratch{"bladeaxis_forward_"};
+    const fs::path m_file = m_scratch.path() / "program.nc";
     std::string m_text;
 };
 

@@ -1,4 +1,5 @@
 #include "core/base/file_io.h"
+#include "tests/support/scratch_folder.h"
 
 #include <gtest/gtest.h>
 
@@ -18,21 +19,13 @@ namespace fs = std::filesystem;
 
 class StagedFiles : public ::testing::Test {
   protected:
-    void SetUp() override {
-        m_dir = fs::temp_directory_path() /
-                ("bladeaxis_staged_" + std::to_string(::getpid()) +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
-    }
-    void TearDown() override { fs::remove_all(m_dir); }
-
     std::size_t entriesInFolder() const {
         return static_cast<std::size_t>(
             std::distance(fs::directory_iterator(m_dir), fs::directory_iterator()));
     }
 
-    fs::path m_dir;
+    test::ScratchFolder m_scratch{"bladeaxis_staged_"};
+    const fs::path& m_dir = m_scratch.path();
 };
 
 // Kilobytes of a mapping resident in this process, from /proc/self/smaps (mincore would tell

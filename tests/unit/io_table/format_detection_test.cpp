@@ -147,6 +147,16 @@ std::string longProgram(std::size_t lines) {
     return text + "M30\n%\n";
 }
 
+// Every record's programmed axes with A turned by `degrees`: the new axes of a rewrite.
+std::vector<kinematics::MachineAxes> axesTurnedBy(const LoadedProgram& program, double degrees) {
+    std::vector<kinematics::MachineAxes> axes;
+    for (const toolpath::ClRecord& record : program.path().records) {
+        axes.push_back(*record.axes);
+        axes.back().a += units::degToRad(degrees);
+    }
+    return axes;
+}
+
 // The ways a rewrite is told to stream, one at a time.
 nc::RewriteStreams reportingTo(nc::RewrittenUpTo rewrittenUpTo) {
     nc::RewriteStreams streams;
@@ -176,11 +186,7 @@ TEST(ReleasedRewriteSources, AGcodeRewriteThatGivesBackWhatItReadWritesTheSameTe
         io::parseProgram(text, "long.nc", ProgramFormat::Gcode, machine, nc::test::inDegrees());
     ASSERT_TRUE(reference.has_value()) << reference.error().toString();
     const auto& referenceGcode = std::get<nc::GcodeProgram>(reference->document);
-    std::vector<kinematics::MachineAxes> pass;
-    for (const toolpath::ClRecord& record : reference->path().records) {
-        pass.push_back(*record.axes);
-        pass.back().a += units::degToRad(0.5); // every block's A word changes
-    }
+    const auto pass = axesTurnedBy(*reference, 0.5); // every block's A word changes
     const auto told = nc::rewriteGcodePass(referenceGcode, 0, pass, machine);
     ASSERT_TRUE(told.has_value()) << told.error().toString();
 
@@ -220,11 +226,7 @@ TEST(RewriteInPieces, TheWrittenPiecesAreTheTextARewriteIntoMemoryGives) {
         io::parseProgram(text, "long.nc", ProgramFormat::Gcode, machine, nc::test::inDegrees());
     ASSERT_TRUE(program.has_value()) << program.error().toString();
     const auto& gcode = std::get<nc::GcodeProgram>(program->document);
-    std::vector<kinematics::MachineAxes> pass;
-    for (const toolpath::ClRecord& record : program->path().records) {
-        pass.push_back(*record.axes);
-        pass.back().a += units::degToRad(0.25);
-    }
+    const auto pass = axesTurnedBy(*program, 0.25);
     const auto whole = nc::rewriteGcodePass(gcode, 0, pass, machine);
     ASSERT_TRUE(whole.has_value()) << whole.error().toString();
 
@@ -270,11 +272,7 @@ TEST_F(RewriteFromTheFile, GivesTheTextARewriteFromMemoryGives) {
     const kinematics::MachineModel machine = kinematics::defaultBladeMachine();
     auto program = io::loadProgram(m_file, machine, nc::test::inDegrees());
     ASSERT_TRUE(program.has_value()) << program.error().toString();
-    std::vector<kinematics::MachineAxes> pass;
-    for (const toolpath::ClRecord& record : program->path().records) {
-        pass.push_back(*record.axes);
-        pass.back().a += units::degToRad(0.25);
-    }
+    const auto pass = axesTurnedBy(*program, 0.25);
     const auto& gcode = std::get<nc::GcodeProgram>(program->document);
     const auto fromMemory = nc::rewriteGcodePass(gcode, 0, pass, machine);
     ASSERT_TRUE(fromMemory.has_value()) << fromMemory.error().toString();
@@ -306,10 +304,7 @@ TEST_F(RewriteFromTheFile, RefusesAFileWrittenAgainSinceItWasRead) {
     auto program = io::loadProgram(m_file, machine, nc::test::inDegrees());
     ASSERT_TRUE(program.has_value()) << program.error().toString();
     program->dropTextKeptInItsFile(*snapshotOf(m_file));
-    std::vector<kinematics::MachineAxes> pass;
-    for (const toolpath::ClRecord& record : program->path().records) {
-        pass.push_back(*record.axes);
-    }
+    const auto pass = axesTurnedBy(*program, 0.0);
     // Another post of the same length: only the modification time tells it apart.
     std::string other = m_text;
     other[other.find("X")] = 'Y';

@@ -5,6 +5,7 @@
 #include "core/base/file_io.h"
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
+#include "tests/support/scratch_folder.h"
 
 #include <gtest/gtest.h>
 
@@ -23,11 +24,6 @@ namespace fs = std::filesystem;
 class StagedOutput : public ::testing::Test {
   protected:
     void SetUp() override {
-        m_dir = fs::temp_directory_path() /
-                ("bladeaxis_staged_job_" + std::to_string(::getpid()) +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
         const auto demo = demoProgram(kinematics::defaultBladeMachine());
         ASSERT_TRUE(demo.has_value()) << demo.error().toString();
         std::ofstream(m_dir / "blade.nc", std::ios::binary) << demo->text;
@@ -35,8 +31,6 @@ class StagedOutput : public ::testing::Test {
         m_spec.toolRadius = demo->toolRadius;
         m_spec.outputProgram = m_dir / "rescheduled.nc";
     }
-    void TearDown() override { fs::remove_all(m_dir); }
-
     std::vector<std::string> filesInFolder() const {
         std::vector<std::string> names;
         for (const auto& entry : fs::directory_iterator(m_dir)) {
@@ -46,7 +40,8 @@ class StagedOutput : public ::testing::Test {
         return names;
     }
 
-    fs::path m_dir;
+    test::ScratchFolder m_scratch{"bladeaxis_staged_job_"};
+    const fs::path& m_dir = m_scratch.path();
     JobSpec m_spec;
 };
 

@@ -4,6 +4,7 @@
 #include "core/analysis/time_optimal.h"
 #include "core/analysis/time_optimal_sweep.h"
 #include "core/base/file_io.h"
+#include "core/base/memory_policy.h"
 #include "core/base/number_io.h"
 #include "core/blade/presets.h"
 #include "core/cad/blade_surface.h"
@@ -243,6 +244,12 @@ bool checksCad(const JobSpec& spec) {
     return !spec.cad.file.empty() || spec.demo;
 }
 
+// Whether the job frees its layers' curves once checked: when asked, and when none of its own
+// later readers (the comparison, the CAD check, layers.csv) needs them.
+bool releasesLayerSamples(const JobSpec& spec) {
+    return spec.dropLayerSamples && !spec.compare && !checksCad(spec) && spec.outputDir.empty();
+}
+
 // The check's spec with the tool it will use, validated before any scheduling: a tool the check
 // cannot model would otherwise stop the job only after the whole schedule was computed.
 Result<CadCheckSpec> cadCheckSpec(const JobSpec& spec, std::optional<double> toolRadius) {
@@ -442,16 +449,29 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
         }
         input.stagedProgram = std::make_shared<StagedFile>(std::move(*staged));
     }
+    // The input's orientation is checked against the channel as soon as the schedule is made,
+    // the last reading of the layers' curves in a job that releases them; its refusal still
+    // comes after the re-scheduling's own.
+    Status orientationInChannel;
+    const bool releaseSamples = releasesLayerSamples(spec);
+    input.scheduled = [&](scheduling::ScheduleResult& schedule) {
+        const std::span<const ClRecord> pass =
+            std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
+        orientationInChannel =
+            checkOrientationInChannel(schedule, pass, result.program.path().sourceFile, spec.check,
+                                      rotaryLetters(result.machine));
+        if (releaseSamples) {
+            scheduling::releaseLayerSamples(schedule);
+            // A layer's curves are small blocks the C library would keep for later.
+            returnFreedHeapToTheSystem();
+        }
+    };
     auto outcome = reschedule(input, cancel);
     if (!outcome) {
         return std::unexpected(outcome.error());
     }
     result.rescheduled = std::move(*outcome);
-    const std::span<const ClRecord> pass =
-        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
-    return checkOrientationInChannel(result.rescheduled->schedule, pass,
-                                     result.program.path().sourceFile, spec.check,
-                                     rotaryLetters(result.machine));
+    return orientationInChannel;
 }
 
 } // namespace

@@ -55,6 +55,12 @@ struct JobSpec {
     // front end, where nothing else reads the text. About 61 bytes per block less while the
     // program is scheduled. The result's programText is then empty.
     bool dropInputText = false;
+    // Free the per-sample curves of the schedule's layers (scheduling::releaseLayerSamples)
+    // once the job has checked the input's orientation against them, before the new motion is
+    // made and analysed, where a job's memory peaks (72 bytes per record): the batch front end,
+    // where nothing else reads them. The job keeps them all the same when it compares methods,
+    // checks CAD or writes layers.csv (outputDir), which read them.
+    bool dropLayerSamples = false;
     std::filesystem::path outputCl; // the re-scheduled toolpath as CL data (APT); empty: none
     CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)
     std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none

@@ -459,6 +459,14 @@ std::vector<fs::path> protectedInputsOf(const JobSpec& spec) {
 }
 
 Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
+    // Refused before anything is written: a job that ran without an output folder (and so
+    // released its layers' curves) given one only now.
+    if (!spec.outputDir.empty() && result.rescheduled &&
+        result.rescheduled->schedule.layerSamplesReleased) {
+        return makeError(ErrorCode::Internal,
+                         "layers.csv needs the layers' curves, which the job released: run it "
+                         "with the output folder it writes");
+    }
     const std::vector<fs::path> inputs = protectedInputsOf(spec);
     if (auto status = createOutputFolder(spec); !status) {
         return status;

@@ -378,6 +378,9 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     }
     RescheduleOutcome outcome = outcomeFrom(std::move(*schedule));
     outcome.toolRadius = input.toolRadius;
+    if (input.scheduled) {
+        input.scheduled(outcome.schedule);
+    }
     outcome.stageSeconds.schedule = clock.lap();
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());

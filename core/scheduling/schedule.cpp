@@ -25,6 +25,18 @@ bool isFlagged(const LayerResult& layer) {
                                [](LayerStatus status) { return status != LayerStatus::Ok; });
 }
 
+void releaseLayerSamples(ScheduleResult& result) {
+    for (LayerResult& layer : result.layers) {
+        freeStorage(layer.inputIndex);
+        for (std::vector<double>* curve :
+             {&layer.thetaOriginal, &layer.thetaMin, &layer.thetaMax, &layer.lo, &layer.hi,
+              &layer.theta, &layer.dTheta, &layer.ddTheta}) {
+            freeStorage(*curve);
+        }
+    }
+    result.layerSamplesReleased = true;
+}
+
 const char* toString(LayerStatus status) {
     switch (status) {
     case LayerStatus::Ok:

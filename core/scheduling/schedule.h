@@ -73,7 +73,17 @@ struct ScheduleResult {
     ReconstructionCheck check;           // §6.5 on the output
     std::size_t originalReversals = 0;   // A reversals of the input orientation (§6.4)
     std::vector<std::string> warnings;
+    bool layerSamplesReleased = false; // see releaseLayerSamples
 };
+
+// Frees what every layer holds per sample but its arc lengths s (a layer's sample count and
+// length): the input indices, the original and channel angles, the hull and the final theta with
+// its derivatives, 72 bytes per input sample. For a caller that has read them for the last time
+// (a batch job once it has checked the input's orientation against the channel): the new tool
+// axes, key points, corners, flags and every per-layer figure stay, and layerSamplesReleased
+// says so. Nothing that reads the curves (absoluteAngles, layers.csv, the comparison, the S-theta
+// editor) may be given the result afterwards.
+void releaseLayerSamples(ScheduleResult& result);
 
 enum class Orientation { Rescheduled, Original };
 

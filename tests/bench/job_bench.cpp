@@ -153,6 +153,7 @@ void BM_FullJobMillionBlocks(benchmark::State& state) {
     spec.outputProgram = fs::temp_directory_path() / "bladeaxis_bench_million_job.nc";
     spec.stageOutputProgram = true; // as the batch front end writes it
     spec.dropInputText = true;      // and reads it
+    spec.dropLayerSamples = true;   // and keeps its schedule
     job::RescheduleOutcome::StageSeconds stages;
     resetPeakResident();
     for (auto _ : state) {
@@ -214,6 +215,7 @@ void BM_FullJobFiveMillionBlocks(benchmark::State& state) {
     spec.outputProgram = bench::benchFile("five_million_job", ".nc");
     spec.stageOutputProgram = true; // as the batch front end writes it
     spec.dropInputText = true;      // and reads it
+    spec.dropLayerSamples = true;   // and keeps its schedule
     double peakMegabytes = 0.0;
     for (auto _ : state) {
         const auto start = std::chrono::steady_clock::now();

@@ -141,5 +141,38 @@ TEST(Schedule, ParallelRunReportsTheFirstFaultyPointOfTheInput) {
         << result.error().message;
 }
 
+TEST(Schedule, ReleasingTheLayerSamplesKeepsTheNewAxesAndEveryPerLayerFigure) {
+    const auto kept = schedule(appendixBHelix(), bestPreset());
+    ASSERT_TRUE(kept.has_value()) << kept.error().toString();
+    ScheduleResult released = *kept;
+    releaseLayerSamples(released);
+
+    EXPECT_FALSE(kept->layerSamplesReleased);
+    EXPECT_TRUE(released.layerSamplesReleased);
+    EXPECT_EQ(released.newAxes, kept->newAxes);
+    ASSERT_EQ(released.layers.size(), kept->layers.size());
+    for (std::size_t k = 0; k < released.layers.size(); ++k) {
+        const LayerResult& before = kept->layers[k];
+        const LayerResult& after = released.layers[k];
+        ASSERT_FALSE(before.theta.empty());
+        for (const auto* curve : {&after.thetaOriginal, &after.thetaMin, &after.thetaMax, &after.lo,
+                                  &after.hi, &after.theta, &after.dTheta, &after.ddTheta}) {
+            EXPECT_TRUE(curve->empty()) << k;
+            EXPECT_EQ(curve->capacity(), 0u) << k; // freed, not only cleared
+        }
+        EXPECT_TRUE(after.inputIndex.empty()) << k;
+        // What a layer's report reads stays: its samples' arc lengths, its status and figures.
+        EXPECT_EQ(after.s, before.s) << k;
+        EXPECT_EQ(after.first, before.first);
+        EXPECT_EQ(after.last, before.last);
+        EXPECT_EQ(after.flags, before.flags);
+        EXPECT_EQ(after.keyPoints.size(), before.keyPoints.size());
+        EXPECT_EQ(after.corners.size(), before.corners.size());
+        EXPECT_EQ(after.minClearance, before.minClearance);
+        EXPECT_EQ(after.leadFraction, before.leadFraction);
+        EXPECT_EQ(after.peakSecondDerivative, before.peakSecondDerivative);
+    }
+}
+
 } // namespace
 } // namespace bladeaxis::scheduling

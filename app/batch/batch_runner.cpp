@@ -145,10 +145,10 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
     }
     // Nothing reads the program after it is written, nor the input's text but the rewrite: the
     // one goes to its file as the job runs, the other is read again from its file. Nor are the
-    // layers' curves read once checked, but by the outputs the job keeps them for itself.
+    // samples the figures are taken from, but by the outputs the job keeps them for itself.
     spec.stageOutputProgram = true;
     spec.dropInputText = true;
-    spec.dropLayerSamples = true;
+    spec.releaseSamplesOnceRead = true;
     std::ostream& summary = programToStdout ? err : out;
     BatchProgress progress(err, options.quiet, options.progress);
     CancelToken cancel;

@@ -2,6 +2,7 @@
 
 #include "core/analysis/derivatives.h"
 #include "core/analysis/motion_knots.h"
+#include "core/base/free_storage.h"
 
 #include <algorithm>
 #include <cmath>
@@ -241,6 +242,14 @@ std::vector<double> AxisProfile::positions(kinematics::AxisId id) const {
         sampledAxis(*recordAxes, sampleRecord, id, values);
     }
     return values;
+}
+
+void AxisProfile::releaseDerivatives() {
+    for (AxisSeries& series : axes) {
+        freeStorage(series.velocity);
+        freeStorage(series.acceleration);
+    }
+    derivativesReleased = true;
 }
 
 std::vector<double> AxisProfile::times() const {

@@ -130,6 +130,16 @@ struct AxisProfile {
     double timeAt(std::size_t i) const { return pathParameter[i] / feed; }
     // Every sample's time, for a plot's axis.
     std::vector<double> times() const;
+
+    // True once releaseDerivatives freed the axes' per-sample derivatives.
+    bool derivativesReleased = false;
+    // Frees every axis's per-sample velocity and acceleration (16 bytes per sample and moving
+    // axis) and keeps the figures (peaks, percentiles, ranges, reversals), the samples' path
+    // parameter and records, and so the positions: for a holder that has read the derivatives
+    // for the last time (a batch job once the input's T2 and its layers' motion are taken).
+    // Every axis then reads as still: nothing that reads derivatives per sample (T2, axes.csv,
+    // a plot, a layer's peaks, the comparison) may be given the profile afterwards.
+    void releaseDerivatives();
 };
 
 // The tool path an analysis reads: a program's records, or new tool poses over them. A

@@ -244,10 +244,12 @@ bool checksCad(const JobSpec& spec) {
     return !spec.cad.file.empty() || spec.demo;
 }
 
-// Whether the job frees its layers' curves once checked: when asked, and when none of its own
-// later readers (the comparison, the CAD check, layers.csv) needs them.
-bool releasesLayerSamples(const JobSpec& spec) {
-    return spec.dropLayerSamples && !spec.compare && !checksCad(spec) && spec.outputDir.empty();
+// Whether the job frees the samples its figures are taken from once taken: when asked, and
+// when none of its own later readers (the comparison, the CAD check, axes.csv and layers.csv)
+// needs them.
+bool releasesSamples(const JobSpec& spec) {
+    return spec.releaseSamplesOnceRead && !spec.compare && !checksCad(spec) &&
+           spec.outputDir.empty();
 }
 
 // The check's spec with the tool it will use, validated before any scheduling: a tool the check
@@ -409,7 +411,30 @@ Status checkTilt(JobResult& result, const JobSpec& spec, ProgressSink& progress)
     return {};
 }
 
-Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
+// Once the layers are known: the input's orientation checked against their channel and the
+// input's side of their motion taken, the last readings of the layers' curves and of the input
+// profile's derivatives but the input's T2 (`timeOptimal`, running since the input was
+// analysed), which a job that releases them waits for first.
+Status takeLayerFigures(JobResult& result, const JobSpec& spec,
+                        scheduling::ScheduleResult& schedule,
+                        std::future<std::optional<double>>& timeOptimal) {
+    const std::span<const ClRecord> pass =
+        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
+    Status orientation = checkOrientationInChannel(schedule, pass, result.program.path().sourceFile,
+                                                   spec.check, rotaryLetters(result.machine));
+    result.layerMotionBefore = report::layerAxisMotion(schedule, result.original, *result.axes);
+    if (releasesSamples(spec)) {
+        scheduling::releaseLayerSamples(schedule);
+        result.timeOptimal = timeOptimal.get();
+        result.original.releaseDerivatives();
+        // A layer's curves are small blocks the C library would keep for later.
+        returnFreedHeapToTheSystem();
+    }
+    return orientation;
+}
+
+Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel,
+                      std::future<std::optional<double>>& timeOptimal) {
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
                          "the ball radius is not known: give --tool-radius (" +
@@ -449,22 +474,11 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
         }
         input.stagedProgram = std::make_shared<StagedFile>(std::move(*staged));
     }
-    // The input's orientation is checked against the channel as soon as the schedule is made,
-    // the last reading of the layers' curves in a job that releases them; its refusal still
-    // comes after the re-scheduling's own.
+    // The input's orientation is checked against the channel as soon as the schedule is made;
+    // its refusal still comes after the re-scheduling's own.
     Status orientationInChannel;
-    const bool releaseSamples = releasesLayerSamples(spec);
     input.scheduled = [&](scheduling::ScheduleResult& schedule) {
-        const std::span<const ClRecord> pass =
-            std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
-        orientationInChannel =
-            checkOrientationInChannel(schedule, pass, result.program.path().sourceFile, spec.check,
-                                      rotaryLetters(result.machine));
-        if (releaseSamples) {
-            scheduling::releaseLayerSamples(schedule);
-            // A layer's curves are small blocks the C library would keep for later.
-            returnFreedHeapToTheSystem();
-        }
+        orientationInChannel = takeLayerFigures(result, spec, schedule, timeOptimal);
     };
     auto outcome = reschedule(input, cancel);
     if (!outcome) {
@@ -530,6 +544,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .original = {},
                      .constantFeed = {},
                      .timeOptimal = std::nullopt,
+                     .layerMotionBefore = {},
                      .rescheduled = std::nullopt,
                      .comparison = std::nullopt,
                      .cadCheck = std::nullopt,
@@ -578,7 +593,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     }
     if (spec.reschedule) {
         progress.progress(0.5, "re-scheduling the tool orientation");
-        if (auto status = rescheduleInto(result, spec, cancel); !status) {
+        if (auto status = rescheduleInto(result, spec, cancel, timeOptimal); !status) {
             return std::unexpected(status.error());
         }
         for (const std::string& warning : result.rescheduled->schedule.warnings) {
@@ -586,7 +601,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
             result.warnings.push_back(warning);
         }
     }
-    result.timeOptimal = timeOptimal.get();
+    if (timeOptimal.valid()) { // not yet taken by a job that released the input's samples
+        result.timeOptimal = timeOptimal.get();
+    }
     if (cadSpec) {
         progress.progress(0.65, spec.demo && spec.cad.file.empty()
                                     ? "checking the tool against the demo blade's surface"

@@ -55,12 +55,15 @@ struct JobSpec {
     // front end, where nothing else reads the text. About 61 bytes per block less while the
     // program is scheduled. The result's programText is then empty.
     bool dropInputText = false;
-    // Free the per-sample curves of the schedule's layers (scheduling::releaseLayerSamples)
-    // once the job has checked the input's orientation against them, before the new motion is
-    // made and analysed, where a job's memory peaks (72 bytes per record): the batch front end,
-    // where nothing else reads them. The job keeps them all the same when it compares methods,
-    // checks CAD or writes layers.csv (outputDir), which read them.
-    bool dropLayerSamples = false;
+    // Free the per-sample data the job takes its figures from once it has taken them, before
+    // the new motion is made and analysed, where a job's memory peaks: the schedule's layer
+    // curves once the input's orientation is checked against them
+    // (scheduling::releaseLayerSamples, 72 bytes per record), and the input profile's
+    // derivatives once its T2 and its layers' motion are taken (AxisProfile::releaseDerivatives,
+    // 16 bytes per record and moving axis). The batch front end, where nothing else reads them.
+    // The job keeps them all the same when it compares methods, checks CAD or writes axes.csv
+    // and layers.csv (outputDir), which read them.
+    bool releaseSamplesOnceRead = false;
     std::filesystem::path outputCl; // the re-scheduled toolpath as CL data (APT); empty: none
     CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)
     std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none
@@ -84,7 +87,10 @@ struct JobResult {
     analysis::SharedMachineAxes axes;
     analysis::AxisProfile original;
     analysis::ConstantFeedTime constantFeed;
-    std::optional<double> timeOptimal;             // s, T2 under the machine limits (spec §8.3)
+    std::optional<double> timeOptimal; // s, T2 under the machine limits (spec §8.3)
+    // Per layer of the re-scheduled pass, the input's motion (report::layerAxisMotion), taken as
+    // soon as the layers were known; empty without a re-scheduling.
+    std::vector<report::LayerAxisMotion> layerMotionBefore;
     std::optional<RescheduleOutcome> rescheduled;  // when spec.reschedule
     std::optional<compare::Comparison> comparison; // when spec.compare
     std::optional<CadCheckResult> cadCheck;        // when CAD is given, and for the demo

@@ -103,15 +103,23 @@ Result<std::string> rescheduledClText(const JobResult& result) {
     return io::cl::emitApt(path, options);
 }
 
+namespace {
+
+// The re-scheduled program's side of the layers' motion, from its profile (which every job
+// keeps); the input's side was taken by the job when the layers were known.
+std::vector<report::LayerAxisMotion> layerMotionAfter(const RescheduleOutcome& outcome) {
+    return report::layerAxisMotion(outcome.schedule, outcome.profile, *outcome.axes);
+}
+
+} // namespace
+
 std::vector<report::LayerMotion> layerMotionOf(const JobResult& result) {
     if (!result.rescheduled) {
         return {};
     }
-    const std::vector<int> lines = passLines(result);
-    const RescheduleOutcome& outcome = *result.rescheduled;
-    const report::BeforeAfter data{&result.original, &outcome.profile, *result.axes, *outcome.axes,
-                                   lines};
-    return report::layerMotion(outcome.schedule, data);
+    const std::vector<report::LayerAxisMotion> after = layerMotionAfter(*result.rescheduled);
+    return report::layerMotion(
+        {.before = result.layerMotionBefore, .after = after, .sourceLines = {}});
 }
 
 namespace {
@@ -151,9 +159,10 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
         {"max_junction_gap_deg", units::radToDeg(outcome.schedule.check.maxJunctionGapRad)},
     };
     const std::vector<int> lines = passLines(result);
-    report::BeforeAfter data{&result.original, &outcome.profile, *result.axes, *outcome.axes,
-                             lines};
-    json["layers"] = report::layersJson(outcome.schedule, data);
+    const std::vector<report::LayerAxisMotion> motionAfter = layerMotionAfter(outcome);
+    json["layers"] = report::layersJson(
+        outcome.schedule,
+        {.before = result.layerMotionBefore, .after = motionAfter, .sourceLines = lines});
     const auto& stages = outcome.stageSeconds;
     json["timing"] = {{"schedule_s", stages.schedule},
                       {"kinematics_s", stages.kinematics},
@@ -461,11 +470,12 @@ std::vector<fs::path> protectedInputsOf(const JobSpec& spec) {
 Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
     // Refused before anything is written: a job that ran without an output folder (and so
     // released its layers' curves) given one only now.
-    if (!spec.outputDir.empty() && result.rescheduled &&
-        result.rescheduled->schedule.layerSamplesReleased) {
+    if (!spec.outputDir.empty() &&
+        (result.original.derivativesReleased ||
+         (result.rescheduled && result.rescheduled->schedule.layerSamplesReleased))) {
         return makeError(ErrorCode::Internal,
-                         "layers.csv needs the layers' curves, which the job released: run it "
-                         "with the output folder it writes");
+                         "axes.csv and layers.csv need the samples the job released once it had "
+                         "taken its figures: run it with the output folder it writes");
     }
     const std::vector<fs::path> inputs = protectedInputsOf(spec);
     if (auto status = createOutputFolder(spec); !status) {

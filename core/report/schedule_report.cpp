@@ -93,40 +93,57 @@ std::string layersCsv(const scheduling::ScheduleResult& schedule, std::span<cons
     return csv;
 }
 
-std::vector<LayerMotion> layerMotion(const scheduling::ScheduleResult& schedule,
-                                     const BeforeAfter& data) {
-    std::vector<LayerMotion> motion;
+std::vector<LayerAxisMotion> layerAxisMotion(const scheduling::ScheduleResult& schedule,
+                                             const analysis::AxisProfile& profile,
+                                             std::span<const kinematics::MachineAxes> axes) {
+    std::vector<LayerAxisMotion> motion;
     motion.reserve(schedule.layers.size());
     for (const scheduling::LayerResult& layer : schedule.layers) {
-        const Peaks before = peaksWithin(*data.before, AxisId::A, layer.first, layer.last);
-        const Peaks after = peaksWithin(*data.after, AxisId::A, layer.first, layer.last);
-        motion.push_back({reversalsWithin(data.axesBefore, layer.first, layer.last),
-                          reversalsWithin(data.axesAfter, layer.first, layer.last), before.velocity,
-                          after.velocity, before.acceleration, after.acceleration});
+        LayerAxisMotion side;
+        side.aReversals = reversalsWithin(axes, layer.first, layer.last);
+        for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z, AxisId::A}) {
+            const Peaks peaks = peaksWithin(profile, axis, layer.first, layer.last);
+            side.peakVelocity[static_cast<int>(axis)] = peaks.velocity;
+            side.peakAcceleration[static_cast<int>(axis)] = peaks.acceleration;
+        }
+        motion.push_back(side);
+    }
+    return motion;
+}
+
+std::vector<LayerMotion> layerMotion(const BeforeAfter& data) {
+    constexpr int kA = static_cast<int>(AxisId::A);
+    std::vector<LayerMotion> motion;
+    motion.reserve(data.before.size());
+    for (std::size_t k = 0; k < data.before.size() && k < data.after.size(); ++k) {
+        const LayerAxisMotion& before = data.before[k];
+        const LayerAxisMotion& after = data.after[k];
+        motion.push_back({before.aReversals, after.aReversals, before.peakVelocity[kA],
+                          after.peakVelocity[kA], before.peakAcceleration[kA],
+                          after.peakAcceleration[kA]});
     }
     return motion;
 }
 
 // Peak X/Y/Z velocity (mm/s) and acceleration (mm/s^2) of one layer before and after, at the
 // programmed feed: where on the blade the linear axes gain or lose.
-void addLinearPeaks(nlohmann::json& json, const scheduling::LayerResult& layer,
-                    const BeforeAfter& data) {
+void addLinearPeaks(nlohmann::json& json, const LayerAxisMotion& before,
+                    const LayerAxisMotion& after) {
     for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z}) {
         std::string name = "peak_";
         name += static_cast<char>(std::tolower(kinematics::axisName(axis)[0]));
-        const Peaks before = peaksWithin(*data.before, axis, layer.first, layer.last);
-        const Peaks after = peaksWithin(*data.after, axis, layer.first, layer.last);
-        json[name + "_velocity_mm_s_before"] = before.velocity;
-        json[name + "_velocity_mm_s_after"] = after.velocity;
-        json[name + "_acceleration_mm_s2_before"] = before.acceleration;
-        json[name + "_acceleration_mm_s2_after"] = after.acceleration;
+        const int index = static_cast<int>(axis);
+        json[name + "_velocity_mm_s_before"] = before.peakVelocity[index];
+        json[name + "_velocity_mm_s_after"] = after.peakVelocity[index];
+        json[name + "_acceleration_mm_s2_before"] = before.peakAcceleration[index];
+        json[name + "_acceleration_mm_s2_after"] = after.peakAcceleration[index];
     }
 }
 
 nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const BeforeAfter& data) {
     nlohmann::json layers = nlohmann::json::array();
-    const std::vector<LayerMotion> motion = layerMotion(schedule, data);
-    for (std::size_t k = 0; k < schedule.layers.size(); ++k) {
+    const std::vector<LayerMotion> motion = layerMotion(data);
+    for (std::size_t k = 0; k < schedule.layers.size() && k < motion.size(); ++k) {
         const scheduling::LayerResult& layer = schedule.layers[k];
         const LayerMotion& m = motion[k];
         nlohmann::json json;
@@ -143,7 +160,7 @@ nlohmann::json layersJson(const scheduling::ScheduleResult& schedule, const Befo
         json["peak_a_velocity_deg_s_after"] = radToDeg(m.peakVelocityAfter);
         json["peak_a_acceleration_deg_s2_before"] = radToDeg(m.peakAccelerationBefore);
         json["peak_a_acceleration_deg_s2_after"] = radToDeg(m.peakAccelerationAfter);
-        addLinearPeaks(json, layer, data);
+        addLinearPeaks(json, data.before[k], data.after[k]);
         json["min_channel_clearance_deg"] = radToDeg(layer.minClearance);
         json["lead_fraction"] = layer.leadFraction;
         json["key_points"] = layer.keyPoints.size();

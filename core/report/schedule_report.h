@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -20,12 +21,25 @@ namespace bladeaxis::report {
 // find it in the program.
 std::string layersCsv(const scheduling::ScheduleResult& schedule, std::span<const int> lines = {});
 
+// One side (the input, or the re-scheduled program) of every layer's machine-axis motion:
+// A reversals and the peak |velocity| and |acceleration| of X Y Z A (indexed by
+// kinematics::AxisId) over the profile's samples in the layer. Internal units.
+struct LayerAxisMotion {
+    int aReversals = 0;
+    std::array<double, 4> peakVelocity{}, peakAcceleration{};
+};
+
+// Per layer of `schedule`: `profile`'s peaks over the samples of its records and the reversals
+// of `axes` (per pass record, A continuous) over them. A job takes the input's side as soon as
+// the layers are known, so that a batch job can free the input profile's derivatives before the
+// new motion is analysed.
+std::vector<LayerAxisMotion> layerAxisMotion(const scheduling::ScheduleResult& schedule,
+                                             const analysis::AxisProfile& profile,
+                                             std::span<const kinematics::MachineAxes> axes);
+
 struct BeforeAfter {
-    const analysis::AxisProfile* before = nullptr;
-    const analysis::AxisProfile* after = nullptr;
-    std::span<const kinematics::MachineAxes> axesBefore; // per pass record
-    std::span<const kinematics::MachineAxes> axesAfter;
-    std::span<const int> sourceLines; // per pass record
+    std::span<const LayerAxisMotion> before, after; // per layer
+    std::span<const int> sourceLines;               // per pass record
 };
 
 // The A-axis motion of one layer before and after (internal units: rad/s, rad/s^2): what the
@@ -35,8 +49,7 @@ struct LayerMotion {
     double peakVelocityBefore = 0.0, peakVelocityAfter = 0.0;
     double peakAccelerationBefore = 0.0, peakAccelerationAfter = 0.0;
 };
-std::vector<LayerMotion> layerMotion(const scheduling::ScheduleResult& schedule,
-                                     const BeforeAfter& data);
+std::vector<LayerMotion> layerMotion(const BeforeAfter& data);
 
 // One object per layer: statuses, source lines, reversals, peak A (and X/Y/Z) velocity and
 // acceleration before and after, channel clearance, lead fraction, corners, peak theta'', time.

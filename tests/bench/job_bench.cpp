@@ -151,9 +151,9 @@ void BM_FullJobMillionBlocks(benchmark::State& state) {
     spec.program = millionProgram();
     spec.toolRadius = kToolRadius;
     spec.outputProgram = fs::temp_directory_path() / "bladeaxis_bench_million_job.nc";
-    spec.stageOutputProgram = true; // as the batch front end writes it
-    spec.dropInputText = true;      // and reads it
-    spec.dropLayerSamples = true;   // and keeps its schedule
+    spec.stageOutputProgram = true;     // as the batch front end writes it
+    spec.dropInputText = true;          // and reads it
+    spec.releaseSamplesOnceRead = true; // and keeps only figures
     job::RescheduleOutcome::StageSeconds stages;
     resetPeakResident();
     for (auto _ : state) {
@@ -213,9 +213,9 @@ void BM_FullJobFiveMillionBlocks(benchmark::State& state) {
     spec.machineFile = longBedMachine();
     spec.toolRadius = kToolRadius;
     spec.outputProgram = bench::benchFile("five_million_job", ".nc");
-    spec.stageOutputProgram = true; // as the batch front end writes it
-    spec.dropInputText = true;      // and reads it
-    spec.dropLayerSamples = true;   // and keeps its schedule
+    spec.stageOutputProgram = true;     // as the batch front end writes it
+    spec.dropInputText = true;          // and reads it
+    spec.releaseSamplesOnceRead = true; // and keeps only figures
     double peakMegabytes = 0.0;
     for (auto _ : state) {
         const auto start = std::chrono::steady_clock::now();

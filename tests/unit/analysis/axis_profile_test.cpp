@@ -110,6 +110,36 @@ TEST(AnalyseAxisMotion, UniformCircleWithATiedToArcLengthTurnsAAtFeedOverRadius)
     EXPECT_NEAR(profile->aReversals.travel, s / r, 1e-12);
 }
 
+TEST(AnalyseAxisMotion, ReleasedDerivativesLeaveTheFiguresAndThePositions) {
+    const Program program = straightLine(Vec3(0.6, 0.0, 0.8), 300, 50.0, 0.01, 2e-4);
+    const Result<AxisProfile> kept =
+        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    ASSERT_TRUE(kept.has_value()) << kept.error().toString();
+    AxisProfile released = *kept;
+    released.releaseDerivatives();
+
+    EXPECT_FALSE(kept->derivativesReleased);
+    EXPECT_TRUE(released.derivativesReleased);
+    EXPECT_EQ(released.pathParameter, kept->pathParameter);
+    EXPECT_EQ(released.sampleRecord, kept->sampleRecord);
+    EXPECT_EQ(released.aReversals.count, kept->aReversals.count);
+    for (AxisId id : kinematics::kAllAxes) {
+        const AxisSeries& before = kept->axis(id);
+        const AxisSeries& after = released.axis(id);
+        EXPECT_EQ(after.velocity.capacity(), 0u); // freed, not only cleared
+        EXPECT_EQ(after.acceleration.capacity(), 0u);
+        EXPECT_EQ(after.peakVelocity, before.peakVelocity);
+        EXPECT_EQ(after.peakAcceleration, before.peakAcceleration);
+        EXPECT_EQ(after.peakJerk, before.peakJerk);
+        EXPECT_EQ(after.p999Velocity, before.p999Velocity);
+        EXPECT_EQ(after.p999Acceleration, before.p999Acceleration);
+        EXPECT_EQ(after.minPosition, before.minPosition);
+        EXPECT_EQ(after.maxPosition, before.maxPosition);
+        EXPECT_EQ(released.positions(id), kept->positions(id));
+    }
+    EXPECT_FALSE(kept->axis(AxisId::A).still()); // the release had something to free
+}
+
 TEST(AnalyseAxisMotion, ParabolicAGivesConstantAccelerationTwiceCTimesFeedSquared) {
     const double c = 0.003; // rad/mm^2
     const double feed = 40.0;

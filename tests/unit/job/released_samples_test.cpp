@@ -1,6 +1,6 @@
 // A batch job frees its layers' per-sample curves once it has checked them (JobSpec::
-// dropLayerSamples): what it reports and writes must be what a job that keeps them reports and
-// writes, and a job whose own outputs read the curves must keep them.
+// releaseSamplesOnceRead): what it reports and writes must be what a job that keeps them reports
+// and writes, and a job whose own outputs read the curves must keep them.
 
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
@@ -31,7 +31,7 @@ nlohmann::json reportWithoutTimes(const JobResult& result, const JobSpec& spec) 
     return json;
 }
 
-class ReleasedLayers : public ::testing::Test {
+class ReleasedSamples : public ::testing::Test {
   protected:
     void SetUp() override {
         const auto demo = demoProgram(kinematics::defaultBladeMachine());
@@ -48,20 +48,34 @@ class ReleasedLayers : public ::testing::Test {
         return runJob(spec, progress, cancel);
     }
 
-    test::ScratchFolder m_scratch{"bladeaxis_released_layers_"};
+    test::ScratchFolder m_scratch{"bladeaxis_released_samples_"};
     JobSpec m_spec;
 };
 
-TEST_F(ReleasedLayers, AJobThatReleasesItsLayerCurvesReportsAndWritesWhatAKeepingJobDoes) {
+TEST_F(ReleasedSamples, AJobThatReleasesItsSamplesReportsAndWritesWhatAKeepingJobDoes) {
     const auto kept = run(m_spec);
     ASSERT_TRUE(kept.has_value()) << kept.error().toString();
-    m_spec.dropLayerSamples = true;
+    m_spec.releaseSamplesOnceRead = true;
     const auto released = run(m_spec);
     ASSERT_TRUE(released.has_value()) << released.error().toString();
 
     EXPECT_FALSE(kept->rescheduled->schedule.layerSamplesReleased);
     ASSERT_TRUE(released->rescheduled->schedule.layerSamplesReleased);
     EXPECT_TRUE(released->rescheduled->schedule.layers.front().theta.empty());
+    EXPECT_FALSE(kept->original.derivativesReleased);
+    ASSERT_TRUE(released->original.derivativesReleased);
+    EXPECT_TRUE(released->original.axis(kinematics::AxisId::A).velocity.empty());
+    // Taken before the release: the input's T2 and its layers' motion.
+    ASSERT_TRUE(kept->timeOptimal.has_value());
+    EXPECT_EQ(released->timeOptimal, kept->timeOptimal);
+    const auto keptLayers = layerMotionOf(*kept);
+    const auto releasedLayers = layerMotionOf(*released);
+    ASSERT_EQ(releasedLayers.size(), keptLayers.size());
+    for (std::size_t k = 0; k < keptLayers.size(); ++k) {
+        EXPECT_EQ(releasedLayers[k].reversalsBefore, keptLayers[k].reversalsBefore);
+        EXPECT_EQ(releasedLayers[k].peakVelocityBefore, keptLayers[k].peakVelocityBefore);
+        EXPECT_EQ(releasedLayers[k].peakAccelerationBefore, keptLayers[k].peakAccelerationBefore);
+    }
     EXPECT_EQ(released->rescheduled->programText, kept->rescheduled->programText);
     EXPECT_EQ(reportWithoutTimes(*released, m_spec), reportWithoutTimes(*kept, m_spec));
     EXPECT_EQ(formatSummary(*released), formatSummary(*kept));
@@ -71,12 +85,13 @@ TEST_F(ReleasedLayers, AJobThatReleasesItsLayerCurvesReportsAndWritesWhatAKeepin
     EXPECT_TRUE(std::filesystem::exists(m_spec.outputProgram));
 }
 
-TEST_F(ReleasedLayers, AJobWritingLayersCsvOrComparingKeepsTheCurvesItReads) {
-    m_spec.dropLayerSamples = true;
+TEST_F(ReleasedSamples, AJobWritingItsCsvFilesOrComparingKeepsTheSamplesTheyRead) {
+    m_spec.releaseSamplesOnceRead = true;
     m_spec.outputDir = m_scratch.path() / "out";
     const auto withFolder = run(m_spec);
     ASSERT_TRUE(withFolder.has_value()) << withFolder.error().toString();
     EXPECT_FALSE(withFolder->rescheduled->schedule.layerSamplesReleased);
+    EXPECT_FALSE(withFolder->original.derivativesReleased);
     ASSERT_TRUE(writeJobOutputs(m_spec, *withFolder).has_value());
     EXPECT_TRUE(std::filesystem::exists(m_spec.outputDir / "layers.csv"));
 
@@ -86,11 +101,12 @@ TEST_F(ReleasedLayers, AJobWritingLayersCsvOrComparingKeepsTheCurvesItReads) {
     const auto comparing = run(m_spec);
     ASSERT_TRUE(comparing.has_value()) << comparing.error().toString();
     EXPECT_FALSE(comparing->rescheduled->schedule.layerSamplesReleased);
+    EXPECT_FALSE(comparing->original.derivativesReleased);
 }
 
-TEST_F(ReleasedLayers,
-       AnOutputFolderGivenOnlyAfterTheCurvesWereReleasedIsRefusedWithNothingWritten) {
-    m_spec.dropLayerSamples = true;
+TEST_F(ReleasedSamples,
+       AnOutputFolderGivenOnlyAfterTheSamplesWereReleasedIsRefusedWithNothingWritten) {
+    m_spec.releaseSamplesOnceRead = true;
     const auto released = run(m_spec);
     ASSERT_TRUE(released.has_value()) << released.error().toString();
     ASSERT_TRUE(released->rescheduled->schedule.layerSamplesReleased);
@@ -105,10 +121,10 @@ TEST_F(ReleasedLayers,
 
 // The check of the input's orientation against the channel reads the curves: it runs before
 // they are released, and a program it refuses is refused the same way either way.
-TEST_F(ReleasedLayers, TheOrientationCheckRefusesTheSameProgramWhetherOrNotTheCurvesAreReleased) {
+TEST_F(ReleasedSamples, TheOrientationCheckRefusesTheSameProgramWhetherOrNotTheSamplesAreReleased) {
     m_spec.check.channelToleranceRad = -1.0; // every CAM orientation counts as outside
     const auto kept = run(m_spec);
-    m_spec.dropLayerSamples = true;
+    m_spec.releaseSamplesOnceRead = true;
     const auto released = run(m_spec);
     ASSERT_FALSE(kept.has_value());
     ASSERT_FALSE(released.has_value());

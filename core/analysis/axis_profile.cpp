@@ -238,18 +238,19 @@ std::vector<double> AxisSeries::accelerations(std::size_t n) const {
 
 std::vector<double> AxisProfile::positions(kinematics::AxisId id) const {
     std::vector<double> values;
-    if (!sampleRecord.empty()) { // a profile without samples may have no machine axes
+    if (!sampleRecord.empty() && recordAxes) { // none without samples, or once released
         sampledAxis(*recordAxes, sampleRecord, id, values);
     }
     return values;
 }
 
-void AxisProfile::releaseDerivatives() {
+void AxisProfile::releaseSampleData() {
     for (AxisSeries& series : axes) {
         freeStorage(series.velocity);
         freeStorage(series.acceleration);
     }
-    derivativesReleased = true;
+    recordAxes.reset();
+    sampleDataReleased = true;
 }
 
 std::vector<double> AxisProfile::times() const {

@@ -122,7 +122,8 @@ struct AxisProfile {
     double position(kinematics::AxisId id, std::size_t i) const {
         return (*recordAxes)[sampleRecord[i]][id];
     }
-    // Every sample's position of an axis, for a plot or a reversal count.
+    // Every sample's position of an axis, for a plot or a reversal count (none once the
+    // sample data are released).
     std::vector<double> positions(kinematics::AxisId id) const;
 
     // The time of sample i at the constant feed, s: t = s / F. Computed, not kept: 8 bytes per
@@ -131,15 +132,16 @@ struct AxisProfile {
     // Every sample's time, for a plot's axis.
     std::vector<double> times() const;
 
-    // True once releaseDerivatives freed the axes' per-sample derivatives.
-    bool derivativesReleased = false;
+    // True once releaseSampleData freed the axes' per-sample derivatives and positions.
+    bool sampleDataReleased = false;
     // Frees every axis's per-sample velocity and acceleration (16 bytes per sample and moving
-    // axis) and keeps the figures (peaks, percentiles, ranges, reversals), the samples' path
-    // parameter and records, and so the positions: for a holder that has read the derivatives
-    // for the last time (a batch job once the input's T2 and its layers' motion are taken).
-    // Every axis then reads as still: nothing that reads derivatives per sample (T2, axes.csv,
-    // a plot, a layer's peaks, the comparison) may be given the profile afterwards.
-    void releaseDerivatives();
+    // axis) and gives up the profile's share of the machine axes (recordAxes), keeping the
+    // figures (peaks, percentiles, ranges, reversals) and the samples' path parameter and
+    // records: for a holder that has read them for the last time (a batch job once the input's
+    // T2, lost motion and layers' motion are taken). Every axis then reads as still and the
+    // positions as none: nothing that reads either per sample (T2, lost motion, axes.csv, a
+    // plot, a layer's peaks, the comparison) may be given the profile afterwards.
+    void releaseSampleData();
 };
 
 // The tool path an analysis reads: a program's records, or new tool poses over them. A

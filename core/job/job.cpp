@@ -177,6 +177,7 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     }
     result.original = std::move(*profile);
     result.constantFeed = analysis::constantFeedTime(result.original, result.machine, false);
+    result.originalLostMotion = analysis::lostMotion(result.original, result.machine);
     return {};
 }
 
@@ -411,10 +412,11 @@ Status checkTilt(JobResult& result, const JobSpec& spec, ProgressSink& progress)
     return {};
 }
 
-// Once the layers are known: the input's orientation checked against their channel and the
-// input's side of their motion taken, the last readings of the layers' curves and of the input
-// profile's derivatives but the input's T2 (`timeOptimal`, running since the input was
-// analysed), which a job that releases them waits for first.
+// Once the schedule is made, before the new motion is: the input's orientation checked against
+// the layers' channels and the input's side of the layers' motion taken. They are the last
+// readings of the layers' curves, and, with the input's T2 (`timeOptimal`, running since the
+// input was analysed), of the input profile's derivatives and the pass's machine axes. A job
+// that releases its samples waits for T2 and frees them all here.
 Status takeLayerFigures(JobResult& result, const JobSpec& spec,
                         scheduling::ScheduleResult& schedule,
                         std::future<std::optional<double>>& timeOptimal) {
@@ -422,11 +424,13 @@ Status takeLayerFigures(JobResult& result, const JobSpec& spec,
         std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
     Status orientation = checkOrientationInChannel(schedule, pass, result.program.path().sourceFile,
                                                    spec.check, rotaryLetters(result.machine));
-    result.layerMotionBefore = report::layerAxisMotion(schedule, result.original, *result.axes);
+    result.layerMotionBefore =
+        report::layerAxisMotion(scheduling::layerBounds(schedule), result.original, *result.axes);
     if (releasesSamples(spec)) {
         scheduling::releaseLayerSamples(schedule);
         result.timeOptimal = timeOptimal.get();
-        result.original.releaseDerivatives();
+        result.original.releaseSampleData();
+        result.axes.reset();
         // A layer's curves are small blocks the C library would keep for later.
         returnFreedHeapToTheSystem();
     }
@@ -446,7 +450,7 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     input.machine = &result.machine;
     input.passFirst = result.pass.first;
     input.passCount = result.pass.count;
-    input.originalAxes = *result.axes;
+    input.startA = result.axes->front().a;
     input.toolRadius = result.toolRadius.value_or(0.0);
     input.parameters = spec.parameters;
     input.layerEdits = spec.layerEdits;
@@ -545,6 +549,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .constantFeed = {},
                      .timeOptimal = std::nullopt,
                      .layerMotionBefore = {},
+                     .originalLostMotion = {},
                      .rescheduled = std::nullopt,
                      .comparison = std::nullopt,
                      .cadCheck = std::nullopt,

@@ -3,6 +3,7 @@
 // and present the JobResult, so they give identical results (docs/architecture.md, Conventions).
 
 #include "core/analysis/analysis.h"
+#include "core/analysis/lost_motion.h"
 #include "core/base/error.h"
 #include "core/base/progress.h"
 #include "core/compare/compare.h"
@@ -56,11 +57,12 @@ struct JobSpec {
     // program is scheduled. The result's programText is then empty.
     bool dropInputText = false;
     // Free the per-sample data the job takes its figures from once it has taken them, before
-    // the new motion is made and analysed, where a job's memory peaks: the schedule's layer
+    // the new motion is made and analysed: the schedule's layer
     // curves once the input's orientation is checked against them
     // (scheduling::releaseLayerSamples, 72 bytes per record), and the input profile's
-    // derivatives once its T2 and its layers' motion are taken (AxisProfile::releaseDerivatives,
-    // 16 bytes per record and moving axis). The batch front end, where nothing else reads them.
+    // derivatives and machine axes (AxisProfile::releaseSampleData, 16 bytes per record and
+    // moving axis, and the pass's 40) once its T2 and its layers' motion are taken. The batch
+    // front end, where nothing else reads them.
     // The job keeps them all the same when it compares methods, checks CAD or writes axes.csv
     // and layers.csv (outputDir), which read them.
     bool releaseSamplesOnceRead = false;
@@ -91,6 +93,8 @@ struct JobResult {
     // Per layer of the re-scheduled pass, the input's motion (report::layerAxisMotion), taken as
     // soon as the layers were known; empty without a re-scheduling.
     std::vector<report::LayerAxisMotion> layerMotionBefore;
+    // The input's lost motion on the machine's axes with backlash, taken with its analysis.
+    std::vector<analysis::LostMotion> originalLostMotion;
     std::optional<RescheduleOutcome> rescheduled;  // when spec.reschedule
     std::optional<compare::Comparison> comparison; // when spec.compare
     std::optional<CadCheckResult> cadCheck;        // when CAD is given, and for the demo

@@ -30,7 +30,7 @@ std::string letterOf(const kinematics::MachineModel& machine, kinematics::AxisId
 // "backlash     A 0.005 deg: 16 -> 0 reversals, 0.080 -> 0.000 deg lost motion", one line per
 // axis with play (before only when nothing was re-scheduled).
 std::string lostMotionSummary(const JobResult& result) {
-    const auto before = analysis::lostMotion(result.original, result.machine);
+    const auto& before = result.originalLostMotion;
     const auto after = result.rescheduled
                            ? analysis::lostMotion(result.rescheduled->profile, result.machine)
                            : std::vector<analysis::LostMotion>{};
@@ -108,7 +108,8 @@ namespace {
 // The re-scheduled program's side of the layers' motion, from its profile (which every job
 // keeps); the input's side was taken by the job when the layers were known.
 std::vector<report::LayerAxisMotion> layerMotionAfter(const RescheduleOutcome& outcome) {
-    return report::layerAxisMotion(outcome.schedule, outcome.profile, *outcome.axes);
+    return report::layerAxisMotion(scheduling::layerBounds(outcome.schedule), outcome.profile,
+                                   *outcome.axes);
 }
 
 } // namespace
@@ -268,8 +269,7 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
         json["tool_radius_mm"] = *result.toolRadius;
     }
     json["original"] = report::analysisJson(result.original, result.constantFeed);
-    json["original"]["lost_motion"] =
-        report::lostMotionJson(analysis::lostMotion(result.original, result.machine));
+    json["original"]["lost_motion"] = report::lostMotionJson(result.originalLostMotion);
     if (result.timeOptimal) {
         json["original"]["time_optimal_s"] = *result.timeOptimal;
     }
@@ -471,7 +471,7 @@ Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
     // Refused before anything is written: a job that ran without an output folder (and so
     // released its layers' curves) given one only now.
     if (!spec.outputDir.empty() &&
-        (result.original.derivativesReleased ||
+        (result.original.sampleDataReleased ||
          (result.rescheduled && result.rescheduled->schedule.layerSamplesReleased))) {
         return makeError(ErrorCode::Internal,
                          "axes.csv and layers.csv need the samples the job released once it had "

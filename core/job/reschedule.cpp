@@ -46,9 +46,8 @@ Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInpu
     const auto poseAt = [&samples](std::size_t i) {
         return kinematics::ToolPose{samples.tip(i), samples.toolAxis(i)};
     };
-    auto solved =
-        kinematics::inverseKinematicsAlong(input.machine->chain, samples.size(), poseAt,
-                                           input.originalAxes.front().a, input.parameters.threads);
+    auto solved = kinematics::inverseKinematicsAlong(input.machine->chain, samples.size(), poseAt,
+                                                     input.startA, input.parameters.threads);
     if (solved.failedIndex) {
         Error error = solved.failure;
         error.where = {input.program->path().sourceFile, passOf(input)[*solved.failedIndex].line,

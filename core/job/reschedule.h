@@ -64,7 +64,7 @@ struct RescheduleInput {
     const kinematics::MachineModel* machine = nullptr;
     std::size_t passFirst = 0;
     std::size_t passCount = 0;
-    std::span<const kinematics::MachineAxes> originalAxes; // per pass record
+    double startA = 0.0; // rad, the input's A at the pass's first record: the new A starts there
     double toolRadius = 0.0;
     scheduling::ScheduleParameters parameters;
     std::vector<scheduling::LayerOverride> layerEdits; // the engineer's edits of single layers

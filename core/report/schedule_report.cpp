@@ -93,12 +93,12 @@ std::string layersCsv(const scheduling::ScheduleResult& schedule, std::span<cons
     return csv;
 }
 
-std::vector<LayerAxisMotion> layerAxisMotion(const scheduling::ScheduleResult& schedule,
+std::vector<LayerAxisMotion> layerAxisMotion(std::span<const scheduling::LayerBounds> layers,
                                              const analysis::AxisProfile& profile,
                                              std::span<const kinematics::MachineAxes> axes) {
     std::vector<LayerAxisMotion> motion;
-    motion.reserve(schedule.layers.size());
-    for (const scheduling::LayerResult& layer : schedule.layers) {
+    motion.reserve(layers.size());
+    for (const scheduling::LayerBounds& layer : layers) {
         LayerAxisMotion side;
         side.aReversals = reversalsWithin(axes, layer.first, layer.last);
         for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z, AxisId::A}) {

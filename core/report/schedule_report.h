@@ -29,11 +29,11 @@ struct LayerAxisMotion {
     std::array<double, 4> peakVelocity{}, peakAcceleration{};
 };
 
-// Per layer of `schedule`: `profile`'s peaks over the samples of its records and the reversals
-// of `axes` (per pass record, A continuous) over them. A job takes the input's side as soon as
-// the layers are known, so that a batch job can free the input profile's derivatives before the
-// new motion is analysed.
-std::vector<LayerAxisMotion> layerAxisMotion(const scheduling::ScheduleResult& schedule,
+// Per layer: `profile`'s peaks over the samples of its records and the reversals of `axes`
+// (per pass record, A continuous) over them. A job takes the input's side as soon as the
+// layers are known, so that a batch job can free the input profile's derivatives and the
+// pass's axes before the new motion is made and analysed.
+std::vector<LayerAxisMotion> layerAxisMotion(std::span<const scheduling::LayerBounds> layers,
                                              const analysis::AxisProfile& profile,
                                              std::span<const kinematics::MachineAxes> axes);
 

@@ -25,6 +25,15 @@ bool isFlagged(const LayerResult& layer) {
                                [](LayerStatus status) { return status != LayerStatus::Ok; });
 }
 
+std::vector<LayerBounds> layerBounds(const ScheduleResult& result) {
+    std::vector<LayerBounds> bounds;
+    bounds.reserve(result.layers.size());
+    for (const LayerResult& layer : result.layers) {
+        bounds.push_back({layer.first, layer.last});
+    }
+    return bounds;
+}
+
 void releaseLayerSamples(ScheduleResult& result) {
     for (LayerResult& layer : result.layers) {
         freeStorage(layer.inputIndex);

@@ -98,6 +98,14 @@ inline std::vector<double> absoluteAngles(const ScheduleResult& result, Orientat
     return absoluteAngles(result.layers, result.newAxes.size(), which);
 }
 
+// The input records of one layer, [first, last] (the end is shared with the next layer).
+struct LayerBounds {
+    std::size_t first = 0, last = 0;
+};
+
+// The bounds of every layer of a result.
+std::vector<LayerBounds> layerBounds(const ScheduleResult& result);
+
 // Errors: InvalidArgument (parameters, radius, sizes, an override that does not fit the
 // layers or a key-point edit the layer's channel refuses), Geometry (NaN, degenerate path),
 // Cancelled. Infeasible layers are not errors: they keep the original orientation and are

@@ -62,8 +62,8 @@ TEST_F(ReleasedSamples, AJobThatReleasesItsSamplesReportsAndWritesWhatAKeepingJo
     EXPECT_FALSE(kept->rescheduled->schedule.layerSamplesReleased);
     ASSERT_TRUE(released->rescheduled->schedule.layerSamplesReleased);
     EXPECT_TRUE(released->rescheduled->schedule.layers.front().theta.empty());
-    EXPECT_FALSE(kept->original.derivativesReleased);
-    ASSERT_TRUE(released->original.derivativesReleased);
+    EXPECT_FALSE(kept->original.sampleDataReleased);
+    ASSERT_TRUE(released->original.sampleDataReleased);
     EXPECT_TRUE(released->original.axis(kinematics::AxisId::A).velocity.empty());
     // Taken before the release: the input's T2 and its layers' motion.
     ASSERT_TRUE(kept->timeOptimal.has_value());
@@ -91,7 +91,7 @@ TEST_F(ReleasedSamples, AJobWritingItsCsvFilesOrComparingKeepsTheSamplesTheyRead
     const auto withFolder = run(m_spec);
     ASSERT_TRUE(withFolder.has_value()) << withFolder.error().toString();
     EXPECT_FALSE(withFolder->rescheduled->schedule.layerSamplesReleased);
-    EXPECT_FALSE(withFolder->original.derivativesReleased);
+    EXPECT_FALSE(withFolder->original.sampleDataReleased);
     ASSERT_TRUE(writeJobOutputs(m_spec, *withFolder).has_value());
     EXPECT_TRUE(std::filesystem::exists(m_spec.outputDir / "layers.csv"));
 
@@ -101,7 +101,7 @@ TEST_F(ReleasedSamples, AJobWritingItsCsvFilesOrComparingKeepsTheSamplesTheyRead
     const auto comparing = run(m_spec);
     ASSERT_TRUE(comparing.has_value()) << comparing.error().toString();
     EXPECT_FALSE(comparing->rescheduled->schedule.layerSamplesReleased);
-    EXPECT_FALSE(comparing->original.derivativesReleased);
+    EXPECT_FALSE(comparing->original.sampleDataReleased);
 }
 
 TEST_F(ReleasedSamples,
@@ -117,6 +117,45 @@ TEST_F(ReleasedSamples,
     EXPECT_EQ(written.error().code, ErrorCode::Internal);
     EXPECT_FALSE(std::filesystem::exists(m_spec.outputProgram));
     EXPECT_FALSE(std::filesystem::exists(m_spec.outputDir));
+}
+
+// A machine whose linear axes have play: their lost motion is counted on the pass's machine
+// axes, which a releasing job frees once the layers are known.
+constexpr const char* kMachineWithLinearPlay = R"({"schema": "bladeaxis-machine/1",
+ "name": "blade machine with play on Y and Z",
+ "kinematics": {"type": "table_a_head_b", "pivot_length_mm": 0.0,
+  "table_offset_mm": [0, 0, 0], "head_offset_mm": [0, 0, 0], "a_sign": 1, "b_sign": 1},
+ "axes": {
+  "X": {"min_mm": -1400, "max_mm": 4000, "velocity_mm_s": 500, "acceleration_mm_s2": 3000,
+        "jerk_mm_s3": 30000, "backlash_mm": 0.0},
+  "Y": {"min_mm": -330, "max_mm": 330, "velocity_mm_s": 500, "acceleration_mm_s2": 3000,
+        "jerk_mm_s3": 30000, "backlash_mm": 0.002},
+  "Z": {"min_mm": -300, "max_mm": 500, "velocity_mm_s": 500, "acceleration_mm_s2": 3000,
+        "jerk_mm_s3": 30000, "backlash_mm": 0.003},
+  "A": {"mode": "continuous", "velocity_deg_s": 360, "acceleration_deg_s2": 1800,
+        "jerk_deg_s3": 18000, "backlash_deg": 0.005},
+  "B": {"min_deg": -87, "max_deg": 87, "velocity_deg_s": 90, "acceleration_deg_s2": 900,
+        "jerk_deg_s3": 9000, "backlash_deg": 0.0}}})";
+
+TEST_F(ReleasedSamples, TheLostMotionOfLinearAxesIsTheSameOnceThePassAxesAreReleased) {
+    m_spec.machineFile = m_scratch.path() / "machine.json";
+    std::ofstream(m_spec.machineFile) << kMachineWithLinearPlay;
+    const auto kept = run(m_spec);
+    ASSERT_TRUE(kept.has_value()) << kept.error().toString();
+    m_spec.releaseSamplesOnceRead = true;
+    const auto released = run(m_spec);
+    ASSERT_TRUE(released.has_value()) << released.error().toString();
+
+    EXPECT_FALSE(released->axes);
+    EXPECT_TRUE(released->original.positions(kinematics::AxisId::Y).empty());
+    ASSERT_EQ(kept->originalLostMotion.size(), 3u); // Y, Z and A have play
+    EXPECT_GT(kept->originalLostMotion[0].reversals, 0);
+    for (std::size_t i = 0; i < kept->originalLostMotion.size(); ++i) {
+        EXPECT_EQ(released->originalLostMotion[i].axis, kept->originalLostMotion[i].axis);
+        EXPECT_EQ(released->originalLostMotion[i].reversals, kept->originalLostMotion[i].reversals);
+    }
+    EXPECT_EQ(formatSummary(*released), formatSummary(*kept));
+    EXPECT_EQ(reportWithoutTimes(*released, m_spec), reportWithoutTimes(*kept, m_spec));
 }
 
 // The check of the input's orientation against the channel reads the curves: it runs before

@@ -57,14 +57,13 @@ struct JobSpec {
     // program is scheduled. The result's programText is then empty.
     bool dropInputText = false;
     // Free the per-sample data the job takes its figures from once it has taken them, before
-    // the new motion is made and analysed: the schedule's layer
-    // curves once the input's orientation is checked against them
-    // (scheduling::releaseLayerSamples, 72 bytes per record), and the input profile's
-    // derivatives and machine axes (AxisProfile::releaseSampleData, 16 bytes per record and
-    // moving axis, and the pass's 40) once its T2 and its layers' motion are taken. The batch
-    // front end, where nothing else reads them.
-    // The job keeps them all the same when it compares methods, checks CAD or writes axes.csv
-    // and layers.csv (outputDir), which read them.
+    // the new motion is made and analysed: the schedule's layer curves once the input's
+    // orientation is checked against them (scheduling::releaseLayerSamples, 72 bytes per
+    // record), and the input profile's derivatives and the pass's machine axes
+    // (AxisProfile::releaseSampleData, 16 bytes per record and moving axis, and 40) once its T2
+    // and its layers' motion are taken. The batch front end, where nothing else reads them. The
+    // job keeps them all the same when it compares methods, checks CAD or writes axes.csv and
+    // layers.csv (outputDir), which read them.
     bool releaseSamplesOnceRead = false;
     std::filesystem::path outputCl; // the re-scheduled toolpath as CL data (APT); empty: none
     CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)
@@ -85,7 +84,7 @@ struct JobResult {
     std::optional<double> toolRadius; // mm, from the spec or the file
     CuttingPass pass;
     // Per record of the pass, A continuous; shared with the original profile, which reads its
-    // positions from them.
+    // positions from them. Null once a job released them (JobSpec::releaseSamplesOnceRead).
     analysis::SharedMachineAxes axes;
     analysis::AxisProfile original;
     analysis::ConstantFeedTime constantFeed;

@@ -469,7 +469,7 @@ std::vector<fs::path> protectedInputsOf(const JobSpec& spec) {
 
 Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
     // Refused before anything is written: a job that ran without an output folder (and so
-    // released its layers' curves) given one only now.
+    // released the samples these files are made of) given one only now.
     if (!spec.outputDir.empty() &&
         (result.original.sampleDataReleased ||
          (result.rescheduled && result.rescheduled->schedule.layerSamplesReleased))) {

@@ -76,7 +76,7 @@ struct RescheduleInput {
     // outcome keeps. Nothing of the re-scheduling reads the layers' per-sample curves after this
     // (the new motion is made from the new tool axes), so a job checks the input's orientation
     // against the channel here and may release them (scheduling::releaseLayerSamples) before
-    // the new motion is made and analysed, where a job's memory peaks.
+    // the new motion is made and analysed.
     std::function<void(scheduling::ScheduleResult&)> scheduled;
     // Called once the program is rewritten (or its rewrite failed), before it is read back: the
     // rewrite was the last reader of the input's text, and a job frees it here

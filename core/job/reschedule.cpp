@@ -29,10 +29,16 @@ scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
     schedule.toolRadius = input.toolRadius;
     schedule.centres.reserve(input.passCount);
     schedule.axes.reserve(input.passCount);
-    for (const ClRecord& record : passOf(input)) {
+    const std::span<const ClRecord> pass = passOf(input);
+    for (const ClRecord& record : pass) {
         schedule.centres.push_back(toolpath::ballCentre(record, input.toolRadius));
         schedule.axes.push_back(record.axis);
     }
+    // The records stay, so the scheduling frees its copies once it has made its plane path.
+    schedule.centreAgain = [pass, radius = input.toolRadius](std::size_t i) {
+        return toolpath::ballCentre(pass[i], radius);
+    };
+    schedule.axisAgain = [pass](std::size_t i) { return pass[i].axis; };
     return schedule;
 }
 

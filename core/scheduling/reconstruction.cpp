@@ -61,7 +61,8 @@ ReversalRun reversalsIn(std::span<const double> angles, double step, std::size_t
 // either side of their extremes, with correct rounding too, so the largest centre error is the
 // root of the largest squared one, and the largest unit error is at the least or the greatest
 // squared length: two roots per range instead of two per sample, and the same values.
-ReconstructionCheck checkRange(std::span<const Vec3> centres, const ReconstructedPath& path,
+template <class CentreAt>
+ReconstructionCheck checkRange(const CentreAt& centreAt, const ReconstructedPath& path,
                                double axial, double toolRadius, std::size_t begin,
                                std::size_t end) {
     ReconstructionCheck check;
@@ -71,9 +72,10 @@ ReconstructionCheck checkRange(std::span<const Vec3> centres, const Reconstructe
     double maxLengthSquared = -kInfinity;
     for (std::size_t i = begin; i < end; ++i) {
         const Vec3& v = path.axes[i];
-        maxCentreSquared = std::max(
-            maxCentreSquared,
-            (tipOfBall(centres[i], v, toolRadius) + toolRadius * v - centres[i]).squaredNorm());
+        const Vec3 centre = centreAt(i);
+        maxCentreSquared =
+            std::max(maxCentreSquared,
+                     (tipOfBall(centre, v, toolRadius) + toolRadius * v - centre).squaredNorm());
         const double lengthSquared = v.squaredNorm();
         minLengthSquared = std::min(minLengthSquared, lengthSquared);
         maxLengthSquared = std::max(maxLengthSquared, lengthSquared);
@@ -106,16 +108,18 @@ std::size_t countReversals(std::span<const double> angles, double step, unsigned
     return reversals;
 }
 
-ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
-                                        const ReconstructedPath& path,
-                                        std::span<const double> thetaAbs, double tiltB0,
-                                        double toolRadius, unsigned threads) {
+namespace {
+
+template <class CentreAt>
+ReconstructionCheck checkWith(const CentreAt& centreAt, std::size_t count,
+                              const ReconstructedPath& path, std::span<const double> thetaAbs,
+                              double tiltB0, double toolRadius, unsigned threads) {
     const double axial = std::sin(tiltB0);
-    const std::size_t n = std::min(path.axes.size(), centres.size());
+    const std::size_t n = std::min(path.axes.size(), count);
     // Maxima per range, then over the ranges: a maximum does not depend on the order.
     std::vector<ReconstructionCheck> ranges(rangeCount(n, threads));
     forEachRangeOf(n, ranges.size(), [&](std::size_t range, std::size_t begin, std::size_t end) {
-        ranges[range] = checkRange(centres, path, axial, toolRadius, begin, end);
+        ranges[range] = checkRange(centreAt, path, axial, toolRadius, begin, end);
     });
     ReconstructionCheck check;
     for (const ReconstructionCheck& range : ranges) {
@@ -125,6 +129,23 @@ ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
     }
     check.reversals = countReversals(thetaAbs, tol::kReversalStepRad, threads);
     return check;
+}
+
+} // namespace
+
+ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
+                                        const ReconstructedPath& path,
+                                        std::span<const double> thetaAbs, double tiltB0,
+                                        double toolRadius, unsigned threads) {
+    return checkWith([centres](std::size_t i) -> const Vec3& { return centres[i]; }, centres.size(),
+                     path, thetaAbs, tiltB0, toolRadius, threads);
+}
+
+ReconstructionCheck checkReconstruction(const std::function<Vec3(std::size_t)>& centreAt,
+                                        std::size_t count, const ReconstructedPath& path,
+                                        std::span<const double> thetaAbs, double tiltB0,
+                                        double toolRadius, unsigned threads) {
+    return checkWith(centreAt, count, path, thetaAbs, tiltB0, toolRadius, threads);
 }
 
 std::string describeFailures(const ReconstructionCheck& check) {

@@ -4,6 +4,7 @@
 
 #include "core/geometry/vec.h"
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -42,6 +43,13 @@ std::string describeFailures(const ReconstructionCheck& check);
 
 ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                                         const ReconstructedPath& path,
+                                        std::span<const double> thetaAbs, double tiltB0,
+                                        double toolRadius, unsigned threads = 1);
+
+// The same with the first `count` centres read through `centreAt`, for a caller that no longer
+// holds them in an array.
+ReconstructionCheck checkReconstruction(const std::function<Vec3(std::size_t)>& centreAt,
+                                        std::size_t count, const ReconstructedPath& path,
                                         std::span<const double> thetaAbs, double tiltB0,
                                         double toolRadius, unsigned threads = 1);
 

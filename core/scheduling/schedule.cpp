@@ -215,27 +215,49 @@ struct KeptAxis {
     Vec3 axis;
 };
 
+// The input as the scheduling reads it once the plane path is made: from its arrays, or read
+// again (ScheduleInput::centreAgain, axisAgain) once a handed-over input's arrays were freed.
+struct InputAccess {
+    const ScheduleInput& input;
+    std::size_t count = 0;
+    bool readAgain = false;
+
+    Vec3 axis(std::size_t i) const { return readAgain ? input.axisAgain(i) : input.axes[i]; }
+};
+
 std::vector<KeptAxis> axesOfKeptLayers(std::span<const LayerResult> layers,
-                                       const ScheduleInput& input) {
+                                       const InputAccess& input) {
     std::vector<KeptAxis> kept;
     for (std::size_t k = 0; k < layers.size(); ++k) {
         if (!keepsOriginal(layers[k])) {
             continue;
         }
-        const InputRange inputs = inputsOfLayer(layers, k, input.centres.size());
+        const InputRange inputs = inputsOfLayer(layers, k, input.count);
         for (std::size_t i = inputs.begin; i < inputs.end; ++i) {
-            kept.push_back({i, input.axes[i].normalized()});
+            kept.push_back({i, input.axis(i).normalized()});
         }
     }
     return kept;
 }
 
+ReconstructionCheck checkReconstructionOf(const InputAccess& access,
+                                          const ReconstructedPath& rebuilt,
+                                          std::span<const double> thetaAbsolute, double tiltB0,
+                                          unsigned threads) {
+    const ScheduleInput& input = access.input;
+    if (access.readAgain) {
+        return checkReconstruction(input.centreAgain, access.count, rebuilt, thetaAbsolute, tiltB0,
+                                   input.toolRadius, threads);
+    }
+    return checkReconstruction(input.centres, rebuilt, thetaAbsolute, tiltB0, input.toolRadius,
+                               threads);
+}
+
 // result.tiltB0 and result.traversalSign are the plane path's.
 // `axesRead` is called once the input's tool axes are read for the last time.
-void assemble(ScheduleResult& result, const ScheduleInput& input,
-              std::vector<LayerOutcome>& outcomes, const std::function<void()>& axesRead,
-              unsigned threads) {
-    const std::size_t n = input.centres.size();
+void assemble(ScheduleResult& result, const InputAccess& input, std::vector<LayerOutcome>& outcomes,
+              const std::function<void()>& axesRead, unsigned threads) {
+    const std::size_t n = input.count;
     result.layers.reserve(outcomes.size());
     for (LayerOutcome& outcome : outcomes) {
         result.warnings.insert(result.warnings.end(), outcome.warnings.begin(),
@@ -258,8 +280,7 @@ void assemble(ScheduleResult& result, const ScheduleInput& input,
     for (const KeptAxis& original : kept) {
         rebuilt.axes[original.input] = original.axis;
     }
-    result.check = checkReconstruction(input.centres, rebuilt, thetaAbsolute, result.tiltB0,
-                                       input.toolRadius, threads);
+    result.check = checkReconstructionOf(input, rebuilt, thetaAbsolute, result.tiltB0, threads);
     result.newAxes = std::move(rebuilt.axes);
 }
 
@@ -328,11 +349,12 @@ std::vector<double> absoluteAngles(std::span<const LayerResult> layers, std::siz
 
 namespace {
 
-// schedule(), telling `axesRead` when the input's tool axes are read for the last time.
+// schedule(), freeing the arrays of a `handedOver` input (the same object as `input`) once
+// read for the last time.
 Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
                                     const ScheduleParameters& parameters, const CancelToken* cancel,
                                     std::span<const LayerOverride> overrides,
-                                    const std::function<void()>& axesRead) {
+                                    ScheduleInput* handedOver) {
     if (auto status = validateParameters(parameters); !status) {
         return std::unexpected(status.error());
     }
@@ -343,6 +365,15 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     auto path = preparePlanePath(input.centres, input.axes, parameters.threads);
     if (!path) {
         return std::unexpected(path.error());
+    }
+    InputAccess access{.input = input, .count = input.centres.size(), .readAgain = false};
+    std::function<void()> axesRead;
+    if (handedOver != nullptr && input.centreAgain && input.axisAgain) {
+        freeStorage(handedOver->centres);
+        freeStorage(handedOver->axes);
+        access.readAgain = true;
+    } else if (handedOver != nullptr) {
+        axesRead = [handedOver] { freeStorage(handedOver->axes); };
     }
     ScheduleResult result;
     result.warnings = path->warnings;
@@ -395,7 +426,7 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     // The layers have what they need of the plane path: its input index per point (8 bytes) is
     // not held beside the new axes.
     freeStorage(*path);
-    assemble(result, input, outcomes, axesRead, parameters.threads);
+    assemble(result, access, outcomes, axesRead, parameters.threads);
     checkJunctions(result);
     addCheckWarnings(result);
     return result;
@@ -406,14 +437,13 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
 Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
                                 const CancelToken* cancel,
                                 std::span<const LayerOverride> overrides) {
-    return scheduleFrom(input, parameters, cancel, overrides, {});
+    return scheduleFrom(input, parameters, cancel, overrides, nullptr);
 }
 
 Result<ScheduleResult> schedule(ScheduleInput&& input, const ScheduleParameters& parameters,
                                 const CancelToken* cancel,
                                 std::span<const LayerOverride> overrides) {
-    return scheduleFrom(input, parameters, cancel, overrides,
-                        [&axes = input.axes] { freeStorage(axes); });
+    return scheduleFrom(input, parameters, cancel, overrides, &input);
 }
 
 } // namespace bladeaxis::scheduling

@@ -14,6 +14,7 @@
 #include "core/scheduling/reconstruction.h"
 #include "core/scheduling/schedule_parameters.h"
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -24,6 +25,12 @@ struct ScheduleInput {
     std::vector<Vec3> centres; // Q_i ball centres in W (x = rotary axis), feed order, mm
     std::vector<Vec3> axes;    // V_i original tool axes in W (normalised on input)
     double toolRadius = 0.0;   // R, mm
+    // Where input i's centre and axis can be read again, with the bits of centres[i] and
+    // axes[i] (a job reads them from its records). An input handed over with both
+    // (schedule(ScheduleInput&&)) has its arrays freed as soon as the plane path is made, 48
+    // bytes per sample less where the scheduling's memory peaks; the centres are read again
+    // for the reconstruction check, the axes of a layer that keeps its orientation.
+    std::function<Vec3(std::size_t)> centreAgain, axisAgain;
 };
 
 enum class LayerStatus {
@@ -114,9 +121,10 @@ std::vector<LayerBounds> layerBounds(const ScheduleResult& result);
 Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
                                 const CancelToken* cancel = nullptr,
                                 std::span<const LayerOverride> overrides = {});
-// The same for an input the caller gives up: its tool axes are freed once read for the last
-// time, before the new axes are made (24 bytes per sample less where read-schedule-write's
-// memory peaks). The result is the same.
+// The same for an input the caller gives up: its arrays are freed once read for the last time,
+// the axes before the new axes are made (24 bytes per sample less where read-schedule-write's
+// memory peaks), or both once the plane path is made when the input can be read again
+// (ScheduleInput::centreAgain, axisAgain). The result is the same.
 Result<ScheduleResult> schedule(ScheduleInput&& input, const ScheduleParameters& parameters,
                                 const CancelToken* cancel = nullptr,
                                 std::span<const LayerOverride> overrides = {});

@@ -33,7 +33,10 @@ TEST(ScheduleCases, InvalidInputIsAnErrorNotACrash) {
     ScheduleInput empty;
     empty.toolRadius = 8.0;
     EXPECT_EQ(schedule(empty, bestPreset()).error().code, ErrorCode::InvalidArgument);
-    ScheduleInput one{{Vec3(0, 1, 2)}, {Vec3(0, 0, 1)}, 8.0};
+    ScheduleInput one;
+    one.centres = {Vec3(0, 1, 2)};
+    one.axes = {Vec3(0, 0, 1)};
+    one.toolRadius = 8.0;
     EXPECT_EQ(schedule(one, bestPreset()).error().code, ErrorCode::Geometry);
     ScheduleInput nan = helix(1.0);
     nan.centres[7].y() = std::numeric_limits<double>::quiet_NaN();
@@ -44,8 +47,10 @@ TEST(ScheduleCases, InvalidInputIsAnErrorNotACrash) {
     ScheduleInput noRadius = helix(1.0);
     noRadius.toolRadius = 0.0;
     EXPECT_EQ(schedule(noRadius, bestPreset()).error().code, ErrorCode::InvalidArgument);
-    ScheduleInput same{std::vector<Vec3>(5, Vec3(0, 1, 2)), std::vector<Vec3>(5, Vec3::UnitZ()),
-                       8.0};
+    ScheduleInput same;
+    same.centres.assign(5, Vec3(0, 1, 2));
+    same.axes.assign(5, Vec3::UnitZ());
+    same.toolRadius = 8.0;
     EXPECT_FALSE(schedule(same, bestPreset()).has_value());
     ScheduleParameters bad = bestPreset();
     bad.marginRad = -1.0;
@@ -230,6 +235,50 @@ TEST(ScheduleCases, AnInputGivenUpGivesTheResultOfAKeptOne) {
     EXPECT_EQ(givenUp->originalReversals, kept->originalReversals);
     EXPECT_EQ(givenUp->check.maxCentreErrorMm, kept->check.maxCentreErrorMm);
     EXPECT_TRUE(copy.axes.empty()); // freed once read
+}
+
+// An input that can be read again has its arrays freed as soon as the plane path is made; the
+// reconstruction check reads the centres again, the layers that keep the original orientation
+// their axes, and every figure is the same.
+TEST(ScheduleCases, AnInputReadAgainGivesTheResultOfAKeptOne) {
+    ScheduleParameters parameters = bestPreset();
+    parameters.taperHalfAngleRad = units::degToRad(85.0); // some layers keep the original
+    const ScheduleInput input = helix(2.0);
+    const auto kept = schedule(input, parameters);
+    ASSERT_TRUE(kept.has_value()) << kept.error().toString();
+    const bool someLayerKeepsTheOriginal =
+        std::ranges::any_of(kept->layers, [](const LayerResult& layer) {
+            return std::ranges::find(layer.flags, LayerStatus::MonotoneInfeasible) !=
+                   layer.flags.end();
+        });
+    ASSERT_TRUE(someLayerKeepsTheOriginal);
+
+    ScheduleInput copy = input;
+    std::size_t centresRead = 0, axesRead = 0;
+    copy.centreAgain = [&](std::size_t i) {
+        ++centresRead;
+        return input.centres[i];
+    };
+    copy.axisAgain = [&](std::size_t i) {
+        ++axesRead;
+        return input.axes[i];
+    };
+    const auto readAgain = schedule(std::move(copy), parameters);
+    ASSERT_TRUE(readAgain.has_value()) << readAgain.error().toString();
+    EXPECT_TRUE(copy.centres.empty() && copy.axes.empty());
+    EXPECT_EQ(centresRead, input.centres.size());
+    EXPECT_GT(axesRead, 0u);
+    EXPECT_LT(axesRead, input.axes.size());
+    EXPECT_EQ(readAgain->newAxes, kept->newAxes);
+    ASSERT_EQ(readAgain->layers.size(), kept->layers.size());
+    for (std::size_t k = 0; k < kept->layers.size(); ++k) {
+        EXPECT_EQ(readAgain->layers[k].theta, kept->layers[k].theta) << k;
+        EXPECT_EQ(readAgain->layers[k].flags, kept->layers[k].flags) << k;
+    }
+    EXPECT_EQ(readAgain->originalReversals, kept->originalReversals);
+    EXPECT_EQ(readAgain->check.maxCentreErrorMm, kept->check.maxCentreErrorMm);
+    EXPECT_EQ(readAgain->check.maxUnitError, kept->check.maxUnitError);
+    EXPECT_EQ(readAgain->check.maxTiltError, kept->check.maxTiltError);
 }
 
 TEST(ScheduleCases, NoisyCoordinatesStillGiveAMonotoneSchedule) {

@@ -212,28 +212,38 @@ TEST(ScheduleCases, TaperNearNinetyDegreesIsMonotoneInfeasibleAndKeepsTheOrigina
     EXPECT_EQ(stepReported, largest > 1e-9);
 }
 
+// Parameters under which some layers keep the original orientation (MonotoneInfeasible), so
+// the input's axes are read at the assembly too.
+ScheduleParameters parametersKeepingSomeLayers() {
+    ScheduleParameters parameters = bestPreset();
+    parameters.taperHalfAngleRad = units::degToRad(85.0);
+    return parameters;
+}
+
+void expectTheSameSchedule(const ScheduleResult& actual, const ScheduleResult& expected) {
+    EXPECT_EQ(actual.newAxes, expected.newAxes);
+    ASSERT_EQ(actual.layers.size(), expected.layers.size());
+    for (std::size_t k = 0; k < expected.layers.size(); ++k) {
+        EXPECT_EQ(actual.layers[k].theta, expected.layers[k].theta) << k;
+        EXPECT_EQ(actual.layers[k].flags, expected.layers[k].flags) << k;
+    }
+    EXPECT_EQ(actual.originalReversals, expected.originalReversals);
+    EXPECT_EQ(actual.check.maxCentreErrorMm, expected.check.maxCentreErrorMm);
+    EXPECT_EQ(actual.check.maxUnitError, expected.check.maxUnitError);
+    EXPECT_EQ(actual.check.maxTiltError, expected.check.maxTiltError);
+}
+
 // A job gives its input up (the tool axes are freed before the new axes are made): the layers
 // that keep the original orientation still get the input's axes, and every figure is the same.
 TEST(ScheduleCases, AnInputGivenUpGivesTheResultOfAKeptOne) {
-    ScheduleParameters parameters = bestPreset();
-    parameters.taperHalfAngleRad = units::degToRad(85.0); // some layers keep the original
+    const ScheduleParameters parameters = parametersKeepingSomeLayers();
     const ScheduleInput input = helix(2.0);
     const auto kept = schedule(input, parameters);
     ScheduleInput copy = input;
     const auto givenUp = schedule(std::move(copy), parameters);
     ASSERT_TRUE(kept.has_value() && givenUp.has_value());
     EXPECT_GT(kept->layers.size(), 1u);
-    ASSERT_EQ(givenUp->newAxes.size(), kept->newAxes.size());
-    for (std::size_t i = 0; i < kept->newAxes.size(); ++i) {
-        ASSERT_EQ(givenUp->newAxes[i], kept->newAxes[i]) << i;
-    }
-    ASSERT_EQ(givenUp->layers.size(), kept->layers.size());
-    for (std::size_t k = 0; k < kept->layers.size(); ++k) {
-        EXPECT_EQ(givenUp->layers[k].theta, kept->layers[k].theta) << k;
-        EXPECT_EQ(givenUp->layers[k].flags, kept->layers[k].flags) << k;
-    }
-    EXPECT_EQ(givenUp->originalReversals, kept->originalReversals);
-    EXPECT_EQ(givenUp->check.maxCentreErrorMm, kept->check.maxCentreErrorMm);
+    expectTheSameSchedule(*givenUp, *kept);
     EXPECT_TRUE(copy.axes.empty()); // freed once read
 }
 
@@ -241,8 +251,7 @@ TEST(ScheduleCases, AnInputGivenUpGivesTheResultOfAKeptOne) {
 // reconstruction check reads the centres again, the layers that keep the original orientation
 // their axes, and every figure is the same.
 TEST(ScheduleCases, AnInputReadAgainGivesTheResultOfAKeptOne) {
-    ScheduleParameters parameters = bestPreset();
-    parameters.taperHalfAngleRad = units::degToRad(85.0); // some layers keep the original
+    const ScheduleParameters parameters = parametersKeepingSomeLayers();
     const ScheduleInput input = helix(2.0);
     const auto kept = schedule(input, parameters);
     ASSERT_TRUE(kept.has_value()) << kept.error().toString();
@@ -269,16 +278,7 @@ TEST(ScheduleCases, AnInputReadAgainGivesTheResultOfAKeptOne) {
     EXPECT_EQ(centresRead, input.centres.size());
     EXPECT_GT(axesRead, 0u);
     EXPECT_LT(axesRead, input.axes.size());
-    EXPECT_EQ(readAgain->newAxes, kept->newAxes);
-    ASSERT_EQ(readAgain->layers.size(), kept->layers.size());
-    for (std::size_t k = 0; k < kept->layers.size(); ++k) {
-        EXPECT_EQ(readAgain->layers[k].theta, kept->layers[k].theta) << k;
-        EXPECT_EQ(readAgain->layers[k].flags, kept->layers[k].flags) << k;
-    }
-    EXPECT_EQ(readAgain->originalReversals, kept->originalReversals);
-    EXPECT_EQ(readAgain->check.maxCentreErrorMm, kept->check.maxCentreErrorMm);
-    EXPECT_EQ(readAgain->check.maxUnitError, kept->check.maxUnitError);
-    EXPECT_EQ(readAgain->check.maxTiltError, kept->check.maxTiltError);
+    expectTheSameSchedule(*readAgain, *kept);
 }
 
 TEST(ScheduleCases, NoisyCoordinatesStillGiveAMonotoneSchedule) {

@@ -1,5 +1,6 @@
 #include "core/base/file_io.h"
 
+#include "core/base/descriptor.h"
 #include "core/base/memory_policy.h"
 
 #include <algorithm>
@@ -59,30 +60,6 @@ namespace {
 std::string reason() {
     return std::strerror(errno);
 }
-
-// Closes a descriptor when it goes out of scope.
-class Descriptor {
-  public:
-    explicit Descriptor(int fd) : m_fd(fd) {}
-    Descriptor(const Descriptor&) = delete;
-    Descriptor& operator=(const Descriptor&) = delete;
-    ~Descriptor() {
-        if (m_fd >= 0) {
-            ::close(m_fd);
-        }
-    }
-    int get() const { return m_fd; }
-    bool valid() const { return m_fd >= 0; }
-    // Closes now, reporting the close's own failure (NFS reports write errors here).
-    bool close() {
-        const int fd = m_fd;
-        m_fd = -1;
-        return ::close(fd) == 0;
-    }
-
-  private:
-    int m_fd;
-};
 
 Status failure(const fs::path& path, const std::string& what) {
     return makeError(ErrorCode::WriteFailed, what, {path.string()});

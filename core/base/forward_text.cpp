@@ -41,52 +41,23 @@ Result<FileSnapshot> snapshotOf(const std::filesystem::path& path) {
 
 ForwardText::ForwardText(std::string_view whole) : m_memory(whole), m_size(whole.size()) {}
 
-ForwardText::ForwardText(int descriptor, std::size_t size, std::filesystem::path path)
-    : m_fd(descriptor), m_size(size), m_path(std::move(path)) {}
-
-ForwardText::ForwardText(ForwardText&& other) noexcept
-    : m_memory(other.m_memory), m_fd(std::exchange(other.m_fd, -1)), m_size(other.m_size),
-      m_path(std::move(other.m_path)), m_window(std::move(other.m_window)),
-      m_windowBegin(other.m_windowBegin), m_released(other.m_released),
-      m_failure(std::move(other.m_failure)) {}
-
-ForwardText& ForwardText::operator=(ForwardText&& other) noexcept {
-    if (this != &other) {
-        if (m_fd >= 0) {
-            ::close(m_fd);
-        }
-        m_memory = other.m_memory;
-        m_fd = std::exchange(other.m_fd, -1);
-        m_size = other.m_size;
-        m_path = std::move(other.m_path);
-        m_window = std::move(other.m_window);
-        m_windowBegin = other.m_windowBegin;
-        m_released = other.m_released;
-        m_failure = std::move(other.m_failure);
-    }
-    return *this;
-}
-
-ForwardText::~ForwardText() {
-    if (m_fd >= 0) {
-        ::close(m_fd);
-    }
-}
+ForwardText::ForwardText(Descriptor file, std::size_t size, std::filesystem::path path)
+    : m_file(std::move(file)), m_size(size), m_path(std::move(path)) {}
 
 Result<ForwardText> ForwardText::reopen(const FileSnapshot& snapshot) {
-    const int fd = ::open(snapshot.path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) {
+    Descriptor file(::open(snapshot.path.c_str(), O_RDONLY | O_CLOEXEC));
+    if (!file.valid()) {
         return std::unexpected(unreadable(
             snapshot.path, std::string("cannot read the program again: ") + std::strerror(errno)));
     }
-    ForwardText text(fd, static_cast<std::size_t>(snapshot.size), snapshot.path);
     struct stat status {};
-    if (::fstat(fd, &status) != 0 || !snapshotFrom(snapshot.path, status).sameFileAs(snapshot)) {
+    if (::fstat(file.get(), &status) != 0 ||
+        !snapshotFrom(snapshot.path, status).sameFileAs(snapshot)) {
         return std::unexpected(unreadable(
             snapshot.path, "the program file changed while the job ran (it was written again or "
                            "replaced after it was read); nothing was written: run the job again"));
     }
-    return text;
+    return ForwardText(std::move(file), static_cast<std::size_t>(snapshot.size), snapshot.path);
 }
 
 bool ForwardText::load(std::size_t end) {
@@ -98,8 +69,8 @@ bool ForwardText::load(std::size_t end) {
     const std::size_t target = std::min(m_size, std::max(end, have) + kWindowBytes);
     m_window.resize(target - m_windowBegin);
     while (have < target) {
-        const ssize_t got = ::pread(m_fd, m_window.data() + (have - m_windowBegin), target - have,
-                                    static_cast<off_t>(have));
+        const ssize_t got = ::pread(m_file.get(), m_window.data() + (have - m_windowBegin),
+                                    target - have, static_cast<off_t>(have));
         if (got < 0 && errno == EINTR) {
             continue;
         }
@@ -120,7 +91,7 @@ bool ForwardText::load(std::size_t end) {
 std::string_view ForwardText::range(std::size_t begin, std::size_t end) {
     end = std::min(end, m_size);
     begin = std::min(begin, end);
-    if (m_fd < 0) {
+    if (!m_file.valid()) {
         return m_memory.substr(begin, end - begin);
     }
     if (begin < m_windowBegin) {

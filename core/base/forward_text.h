@@ -3,6 +3,7 @@
 // first read from, a few megabytes at a time. A large program's text then need not stay in
 // memory between its parse and its rewrite, and the file must be the one that was parsed.
 
+#include "core/base/descriptor.h"
 #include "core/base/error.h"
 
 #include <algorithm>
@@ -38,12 +39,6 @@ class ForwardText {
     // parsed from it must not be rewritten from another.
     static Result<ForwardText> reopen(const FileSnapshot& snapshot);
 
-    ForwardText(ForwardText&&) noexcept;
-    ForwardText& operator=(ForwardText&&) noexcept;
-    ForwardText(const ForwardText&) = delete;
-    ForwardText& operator=(const ForwardText&) = delete;
-    ~ForwardText();
-
     std::size_t size() const { return m_size; }
 
     // The bytes [begin, end) (end at most size()). Empty with failure() set when the file
@@ -57,11 +52,11 @@ class ForwardText {
     const std::optional<Error>& failure() const { return m_failure; }
 
   private:
-    ForwardText(int descriptor, std::size_t size, std::filesystem::path path);
+    ForwardText(Descriptor file, std::size_t size, std::filesystem::path path);
     bool load(std::size_t end);
 
     std::string_view m_memory; // the whole text, when in memory
-    int m_fd = -1;             // the file, when read again from it
+    Descriptor m_file;         // the file, when read again from it
     std::size_t m_size = 0;
     std::filesystem::path m_path;
     std::string m_window;          // the file's bytes from m_windowBegin

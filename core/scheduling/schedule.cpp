@@ -219,10 +219,18 @@ struct KeptAxis {
 // again (ScheduleInput::centreAgain, axisAgain) once a handed-over input's arrays were freed.
 struct InputAccess {
     const ScheduleInput& input;
+    ScheduleInput* handedOver = nullptr; // the same object, when the caller gave it up
     std::size_t count = 0;
     bool readAgain = false;
 
     Vec3 axis(std::size_t i) const { return readAgain ? input.axisAgain(i) : input.axes[i]; }
+    // A handed-over input's axes are freed once read for the last time (at once when they can
+    // be read again).
+    void axesRead() const {
+        if (handedOver != nullptr) {
+            freeStorage(handedOver->axes);
+        }
+    }
 };
 
 std::vector<KeptAxis> axesOfKeptLayers(std::span<const LayerResult> layers,
@@ -254,9 +262,8 @@ ReconstructionCheck checkReconstructionOf(const InputAccess& access,
 }
 
 // result.tiltB0 and result.traversalSign are the plane path's.
-// `axesRead` is called once the input's tool axes are read for the last time.
 void assemble(ScheduleResult& result, const InputAccess& input, std::vector<LayerOutcome>& outcomes,
-              const std::function<void()>& axesRead, unsigned threads) {
+              unsigned threads) {
     const std::size_t n = input.count;
     result.layers.reserve(outcomes.size());
     for (LayerOutcome& outcome : outcomes) {
@@ -265,9 +272,7 @@ void assemble(ScheduleResult& result, const InputAccess& input, std::vector<Laye
         result.layers.push_back(std::move(outcome.result));
     }
     const std::vector<KeptAxis> kept = axesOfKeptLayers(result.layers, input);
-    if (axesRead) {
-        axesRead();
-    }
+    input.axesRead();
     // The original angles are counted and dropped first: beside the new angles and axes they
     // would add 8 bytes per sample where read-schedule-write's memory peaks.
     result.originalReversals =
@@ -366,14 +371,13 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     if (!path) {
         return std::unexpected(path.error());
     }
-    InputAccess access{.input = input, .count = input.centres.size(), .readAgain = false};
-    std::function<void()> axesRead;
-    if (handedOver != nullptr && input.centreAgain && input.axisAgain) {
+    InputAccess access{.input = input,
+                       .handedOver = handedOver,
+                       .count = input.centres.size(),
+                       .readAgain = handedOver != nullptr && input.centreAgain && input.axisAgain};
+    if (access.readAgain) {
         freeStorage(handedOver->centres);
-        freeStorage(handedOver->axes);
-        access.readAgain = true;
-    } else if (handedOver != nullptr) {
-        axesRead = [handedOver] { freeStorage(handedOver->axes); };
+        access.axesRead();
     }
     ScheduleResult result;
     result.warnings = path->warnings;
@@ -426,7 +430,7 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     // The layers have what they need of the plane path: its input index per point (8 bytes) is
     // not held beside the new axes.
     freeStorage(*path);
-    assemble(result, access, outcomes, axesRead, parameters.threads);
+    assemble(result, access, outcomes, parameters.threads);
     checkJunctions(result);
     addCheckWarnings(result);
     return result;

@@ -4,6 +4,7 @@
 #include "core/analysis/time_optimal.h"
 #include "core/analysis/time_optimal_sweep.h"
 #include "core/base/file_io.h"
+#include "core/base/free_storage.h"
 #include "core/base/memory_policy.h"
 #include "core/base/number_io.h"
 #include "core/blade/presets.h"
@@ -412,25 +413,53 @@ Status checkTilt(JobResult& result, const JobSpec& spec, ProgressSink& progress)
     return {};
 }
 
+// What a job that releases its samples keeps of the pass's machine axes once the input is
+// analysed: the A of each record, for the layers' reversals. The input's figures are taken
+// (its lost motion among them), T2 reads no positions, and the re-scheduling starts from A's
+// first value: the machine axes (40 bytes per record) go before the scheduling.
+std::vector<double> releasePassAxes(JobResult& result, bool keepA) {
+    std::vector<double> a;
+    if (keepA) {
+        a.reserve(result.axes->size());
+        for (const kinematics::MachineAxes& axes : *result.axes) {
+            a.push_back(axes.a);
+        }
+    }
+    result.axes.reset();
+    result.original.recordAxes.reset();
+    return a;
+}
+
+// Once the pass is split into layers, before they are scheduled: the input's side of the
+// layers' motion, the last reading of the input profile's derivatives and the pass's axes but
+// for the input's T2 (`timeOptimal`, running since the input was analysed). A job that
+// releases its samples waits for T2 and frees them here, before the scheduling's memory peaks.
+void takeInputLayerMotion(JobResult& result, const JobSpec& spec,
+                          std::span<const scheduling::LayerBounds> layers,
+                          std::vector<double>& passA,
+                          std::future<std::optional<double>>& timeOptimal) {
+    result.layerMotionBefore = result.axes
+                                   ? report::layerAxisMotion(layers, result.original, *result.axes)
+                                   : report::layerAxisMotion(layers, result.original, passA);
+    freeStorage(passA);
+    if (releasesSamples(spec)) {
+        result.timeOptimal = timeOptimal.get();
+        result.original.releaseSampleData();
+        returnFreedHeapToTheSystem();
+    }
+}
+
 // Once the schedule is made, before the new motion is: the input's orientation checked against
-// the layers' channels and the input's side of the layers' motion taken. They are the last
-// readings of the layers' curves, and, with the input's T2 (`timeOptimal`, running since the
-// input was analysed), of the input profile's derivatives and the pass's machine axes. A job
-// that releases its samples waits for T2 and frees them all here.
-Status takeLayerFigures(JobResult& result, const JobSpec& spec,
-                        scheduling::ScheduleResult& schedule,
-                        std::future<std::optional<double>>& timeOptimal) {
+// the layers' channels, the last reading of the layers' curves, which a job that releases its
+// samples frees here.
+Status checkScheduledLayers(JobResult& result, const JobSpec& spec,
+                            scheduling::ScheduleResult& schedule) {
     const std::span<const ClRecord> pass =
         std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
     Status orientation = checkOrientationInChannel(schedule, pass, result.program.path().sourceFile,
                                                    spec.check, rotaryLetters(result.machine));
-    result.layerMotionBefore =
-        report::layerAxisMotion(scheduling::layerBounds(schedule), result.original, *result.axes);
     if (releasesSamples(spec)) {
         scheduling::releaseLayerSamples(schedule);
-        result.timeOptimal = timeOptimal.get();
-        result.original.releaseSampleData();
-        result.axes.reset();
         // A layer's curves are small blocks the C library would keep for later.
         returnFreedHeapToTheSystem();
     }
@@ -438,7 +467,7 @@ Status takeLayerFigures(JobResult& result, const JobSpec& spec,
 }
 
 Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel,
-                      std::future<std::optional<double>>& timeOptimal) {
+                      std::future<std::optional<double>>& timeOptimal, std::vector<double>& passA) {
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
                          "the ball radius is not known: give --tool-radius (" +
@@ -450,7 +479,7 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     input.machine = &result.machine;
     input.passFirst = result.pass.first;
     input.passCount = result.pass.count;
-    input.startA = result.axes->front().a;
+    input.startA = result.axes ? result.axes->front().a : passA.front();
     input.toolRadius = result.toolRadius.value_or(0.0);
     input.parameters = spec.parameters;
     input.layerEdits = spec.layerEdits;
@@ -481,8 +510,11 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     // The input's orientation is checked against the channel as soon as the schedule is made;
     // its refusal still comes after the re-scheduling's own.
     Status orientationInChannel;
+    input.layersSplit = [&](std::span<const scheduling::LayerBounds> layers) {
+        takeInputLayerMotion(result, spec, layers, passA, timeOptimal);
+    };
     input.scheduled = [&](scheduling::ScheduleResult& schedule) {
-        orientationInChannel = takeLayerFigures(result, spec, schedule, timeOptimal);
+        orientationInChannel = checkScheduledLayers(result, spec, schedule);
     };
     auto outcome = reschedule(input, cancel);
     if (!outcome) {
@@ -581,6 +613,8 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     for (std::size_t i = warningsBeforeAnalysis; i < result.warnings.size(); ++i) {
         progress.warning(result.warnings[i]);
     }
+    std::vector<double> passA =
+        releasesSamples(spec) ? releasePassAxes(result, spec.reschedule) : std::vector<double>{};
     // T2 needs only the input's profile, which nothing changes from here on: it runs beside the
     // tilt check and the re-scheduling. The future is declared after the result, so an early
     // return waits for it before the result goes.
@@ -598,7 +632,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     }
     if (spec.reschedule) {
         progress.progress(0.5, "re-scheduling the tool orientation");
-        if (auto status = rescheduleInto(result, spec, cancel, timeOptimal); !status) {
+        if (auto status = rescheduleInto(result, spec, cancel, timeOptimal, passA); !status) {
             return std::unexpected(status.error());
         }
         for (const std::string& warning : result.rescheduled->schedule.warnings) {

@@ -39,6 +39,7 @@ scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
         return toolpath::ballCentre(pass[i], radius);
     };
     schedule.axisAgain = [pass](std::size_t i) { return pass[i].axis; };
+    schedule.layersSplit = input.layersSplit;
     return schedule;
 }
 

@@ -72,6 +72,10 @@ struct RescheduleInput {
     // Both on in every job; the benchmarks switch them off to time read-schedule-write alone.
     bool verifyByRereading = true;
     bool analyseNewMotion = true;
+    // Called once the pass is split into layers, before the scheduling's memory peaks, with the
+    // layers' input ranges relative to the pass (ScheduleInput::layersSplit): a job takes the
+    // input's motion per layer here and may release the input's samples.
+    std::function<void(std::span<const scheduling::LayerBounds>)> layersSplit;
     // Called once the schedule is made, before the inverse kinematics, with the schedule the
     // outcome keeps. Nothing of the re-scheduling reads the layers' per-sample curves after this
     // (the new motion is made from the new tool axes), so a job checks the input's orientation

@@ -41,13 +41,33 @@ Peaks peaksWithin(const analysis::AxisProfile& profile, AxisId axis, std::size_t
     return peaks;
 }
 
-int reversalsWithin(std::span<const kinematics::MachineAxes> axes, std::size_t first,
-                    std::size_t last) {
+// The A reversals of records [first, last] of `count`, A of record i being aAt(i).
+template <class AAt>
+int reversalsWithin(std::size_t count, AAt&& aAt, std::size_t first, std::size_t last) {
     std::vector<double> a;
-    for (std::size_t i = first; i <= last && i < axes.size(); ++i) {
-        a.push_back(axes[i].a);
+    for (std::size_t i = first; i <= last && i < count; ++i) {
+        a.push_back(aAt(i));
     }
     return analysis::auditReversals(a).count;
+}
+
+template <class AAt>
+std::vector<LayerAxisMotion> layerAxisMotionWith(std::span<const scheduling::LayerBounds> layers,
+                                                 const analysis::AxisProfile& profile,
+                                                 std::size_t records, AAt&& aAt) {
+    std::vector<LayerAxisMotion> motion;
+    motion.reserve(layers.size());
+    for (const scheduling::LayerBounds& layer : layers) {
+        LayerAxisMotion side;
+        side.aReversals = reversalsWithin(records, aAt, layer.first, layer.last);
+        for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z, AxisId::A}) {
+            const Peaks peaks = peaksWithin(profile, axis, layer.first, layer.last);
+            side.peakVelocity[static_cast<int>(axis)] = peaks.velocity;
+            side.peakAcceleration[static_cast<int>(axis)] = peaks.acceleration;
+        }
+        motion.push_back(side);
+    }
+    return motion;
 }
 
 nlohmann::json statusesJson(const scheduling::LayerResult& layer) {
@@ -96,19 +116,15 @@ std::string layersCsv(const scheduling::ScheduleResult& schedule, std::span<cons
 std::vector<LayerAxisMotion> layerAxisMotion(std::span<const scheduling::LayerBounds> layers,
                                              const analysis::AxisProfile& profile,
                                              std::span<const kinematics::MachineAxes> axes) {
-    std::vector<LayerAxisMotion> motion;
-    motion.reserve(layers.size());
-    for (const scheduling::LayerBounds& layer : layers) {
-        LayerAxisMotion side;
-        side.aReversals = reversalsWithin(axes, layer.first, layer.last);
-        for (AxisId axis : {AxisId::X, AxisId::Y, AxisId::Z, AxisId::A}) {
-            const Peaks peaks = peaksWithin(profile, axis, layer.first, layer.last);
-            side.peakVelocity[static_cast<int>(axis)] = peaks.velocity;
-            side.peakAcceleration[static_cast<int>(axis)] = peaks.acceleration;
-        }
-        motion.push_back(side);
-    }
-    return motion;
+    return layerAxisMotionWith(layers, profile, axes.size(),
+                               [axes](std::size_t i) { return axes[i].a; });
+}
+
+std::vector<LayerAxisMotion> layerAxisMotion(std::span<const scheduling::LayerBounds> layers,
+                                             const analysis::AxisProfile& profile,
+                                             std::span<const double> aOfRecords) {
+    return layerAxisMotionWith(layers, profile, aOfRecords.size(),
+                               [aOfRecords](std::size_t i) { return aOfRecords[i]; });
 }
 
 std::vector<LayerMotion> layerMotion(const BeforeAfter& data) {

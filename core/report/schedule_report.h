@@ -32,10 +32,15 @@ struct LayerAxisMotion {
 // Per layer: `profile`'s peaks over the samples of its records and the reversals of `axes`
 // (per pass record, A continuous) over them. A job takes the input's side as soon as the
 // layers are known, so that a batch job can free the input profile's derivatives and the
-// pass's axes before the new motion is made and analysed.
+// pass's axes before the layers are scheduled.
 std::vector<LayerAxisMotion> layerAxisMotion(std::span<const scheduling::LayerBounds> layers,
                                              const analysis::AxisProfile& profile,
                                              std::span<const kinematics::MachineAxes> axes);
+// The same with only the A of each pass record (rad, continuous): what a batch job keeps of
+// the pass's machine axes once the input is analysed.
+std::vector<LayerAxisMotion> layerAxisMotion(std::span<const scheduling::LayerBounds> layers,
+                                             const analysis::AxisProfile& profile,
+                                             std::span<const double> aOfRecords);
 
 struct BeforeAfter {
     std::span<const LayerAxisMotion> before, after; // per layer

@@ -95,8 +95,19 @@ CurvatureSettings curvatureSettings(const ScheduleParameters& p, const PlanePath
     return settings;
 }
 
+// The input records of each layer of a split: each layer's first and last sample's input.
+std::vector<LayerBounds> boundsOf(const LayerSplit& split, const PlanePath& path) {
+    std::vector<LayerBounds> bounds;
+    bounds.reserve(split.layers.size());
+    for (const LayerSpan& span : split.layers) {
+        bounds.push_back({path.firstInput[span.first], path.firstInput[span.last]});
+    }
+    return bounds;
+}
+
 Result<ChannelStage> buildChannelStage(const PlanePath& path, const ScheduleParameters& p,
-                                       double radius, std::vector<std::string>& warnings) {
+                                       double radius, const ScheduleInput& input,
+                                       std::vector<std::string>& warnings) {
     ChannelStage stage;
     auto tangents =
         computeTangents(path.points, p.tangentChordMinMm, p.tangentChordMedianFactor, p.threads);
@@ -115,6 +126,9 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
     freeStorage(stage.curvature.smoothedCurvature); // the runs stay: the channel reads them
     freeStorage(stage.curvature.hysteresis);
     freeStorage(stage.curvature.state);
+    if (input.layersSplit) {
+        input.layersSplit(boundsOf(stage.split, path));
+    }
     stage.channel = buildRawChannel(stage.tangents, stage.curvature.runs,
                                     p.taperHalfAngleRad + p.safetyAngleRad, p.threads);
     if (p.visibility == Visibility::Global) {
@@ -383,7 +397,7 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     result.warnings = path->warnings;
     result.tiltB0 = path->tiltB0;
     result.traversalSign = path->traversalSign;
-    auto stage = buildChannelStage(*path, parameters, input.toolRadius, result.warnings);
+    auto stage = buildChannelStage(*path, parameters, input.toolRadius, input, result.warnings);
     if (!stage) {
         return std::unexpected(stage.error());
     }

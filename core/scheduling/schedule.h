@@ -21,6 +21,11 @@
 
 namespace bladeaxis::scheduling {
 
+// The input records of one layer, [first, last] (the end is shared with the next layer).
+struct LayerBounds {
+    std::size_t first = 0, last = 0;
+};
+
 struct ScheduleInput {
     std::vector<Vec3> centres; // Q_i ball centres in W (x = rotary axis), feed order, mm
     std::vector<Vec3> axes;    // V_i original tool axes in W (normalised on input)
@@ -31,6 +36,11 @@ struct ScheduleInput {
     // bytes per sample less where the scheduling's memory peaks; the centres are read again
     // for the reconstruction check, the axes of a layer that keeps its orientation.
     std::function<Vec3(std::size_t)> centreAgain, axisAgain;
+    // Called once the path is split into layers, before the channel and the layers are made,
+    // with every layer's bounds as the result's layers will have them (layerBounds). A caller
+    // takes here what it wants per layer from its own per-input data (a job: the input's motion
+    // per layer) and may free that data before the scheduling's memory peaks.
+    std::function<void(std::span<const LayerBounds>)> layersSplit;
 };
 
 enum class LayerStatus {
@@ -104,11 +114,6 @@ std::vector<double> absoluteAngles(std::span<const LayerResult> layers, std::siz
 inline std::vector<double> absoluteAngles(const ScheduleResult& result, Orientation which) {
     return absoluteAngles(result.layers, result.newAxes.size(), which);
 }
-
-// The input records of one layer, [first, last] (the end is shared with the next layer).
-struct LayerBounds {
-    std::size_t first = 0, last = 0;
-};
 
 // The bounds of every layer of a result.
 std::vector<LayerBounds> layerBounds(const ScheduleResult& result);

@@ -65,6 +65,10 @@ TEST_F(ReleasedSamples, AJobThatReleasesItsSamplesReportsAndWritesWhatAKeepingJo
     EXPECT_FALSE(kept->original.sampleDataReleased);
     ASSERT_TRUE(released->original.sampleDataReleased);
     EXPECT_TRUE(released->original.axis(kinematics::AxisId::A).velocity.empty());
+    // The pass's machine axes went once the input was analysed (only A stayed, for the layers).
+    EXPECT_NE(kept->axes, nullptr);
+    EXPECT_EQ(released->axes, nullptr);
+    EXPECT_EQ(released->original.recordAxes, nullptr);
     // Taken before the release: the input's T2 and its layers' motion.
     ASSERT_TRUE(kept->timeOptimal.has_value());
     EXPECT_EQ(released->timeOptimal, kept->timeOptimal);
@@ -83,6 +87,22 @@ TEST_F(ReleasedSamples, AJobThatReleasesItsSamplesReportsAndWritesWhatAKeepingJo
 
     ASSERT_TRUE(writeJobOutputs(m_spec, *released).has_value());
     EXPECT_TRUE(std::filesystem::exists(m_spec.outputProgram));
+}
+
+TEST_F(ReleasedSamples, AnAnalysisThatReleasesItsSamplesReportsWhatAKeepingOneDoes) {
+    m_spec.reschedule = false;
+    m_spec.outputProgram.clear();
+    const auto kept = run(m_spec);
+    ASSERT_TRUE(kept.has_value()) << kept.error().toString();
+    m_spec.releaseSamplesOnceRead = true;
+    const auto released = run(m_spec);
+    ASSERT_TRUE(released.has_value()) << released.error().toString();
+
+    EXPECT_EQ(released->axes, nullptr);
+    EXPECT_EQ(released->timeOptimal, kept->timeOptimal);
+    EXPECT_EQ(released->originalLostMotion.size(), kept->originalLostMotion.size());
+    EXPECT_EQ(reportWithoutTimes(*released, m_spec), reportWithoutTimes(*kept, m_spec));
+    EXPECT_EQ(formatSummary(*released), formatSummary(*kept));
 }
 
 TEST_F(ReleasedSamples, AJobWritingItsCsvFilesOrComparingKeepsTheSamplesTheyRead) {

@@ -174,5 +174,24 @@ TEST(Schedule, ReleasingTheLayerSamplesKeepsTheNewAxesAndEveryPerLayerFigure) {
     }
 }
 
+TEST(Schedule, TheSplitHookGivesTheBoundsOfTheLayersTheResultHas) {
+    ScheduleInput input = appendixBHelix();
+    std::vector<std::vector<LayerBounds>> calls;
+    input.layersSplit = [&calls](std::span<const LayerBounds> layers) {
+        calls.emplace_back(layers.begin(), layers.end());
+    };
+    const auto result = schedule(input, bestPreset());
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+
+    ASSERT_EQ(calls.size(), 1u);
+    const std::vector<LayerBounds> expected = layerBounds(*result);
+    ASSERT_GT(expected.size(), 1u);
+    ASSERT_EQ(calls.front().size(), expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+        EXPECT_EQ(calls.front()[k].first, expected[k].first) << k;
+        EXPECT_EQ(calls.front()[k].last, expected[k].last) << k;
+    }
+}
+
 } // namespace
 } // namespace bladeaxis::scheduling

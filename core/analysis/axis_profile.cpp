@@ -187,12 +187,20 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
     profile.feedReference = options.feedReference;
     profile.method = options.method;
     buildPathParameter(path, options, profile);
+    if (path.posesRead) {
+        path.posesRead();
+    }
     profile.cycleTime = profile.pathParameter.back() / profile.feed;
     const std::size_t n = profile.pathParameter.size();
     std::vector<std::size_t> knots;
     if (options.method == DerivativeMethod::Spline) {
         knots = motionKnots(profile.pathParameter, axes, profile.sampleRecord);
         profile.mergedShortChords = n - knots.size();
+        // Every sample a knot is the differentiation's default: the same spline, without 8
+        // bytes per sample held through the fits.
+        if (knots.size() == n) {
+            freeStorage(knots);
+        }
     }
     // The reversals are audited over every record's A (without merged samples those are the
     // samples' A) before the derivatives, so that no axis's positions outlive its own fit.

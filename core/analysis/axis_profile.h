@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -156,6 +157,10 @@ struct PathSamples {
     // keep, whose tips are then tipOfBall(centre, toolAxes[i], R).
     double keptCentreRadius = 0.0;
     std::span<const double> feeds = {}; // empty: the records' feeds (mm/s)
+    // Called once the analysis has read the tips, tool axes and feeds for the last time (its
+    // path parameter is made), so that a lender that needs its poses no more can free them
+    // before the derivatives are taken. The records' lines may still be read.
+    std::function<void()> posesRead = {};
 
     std::size_t size() const { return records.size(); }
     Vec3 tip(std::size_t i) const {

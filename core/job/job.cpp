@@ -480,6 +480,7 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     input.passFirst = result.pass.first;
     input.passCount = result.pass.count;
     input.startA = result.axes ? result.axes->front().a : passA.front();
+    input.releaseNewToolAxes = releasesSamples(spec);
     input.toolRadius = result.toolRadius.value_or(0.0);
     input.parameters = spec.parameters;
     input.layerEdits = spec.layerEdits;

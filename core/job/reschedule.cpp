@@ -216,9 +216,14 @@ struct NewMotion {
     std::optional<double> timeOptimal;
 };
 
-Result<NewMotion> analyseNewMotion(const RescheduleInput& input, const RescheduleOutcome& outcome) {
-    auto profile = analysis::analyseAxisMotion(
-        outcome.axes, rescheduledSamples(passOf(input), outcome), input.analysis);
+// With input.releaseNewToolAxes the schedule's new tool axes are freed once the analysis has
+// made its path parameter: the re-read check beside it never reads them.
+Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutcome& outcome) {
+    analysis::PathSamples samples = rescheduledSamples(passOf(input), outcome);
+    if (input.releaseNewToolAxes) {
+        samples.posesRead = [&newAxes = outcome.schedule.newAxes] { freeStorage(newAxes); };
+    }
+    auto profile = analysis::analyseAxisMotion(outcome.axes, samples, input.analysis);
     if (!profile) {
         return std::unexpected(profile.error());
     }

@@ -72,6 +72,10 @@ struct RescheduleInput {
     // Both on in every job; the benchmarks switch them off to time read-schedule-write alone.
     bool verifyByRereading = true;
     bool analyseNewMotion = true;
+    // Free the schedule's new tool axes (24 bytes per record) once the new motion's analysis has
+    // read them: for a job whose outputs were all written by the rewrite (nothing makes the
+    // re-scheduled records afterwards: CL output, the CAD check, the comparison, the display).
+    bool releaseNewToolAxes = false;
     // Called once the pass is split into layers, before the scheduling's memory peaks, with the
     // layers' input ranges relative to the pass (ScheduleInput::layersSplit): a job takes the
     // input's motion per layer here and may release the input's samples.

@@ -82,7 +82,8 @@ bool isFlagged(const LayerResult& layer);
 struct ScheduleResult {
     std::vector<LayerResult> layers;
     // Per input sample. The new tips are not kept (24 bytes per sample): each keeps its input's
-    // ball centre, so it is tipOfBall(centres[i], newAxes[i], R).
+    // ball centre, so it is tipOfBall(centres[i], newAxes[i], R). A batch job frees them once
+    // its new motion is analysed (job::RescheduleInput::releaseNewToolAxes).
     std::vector<Vec3> newAxes;
     double tiltB0 = 0.0;                 // rad
     int traversalSign = 1;               // w . a of §1.3; the machine sigma = -traversalSign

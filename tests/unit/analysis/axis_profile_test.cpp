@@ -266,6 +266,38 @@ TEST(AnalyseAxisMotion, LentPosesAndFeedsGiveWhatRecordsCarryingThemGive) {
     EXPECT_EQ(unknownCentres.error().code, ErrorCode::InvalidArgument);
 }
 
+TEST(AnalyseAxisMotion, LentPosesFreedOnceReadGiveTheProfileOfKeptOnes) {
+    const Program line = straightLine(Vec3(1.0, 2.0, -2.0) / 3.0, 40, 30.0, 0.01, 0.002);
+    constexpr double kRadius = 4.0;
+    std::vector<Vec3> toolAxes;
+    for (std::size_t i = 0; i < line.records.size(); ++i) {
+        toolAxes.push_back(
+            Vec3(0.0, 0.2 + 0.05 * std::sin(0.3 * static_cast<double>(i)), 1.0).normalized());
+    }
+    const AxisProfileOptions tip;
+    const PathSamples kept{
+        .records = line.records, .toolAxes = toolAxes, .keptCentreRadius = kRadius};
+    const Result<AxisProfile> fromKept = analyseAxisMotion(line.axes, kept, tip);
+
+    std::vector<Vec3> lentAxes = toolAxes;
+    int calls = 0;
+    PathSamples lent{.records = line.records, .toolAxes = lentAxes, .keptCentreRadius = kRadius};
+    lent.posesRead = [&] {
+        ++calls;
+        // Overwritten where a lender would free them: nothing may read them any more.
+        std::ranges::fill(lentAxes, Vec3(std::nan(""), std::nan(""), std::nan("")));
+    };
+    const Result<AxisProfile> fromLent = analyseAxisMotion(line.axes, lent, tip);
+    ASSERT_TRUE(fromKept.has_value() && fromLent.has_value()) << fromLent.error().toString();
+    EXPECT_EQ(calls, 1);
+    EXPECT_EQ(fromLent->pathParameter, fromKept->pathParameter);
+    for (AxisId axis : kinematics::kAllAxes) {
+        EXPECT_EQ(fromLent->axis(axis).velocity, fromKept->axis(axis).velocity);
+        EXPECT_EQ(fromLent->axis(axis).acceleration, fromKept->axis(axis).acceleration);
+        EXPECT_EQ(fromLent->axis(axis).peakVelocity, fromKept->axis(axis).peakVelocity);
+    }
+}
+
 // A profile keeps no positions of its own: it reads them from the machine axes it was made from,
 // which it shares with their maker, through the records its samples stand for.
 TEST(AnalyseAxisMotion, PositionsAreTheSharedMachineAxesOfTheSampledRecords) {

@@ -69,6 +69,9 @@ TEST_F(ReleasedSamples, AJobThatReleasesItsSamplesReportsAndWritesWhatAKeepingJo
     EXPECT_NE(kept->axes, nullptr);
     EXPECT_EQ(released->axes, nullptr);
     EXPECT_EQ(released->original.recordAxes, nullptr);
+    // And the schedule's new tool axes once the new motion was analysed: the rewrite wrote them.
+    EXPECT_FALSE(kept->rescheduled->schedule.newAxes.empty());
+    EXPECT_TRUE(released->rescheduled->schedule.newAxes.empty());
     // Taken before the release: the input's T2 and its layers' motion.
     ASSERT_TRUE(kept->timeOptimal.has_value());
     EXPECT_EQ(released->timeOptimal, kept->timeOptimal);

@@ -191,6 +191,9 @@ Status validate(const AxisProfile& profile) {
 }
 
 // Backward and forward passes: T2 and the path speed per sample for the problem's bounds.
+// The forward pass reads sample i + 1's controllable bound for the last time where it writes
+// that sample's speed, so the speeds are written over the bounds: one array of 8 bytes per
+// sample rather than two.
 Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& profile) {
     const std::size_t n = problem.size();
     std::vector<double> controllable(n, 0.0); // K_i = [0, controllable[i]]; rest at the end
@@ -198,11 +201,13 @@ Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& 
         controllable[i] = problem.largestControllable(i, controllable[i + 1]);
     }
     TimeOptimalTime result;
-    result.pathSpeed.assign(n, 0.0);
+    result.pathSpeed = std::move(controllable);
+    const std::vector<double>& bound = result.pathSpeed; // sample i + 1's until step i
+    result.pathSpeed[0] = 0.0;
     double x = 0.0;
     for (std::size_t i = 0; i + 1 < n; ++i) {
-        const double u = problem.largestControl(i, x, controllable[i + 1]);
-        const double next = std::clamp(x + 2.0 * problem.step(i) * u, 0.0, controllable[i + 1]);
+        const double u = problem.largestControl(i, x, bound[i + 1]);
+        const double next = std::clamp(x + 2.0 * problem.step(i) * u, 0.0, bound[i + 1]);
         const double speeds = std::sqrt(x) + std::sqrt(next);
         // A constant u cannot cross an interval that starts and ends at rest. The greedy pass
         // reaches rest before the last interval where a jagged path forces full braking at

@@ -24,21 +24,18 @@ std::span<const ClRecord> passOf(const RescheduleInput& input) {
     return std::span(input.program->path().records).subspan(input.passFirst, input.passCount);
 }
 
+// The pass as the scheduling reads it: every centre and axis from its record, when needed, so
+// that no copy of them stands beside the plane path (48 bytes per record).
 scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
     scheduling::ScheduleInput schedule;
     schedule.toolRadius = input.toolRadius;
-    schedule.centres.reserve(input.passCount);
-    schedule.axes.reserve(input.passCount);
     const std::span<const ClRecord> pass = passOf(input);
-    for (const ClRecord& record : pass) {
-        schedule.centres.push_back(toolpath::ballCentre(record, input.toolRadius));
-        schedule.axes.push_back(record.axis);
-    }
-    // The records stay, so the scheduling frees its copies once it has made its plane path.
     schedule.centreAgain = [pass, radius = input.toolRadius](std::size_t i) {
         return toolpath::ballCentre(pass[i], radius);
     };
     schedule.axisAgain = [pass](std::size_t i) { return pass[i].axis; };
+    schedule.readCount = pass.size();
+    schedule.planePathMade = input.planePathMade;
     schedule.layersSplit = input.layersSplit;
     return schedule;
 }

@@ -76,6 +76,8 @@ struct RescheduleInput {
     // read them: for a job whose outputs were all written by the rewrite (nothing makes the
     // re-scheduled records afterwards: CL output, the CAD check, the comparison, the display).
     bool releaseNewToolAxes = false;
+    // Called once the scheduling has made its plane path (ScheduleInput::planePathMade).
+    std::function<void()> planePathMade;
     // Called once the pass is split into layers, before the scheduling's memory peaks, with the
     // layers' input ranges relative to the pass (ScheduleInput::layersSplit): a job takes the
     // input's motion per layer here and may release the input's samples.

@@ -37,11 +37,13 @@ WeightPrefix weightPrefix(std::span<const double> s, std::span<const double> kap
 // first sample within w/2 before i and high the first beyond w/2 after it; both only grow with
 // i, so a range of samples finds its first window by binary search and walks from there, as
 // the serial walk from sample 0 would.
-DefaultInitVector<double> smoothCurvature(std::span<const double> s, std::span<const double> kappa,
-                                          double window, unsigned threads) {
+// The smoothed values are written over kappa's own: only the prefix sums read it.
+DefaultInitVector<double> smoothCurvature(std::span<const double> s,
+                                          DefaultInitVector<double> kappa, double window,
+                                          unsigned threads) {
     const std::size_t n = s.size();
     const WeightPrefix prefix = weightPrefix(s, kappa);
-    DefaultInitVector<double> smoothed(n);
+    DefaultInitVector<double> smoothed = std::move(kappa);
     const double half = 0.5 * window;
     forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
         const auto indexOf = [&s](auto it) { return static_cast<std::size_t>(it - s.begin()); };
@@ -141,11 +143,21 @@ CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    std::span<const double> curvature,
                                    std::span<const double> turning,
                                    const CurvatureSettings& settings, unsigned threads) {
+    return analyseCurvature(arcLength,
+                            DefaultInitVector<double>(curvature.begin(), curvature.end()), turning,
+                            settings, threads);
+}
+
+CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
+                                   DefaultInitVector<double>&& curvature,
+                                   std::span<const double> turning,
+                                   const CurvatureSettings& settings, unsigned threads) {
     CurvatureAnalysis analysis;
     if (arcLength.empty()) {
         return analysis;
     }
-    analysis.smoothedCurvature = smoothCurvature(arcLength, curvature, settings.windowMm, threads);
+    analysis.smoothedCurvature =
+        smoothCurvature(arcLength, std::move(curvature), settings.windowMm, threads);
     analysis.hysteresis = hysteresisStates(analysis.smoothedCurvature, settings.hysteresisPerMm);
     analysis.runs = mergeAndDrop(runsOf(analysis.hysteresis), arcLength, turning, settings);
     analysis.state.assign(arcLength.size(), CurvatureState::Convex);

@@ -38,9 +38,30 @@ PointFault faultOf(const Vec3& centre, const Vec3& axis) {
     return PointFault::None;
 }
 
-Status checkSizes(std::span<const Vec3> centres, std::span<const Vec3> axes) {
+// The input's centres or axes where they are kept: an array (std::span), or a function that
+// makes each one again (PointsReadAgain). The functions below read either through operator[].
+class PointsReadAgain {
+  public:
+    PointsReadAgain(const std::function<Vec3(std::size_t)>& read, std::size_t count)
+        : m_read(read), m_count(count) {}
+    Vec3 operator[](std::size_t i) const { return m_read(i); }
+    std::size_t size() const { return m_count; }
+    bool empty() const { return m_count == 0; }
+
+  private:
+    const std::function<Vec3(std::size_t)>& m_read;
+    std::size_t m_count;
+};
+
+template <class Centres, class Axes>
+Status checkSizes(const Centres& centres, const Axes& axes) {
     if (centres.empty()) {
         return makeError(ErrorCode::InvalidArgument, "the toolpath has no points");
+    }
+    if (centres.size() > std::numeric_limits<std::uint32_t>::max()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "the toolpath has " + std::to_string(centres.size()) +
+                             " points, more than the 2^32 - 1 the scheduling indexes");
     }
     if (centres.size() != axes.size()) {
         return makeError(ErrorCode::InvalidArgument, "centres and axes differ in length (" +
@@ -50,7 +71,8 @@ Status checkSizes(std::span<const Vec3> centres, std::span<const Vec3> axes) {
     return {};
 }
 
-Status faultError(std::span<const Vec3> centres, std::span<const Vec3> axes, std::size_t i) {
+template <class Centres, class Axes>
+Status faultError(const Centres& centres, const Axes& axes, std::size_t i) {
     if (faultOf(centres[i], axes[i]) == PointFault::NonFinite) {
         return makeError(ErrorCode::Geometry,
                          "non-finite centre or axis at point " + std::to_string(i));
@@ -75,30 +97,34 @@ struct MergeRange {
 // Merges the inputs of [begin, end); `lastKept` is the last kept input before `begin` (unused
 // for begin = 0: the first input is always kept). arcLength holds the steps until summed. The
 // inputs are validated in the same pass (a faulty input fails the whole path, whatever it merged).
-MergeRange mergeRange(std::span<const Vec3> centres, std::span<const Vec3> axes, PlanePath& path,
-                      std::size_t begin, std::size_t end, std::size_t lastKept) {
+// Each centre is read once, the last kept one held: a centre read again is made again.
+template <class Centres, class Axes>
+MergeRange mergeRange(const Centres& centres, const Axes& axes, PlanePath& path, std::size_t begin,
+                      std::size_t end, std::size_t lastKept) {
     MergeRange range{begin, end, 0, lastKept, end};
+    Vec3 lastKeptCentre = begin > 0 ? Vec3(centres[lastKept]) : Vec3::Zero();
     for (std::size_t i = begin; i < end; ++i) {
-        if (range.firstFault == end && faultOf(centres[i], axes[i]) != PointFault::None) {
+        const Vec3 centre = centres[i];
+        if (range.firstFault == end && faultOf(centre, axes[i]) != PointFault::None) {
             range.firstFault = i;
         }
-        const double step = i == 0 ? 0.0 : (centres[i] - centres[range.lastKept]).norm();
+        const double step = i == 0 ? 0.0 : (centre - lastKeptCentre).norm();
         if (i > 0 && step < tol::kDuplicatePointMm) {
-            path.sampleOfInput[i] = begin + range.kept - 1; // the sample it is merged into
-            continue;
+            continue; // merged into the last kept sample
         }
         const std::size_t sample = begin + range.kept;
-        path.firstInput[sample] = i;
+        path.firstInput[sample] = static_cast<std::uint32_t>(i);
         path.arcLength[sample] = step;
-        path.sampleOfInput[i] = sample;
         ++range.kept;
         range.lastKept = i;
+        lastKeptCentre = centre;
     }
     return range;
 }
 
-std::vector<MergeRange> mergeRanges(std::span<const Vec3> centres, std::span<const Vec3> axes,
-                                    PlanePath& path, unsigned threads) {
+template <class Centres, class Axes>
+std::vector<MergeRange> mergeRanges(const Centres& centres, const Axes& axes, PlanePath& path,
+                                    unsigned threads) {
     std::vector<MergeRange> ranges(rangeCount(centres.size(), threads));
     forEachRangeOf(centres.size(), ranges.size(),
                    [&](std::size_t r, std::size_t begin, std::size_t end) {
@@ -127,9 +153,6 @@ std::size_t compactRanges(std::span<const MergeRange> ranges, PlanePath& path) {
             };
             move(path.firstInput);
             move(path.arcLength);
-            for (std::size_t i = range.begin; i < range.end; ++i) {
-                path.sampleOfInput[i] -= shift;
-            }
         }
         distinct += range.kept;
     }
@@ -137,12 +160,12 @@ std::size_t compactRanges(std::span<const MergeRange> ranges, PlanePath& path) {
 }
 
 // Returns the first faulty input (faultOf), or the input count when there is none.
-std::size_t mergeDuplicates(std::span<const Vec3> centres, std::span<const Vec3> axes,
-                            PlanePath& path, unsigned threads) {
+template <class Centres, class Axes>
+std::size_t mergeDuplicates(const Centres& centres, const Axes& axes, PlanePath& path,
+                            unsigned threads) {
     const std::size_t n = centres.size();
     path.firstInput.resize(n);
     path.arcLength.resize(n);
-    path.sampleOfInput.resize(n);
     const std::vector<MergeRange> ranges = mergeRanges(centres, axes, path, threads);
     for (const MergeRange& range : ranges) {
         if (range.firstFault < range.end) {
@@ -163,31 +186,35 @@ std::size_t mergeDuplicates(std::span<const Vec3> centres, std::span<const Vec3>
 // Spec §1.3: w = +a when the projected path turns positively about +x around its centroid.
 // [A] The centroid of the projected points replaces "any point on the axis": for a path that
 // is not a whole number of turns the sum then no longer depends on where the axis is.
-int traversalSignOf(std::span<const Vec3> centres, std::span<const std::size_t> distinct) {
+template <class Centres>
+int traversalSignOf(const Centres& centres, std::span<const std::uint32_t> distinct) {
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
     for (std::size_t i : distinct) {
-        centroid += centres[i].tail<2>();
+        const Vec3 centre = centres[i];
+        centroid += centre.tail<2>();
     }
     centroid /= static_cast<double>(distinct.size());
     double sum = 0.0;
+    Vec3 q = centres[distinct.front()];
     for (std::size_t k = 0; k + 1 < distinct.size(); ++k) {
-        const Vec3& q = centres[distinct[k]];
-        const Vec3& next = centres[distinct[k + 1]];
+        const Vec3 next = centres[distinct[k + 1]];
         const Eigen::Vector2d r = q.tail<2>() - centroid;
         const Eigen::Vector2d d = next.tail<2>() - q.tail<2>();
         sum += r.x() * d.y() - r.y() * d.x(); // (y, z) components: (r x d) . x
+        q = next;
     }
     return sum >= 0.0 ? 1 : -1;
 }
 
 // x / |V| of the input axes of the distinct samples [begin, end) (the axial component of
 // V.normalized() without the other two divisions), and their least and greatest values.
-std::pair<double, double> axialRange(const PlanePath& path, std::span<const Vec3> axes,
+template <class Axes>
+std::pair<double, double> axialRange(const PlanePath& path, const Axes& axes,
                                      std::span<double> axial, std::size_t begin, std::size_t end) {
     double low = std::numeric_limits<double>::infinity();
     double high = -low;
     for (std::size_t k = begin; k < end; ++k) {
-        const Vec3& axis = axes[path.firstInput[k]];
+        const Vec3 axis = axes[path.firstInput[k]];
         axial[k] = std::clamp(axis.x() / axis.norm(), -1.0, 1.0);
         low = std::min(low, axial[k]);
         high = std::max(high, axial[k]);
@@ -196,7 +223,8 @@ std::pair<double, double> axialRange(const PlanePath& path, std::span<const Vec3
 }
 
 // Spec §1.2: B_in = asin(V . a) must be constant; otherwise take the median and warn.
-double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std::string>& warn,
+template <class Axes>
+double tiltOf(const PlanePath& path, const Axes& axes, std::vector<std::string>& warn,
               unsigned threads) {
     // asin is monotone, so the extremes and the median are taken on V . a / |V| and only those
     // three go through asin (the same values as asin of every sample, without n asin calls).
@@ -224,10 +252,8 @@ double tiltOf(const PlanePath& path, std::span<const Vec3> axes, std::vector<std
     return median;
 }
 
-} // namespace
-
-Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes,
-                                   unsigned threads) {
+template <class Centres, class Axes>
+Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, unsigned threads) {
     if (auto status = checkSizes(centres, axes); !status) {
         return std::unexpected(status.error());
     }
@@ -258,12 +284,26 @@ Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<cons
     path.originalAngle.resize(distinct);
     forEachRange(distinct, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
-            const Vec3& q = centres[path.firstInput[k]];
+            const Vec3 q = centres[path.firstInput[k]];
             path.points[k] = Vec2(q.z(), -path.traversalSign * q.y());
             path.originalAngle[k] = planeAngle(axes[path.firstInput[k]], path.traversalSign);
         }
     });
     return path;
+}
+
+} // namespace
+
+Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes,
+                                   unsigned threads) {
+    return preparePlanePathOf(centres, axes, threads);
+}
+
+Result<PlanePath> preparePlanePath(const std::function<Vec3(std::size_t)>& centreAt,
+                                   const std::function<Vec3(std::size_t)>& axisAt,
+                                   std::size_t count, unsigned threads) {
+    return preparePlanePathOf(PointsReadAgain(centreAt, count), PointsReadAgain(axisAt, count),
+                              threads);
 }
 
 } // namespace bladeaxis::scheduling

@@ -7,6 +7,8 @@
 #include "core/base/error.h"
 #include "core/geometry/vec.h"
 
+#include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -14,13 +16,14 @@
 namespace bladeaxis::scheduling {
 
 struct PlanePath {
-    std::vector<Vec2> points;                     // q_i in the plane frame (r = +z, p = w x r), mm
-    DefaultInitVector<double> arcLength;          // S from the start, 3-D, strictly increasing, mm
-    DefaultInitVector<double> originalAngle;      // ang(P_perp V_i), wrapped to (-pi, pi], rad
-    DefaultInitVector<std::size_t> firstInput;    // input index of each distinct sample
-    DefaultInitVector<std::size_t> sampleOfInput; // distinct sample index of each input sample
-    double tiltB0 = 0.0;                          // asin(V . a), rad
-    int traversalSign = 1;                        // w . a (+1: feed turns about +x), spec §1.3
+    std::vector<Vec2> points;                // q_i in the plane frame (r = +z, p = w x r), mm
+    DefaultInitVector<double> arcLength;     // S from the start, 3-D, strictly increasing, mm
+    DefaultInitVector<double> originalAngle; // ang(P_perp V_i), wrapped to (-pi, pi], rad
+    // Input index of each distinct sample: 32 bits, half a size_t's 8 bytes per sample, as an
+    // input has fewer than 2^32 samples (preparePlanePath refuses more).
+    DefaultInitVector<std::uint32_t> firstInput;
+    double tiltB0 = 0.0;   // asin(V . a), rad
+    int traversalSign = 1; // w . a (+1: feed turns about +x), spec §1.3
     std::vector<std::string> warnings;
 };
 
@@ -29,6 +32,11 @@ struct PlanePath {
 // on up to `threads` threads (0 = all), with the same result as on one.
 Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes,
                                    unsigned threads = 1);
+// The same with each centre and axis read through a function (bit for bit what the arrays would
+// hold): no copy of the input is made. The functions are called from up to `threads` threads.
+Result<PlanePath> preparePlanePath(const std::function<Vec3(std::size_t)>& centreAt,
+                                   const std::function<Vec3(std::size_t)>& axisAt,
+                                   std::size_t count, unsigned threads = 1);
 
 // ang(P_perp v) of spec §1.3 for a traversal sign w . a: atan2(v . p, v . r), r = +z.
 double planeAngle(const Vec3& v, int traversalSign);

@@ -116,11 +116,11 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
     }
     stage.tangents = std::move(*tangents);
     const CurvatureSettings settings = curvatureSettings(p, path, stage.tangents, radius);
-    stage.curvature = analyseCurvature(path.arcLength, stage.tangents.curvature,
-                                       stage.tangents.turning, settings, p.threads);
     // Each per-point array goes once read for the last time: the channel is built where the
-    // scheduling's memory peaks (beside the plane path and the input).
-    freeStorage(stage.tangents.curvature);
+    // scheduling's memory peaks (beside the plane path and the input). The curvature becomes
+    // the smoothed one.
+    stage.curvature = analyseCurvature(path.arcLength, std::move(stage.tangents.curvature),
+                                       stage.tangents.turning, settings, p.threads);
     stage.split = splitLayers(stage.tangents.forwardAngle, stage.curvature.smoothedCurvature,
                               stage.curvature.runs, p.basePoint);
     freeStorage(stage.curvature.smoothedCurvature); // the runs stay: the channel reads them
@@ -381,17 +381,23 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
         return makeError(ErrorCode::InvalidArgument,
                          "tool radius " + std::to_string(input.toolRadius) + " mm is not > 0");
     }
-    auto path = preparePlanePath(input.centres, input.axes, parameters.threads);
+    auto path = input.onlyRead() ? preparePlanePath(input.centreAgain, input.axisAgain,
+                                                    input.readCount, parameters.threads)
+                                 : preparePlanePath(input.centres, input.axes, parameters.threads);
     if (!path) {
         return std::unexpected(path.error());
     }
     InputAccess access{.input = input,
                        .handedOver = handedOver,
-                       .count = input.centres.size(),
-                       .readAgain = handedOver != nullptr && input.centreAgain && input.axisAgain};
-    if (access.readAgain) {
+                       .count = input.size(),
+                       .readAgain = input.onlyRead() || (handedOver != nullptr &&
+                                                         input.centreAgain && input.axisAgain)};
+    if (access.readAgain && handedOver != nullptr) {
         freeStorage(handedOver->centres);
         access.axesRead();
+    }
+    if (input.planePathMade) {
+        input.planePathMade();
     }
     ScheduleResult result;
     result.warnings = path->warnings;
@@ -423,7 +429,6 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     freeStorage(stage->tangents);
     freeStorage(stage->curvature);
     freeStorage(path->points);
-    freeStorage(path->sampleOfInput);
     std::vector<LayerProblem> problems = buildLayerProblems(
         *path, stage->channel, stage->split, margins, shortLengthMm, parameters.threads);
     // From here on the layers read only the plane path's input index.

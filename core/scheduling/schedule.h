@@ -36,6 +36,18 @@ struct ScheduleInput {
     // bytes per sample less where the scheduling's memory peaks; the centres are read again
     // for the reconstruction check, the axes of a layer that keeps its orientation.
     std::function<Vec3(std::size_t)> centreAgain, axisAgain;
+    // An input whose centres and axes are only read (both arrays empty, both functions given)
+    // has `readCount` samples: the scheduling reads every one through the functions, from the
+    // plane path on, and no copy of the input is ever made (48 bytes per sample beside the
+    // plane path, where a job's memory peaked on millions of blocks).
+    std::size_t readCount = 0;
+
+    bool onlyRead() const { return centres.empty() && axes.empty() && centreAgain && axisAgain; }
+    std::size_t size() const { return onlyRead() ? readCount : centres.size(); }
+    // Called once the plane path is made, before the tangents, curvature and channel: where the
+    // scheduling's memory starts to grow, a caller whose own work beside it holds memory (a
+    // job: the input's T2) may wait for that work to end.
+    std::function<void()> planePathMade;
     // Called once the path is split into layers, before the channel and the layers are made,
     // with every layer's bounds as the result's layers will have them (layerBounds). A caller
     // takes here what it wants per layer from its own per-input data (a job: the input's motion

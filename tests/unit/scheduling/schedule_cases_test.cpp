@@ -279,6 +279,17 @@ TEST(ScheduleCases, AnInputReadAgainGivesTheResultOfAKeptOne) {
     EXPECT_GT(axesRead, 0u);
     EXPECT_LT(axesRead, input.axes.size());
     expectTheSameSchedule(*readAgain, *kept);
+
+    // Given only through the functions (no arrays): every centre and axis read where needed,
+    // the plane path's too, and the same schedule.
+    ScheduleInput onlyRead;
+    onlyRead.toolRadius = input.toolRadius;
+    onlyRead.centreAgain = [&](std::size_t i) { return input.centres[i]; };
+    onlyRead.axisAgain = [&](std::size_t i) { return input.axes[i]; };
+    onlyRead.readCount = input.centres.size();
+    const auto fromReads = schedule(onlyRead, parameters);
+    ASSERT_TRUE(fromReads.has_value()) << fromReads.error().toString();
+    expectTheSameSchedule(*fromReads, *kept);
 }
 
 TEST(ScheduleCases, NoisyCoordinatesStillGiveAMonotoneSchedule) {

@@ -489,7 +489,8 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     input.passFirst = result.pass.first;
     input.passCount = result.pass.count;
     input.startA = result.axes ? result.axes->front().a : passA.front();
-    input.releaseNewToolAxes = releasesSamples(spec);
+    // The CL output is made from them once the job has run.
+    input.releaseNewToolAxes = releasesSamples(spec) && spec.outputCl.empty();
     input.toolRadius = result.toolRadius.value_or(0.0);
     input.parameters = spec.parameters;
     input.layerEdits = spec.layerEdits;

@@ -90,6 +90,11 @@ Result<std::string> rescheduledClText(const JobResult& result) {
         return makeError(ErrorCode::InvalidArgument,
                          "CL output needs re-scheduling; it was not run");
     }
+    if (result.rescheduled->schedule.newAxes.size() != result.pass.count) {
+        return makeError(ErrorCode::Internal,
+                         "the re-scheduled tool axes were released once the job had written its "
+                         "program: run the job with the CL output it writes");
+    }
     toolpath::Toolpath path = result.program.path();
     const auto pass =
         std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);

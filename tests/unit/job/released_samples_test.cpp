@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <iterator>
+#include <string>
 
 namespace bladeaxis::job {
 namespace {
@@ -106,6 +108,28 @@ TEST_F(ReleasedSamples, AnAnalysisThatReleasesItsSamplesReportsWhatAKeepingOneDo
     EXPECT_EQ(released->originalLostMotion.size(), kept->originalLostMotion.size());
     EXPECT_EQ(reportWithoutTimes(*released, m_spec), reportWithoutTimes(*kept, m_spec));
     EXPECT_EQ(formatSummary(*released), formatSummary(*kept));
+}
+
+TEST_F(ReleasedSamples, AJobWritingCutterLocationsKeepsTheNewToolAxesItWritesThemFrom) {
+    m_spec.outputCl = m_scratch.path() / "kept.apt";
+    const auto kept = run(m_spec);
+    ASSERT_TRUE(kept.has_value()) << kept.error().toString();
+    ASSERT_TRUE(writeJobOutputs(m_spec, *kept).has_value());
+    m_spec.releaseSamplesOnceRead = true;
+    m_spec.outputCl = m_scratch.path() / "released.apt";
+    const auto released = run(m_spec);
+    ASSERT_TRUE(released.has_value()) << released.error().toString();
+    ASSERT_TRUE(writeJobOutputs(m_spec, *released).has_value());
+
+    EXPECT_TRUE(released->original.sampleDataReleased);
+    EXPECT_EQ(released->rescheduled->schedule.newAxes, kept->rescheduled->schedule.newAxes);
+    const auto text = [](const std::filesystem::path& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    const std::string keptCl = text(m_scratch.path() / "kept.apt");
+    EXPECT_FALSE(keptCl.empty());
+    EXPECT_EQ(text(m_scratch.path() / "released.apt"), keptCl);
 }
 
 TEST_F(ReleasedSamples, AJobWritingItsCsvFilesOrComparingKeepsTheSamplesTheyRead) {

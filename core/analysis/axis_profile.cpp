@@ -253,10 +253,13 @@ std::vector<double> AxisProfile::positions(kinematics::AxisId id) const {
 }
 
 void AxisProfile::releaseSampleData() {
+    releasedSampleCount = sampleCount();
     for (AxisSeries& series : axes) {
         freeStorage(series.velocity);
         freeStorage(series.acceleration);
     }
+    freeStorage(pathParameter);
+    freeStorage(sampleRecord);
     recordAxes.reset();
     sampleDataReleased = true;
 }

@@ -133,16 +133,22 @@ struct AxisProfile {
     // Every sample's time, for a plot's axis.
     std::vector<double> times() const;
 
-    // True once releaseSampleData freed the axes' per-sample derivatives and positions.
+    // True once releaseSampleData freed the per-sample data.
     bool sampleDataReleased = false;
-    // Frees every axis's per-sample velocity and acceleration (16 bytes per sample and moving
-    // axis) and gives up the profile's share of the machine axes (recordAxes), keeping the
-    // figures (peaks, percentiles, ranges, reversals) and the samples' path parameter and
-    // records: for a holder that has read them for the last time (a batch job once the input's
-    // T2, lost motion and layers' motion are taken). Every axis then reads as still and the
-    // positions as none: nothing that reads either per sample (T2, lost motion, axes.csv, a
-    // plot, a layer's peaks, the comparison) may be given the profile afterwards.
+    // The number of samples: the path parameter's, kept once it is released.
+    std::size_t sampleCount() const {
+        return sampleDataReleased ? releasedSampleCount : pathParameter.size();
+    }
+    // Frees every per-sample array: each axis's velocity and acceleration (16 bytes per sample
+    // and moving axis), the samples' path parameter and records (12), and gives up the
+    // profile's share of the machine axes (recordAxes). It keeps the figures (peaks,
+    // percentiles, ranges, reversals, lengths, times) and the sample count: for a holder that
+    // has read the samples for the last time (a batch job once the input's T2, lost motion and
+    // layers' motion are taken). Every axis then reads as still and the positions and times as
+    // none: nothing that reads samples (T2, lost motion, axes.csv, a plot, a layer's peaks, the
+    // comparison) may be given the profile afterwards.
     void releaseSampleData();
+    std::size_t releasedSampleCount = 0; // sampleCount() once released
 };
 
 // The tool path an analysis reads: a program's records, or new tool poses over them. A

@@ -59,11 +59,12 @@ struct JobSpec {
     // Free the per-sample data the job takes its figures from once it has taken them, before
     // the new motion is made and analysed: the schedule's layer curves once the input's
     // orientation is checked against them (scheduling::releaseLayerSamples, 72 bytes per
-    // record), and the input profile's derivatives and the pass's machine axes
-    // (AxisProfile::releaseSampleData, 16 bytes per record and moving axis, and 40) once its T2
-    // and its layers' motion are taken. The batch front end, where nothing else reads them. The
-    // job keeps them all the same when it compares methods, checks CAD or writes axes.csv and
-    // layers.csv (outputDir), which read them.
+    // record), the input profile's samples (AxisProfile::releaseSampleData, 16 bytes per record
+    // and moving axis, and 12) once its T2 and its layers' motion are taken, the pass's machine
+    // axes but A (40 bytes) once the input is analysed, and the schedule's new tool axes (24)
+    // once the new motion is analysed, unless a CL output is made from them. The batch front
+    // end, where nothing else reads them. The job keeps them all the same when it compares
+    // methods, checks CAD or writes axes.csv and layers.csv (outputDir), which read them.
     bool releaseSamplesOnceRead = false;
     std::filesystem::path outputCl; // the re-scheduled toolpath as CL data (APT); empty: none
     CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)

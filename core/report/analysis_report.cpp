@@ -40,7 +40,7 @@ nlohmann::json axisJson(AxisId axis, const analysis::AxisProfile& profile) {
     json["peak_jerk_" + unit + "_s3"] = toReportUnit(axis, series.peakJerk);
     json["p999_velocity_" + unit + "_s"] = toReportUnit(axis, series.p999Velocity);
     json["p999_acceleration_" + unit + "_s2"] = toReportUnit(axis, series.p999Acceleration);
-    if (!profile.sampleRecord.empty()) {
+    if (profile.sampleCount() > 0) {
         json["min_" + unit] = toReportUnit(axis, series.minPosition);
         json["max_" + unit] = toReportUnit(axis, series.maxPosition);
     }
@@ -66,7 +66,7 @@ const char* bindingName(analysis::ConstantFeedTime::Binding binding) {
 nlohmann::json analysisJson(const analysis::AxisProfile& profile,
                             const analysis::ConstantFeedTime& constantFeed) {
     nlohmann::json json;
-    json["samples"] = profile.pathParameter.size();
+    json["samples"] = profile.sampleCount();
     json["merged_duplicates"] = profile.mergedDuplicates;
     json["path_length_mm"] = profile.pathLength;
     json["feed_mm_min"] = units::perSecondToPerMinute(profile.feed);

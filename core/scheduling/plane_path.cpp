@@ -281,15 +281,24 @@ Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, u
     }
     const std::size_t distinct = path.firstInput.size();
     path.points.resize(distinct);
-    path.originalAngle.resize(distinct);
     forEachRange(distinct, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
             const Vec3 q = centres[path.firstInput[k]];
             path.points[k] = Vec2(q.z(), -path.traversalSign * q.y());
-            path.originalAngle[k] = planeAngle(axes[path.firstInput[k]], path.traversalSign);
         }
     });
     return path;
+}
+
+template <class Axes>
+void addOriginalAnglesOf(PlanePath& path, const Axes& axes, unsigned threads) {
+    const std::size_t distinct = path.firstInput.size();
+    path.originalAngle.resize(distinct);
+    forEachRange(distinct, threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            path.originalAngle[k] = planeAngle(axes[path.firstInput[k]], path.traversalSign);
+        }
+    });
 }
 
 } // namespace
@@ -297,6 +306,16 @@ Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, u
 Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes,
                                    unsigned threads) {
     return preparePlanePathOf(centres, axes, threads);
+}
+
+void addOriginalAngles(PlanePath& path, std::span<const Vec3> axes, unsigned threads) {
+    addOriginalAnglesOf(path, axes, threads);
+}
+
+void addOriginalAngles(PlanePath& path, const std::function<Vec3(std::size_t)>& axisAt,
+                       unsigned threads) {
+    addOriginalAnglesOf(path, PointsReadAgain(axisAt, std::numeric_limits<std::size_t>::max()),
+                        threads);
 }
 
 Result<PlanePath> preparePlanePath(const std::function<Vec3(std::size_t)>& centreAt,

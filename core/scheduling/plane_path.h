@@ -18,7 +18,8 @@ namespace bladeaxis::scheduling {
 struct PlanePath {
     std::vector<Vec2> points;                // q_i in the plane frame (r = +z, p = w x r), mm
     DefaultInitVector<double> arcLength;     // S from the start, 3-D, strictly increasing, mm
-    DefaultInitVector<double> originalAngle; // ang(P_perp V_i), wrapped to (-pi, pi], rad
+    DefaultInitVector<double> originalAngle; // ang(P_perp V_i), wrapped to (-pi, pi], rad:
+                                             // made by addOriginalAngles
     // Input index of each distinct sample: 32 bits, half a size_t's 8 bytes per sample, as an
     // input has fewer than 2^32 samples (preparePlanePath refuses more).
     DefaultInitVector<std::uint32_t> firstInput;
@@ -37,6 +38,14 @@ Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<cons
 Result<PlanePath> preparePlanePath(const std::function<Vec3(std::size_t)>& centreAt,
                                    const std::function<Vec3(std::size_t)>& axisAt,
                                    std::size_t count, unsigned threads = 1);
+
+// The original angles of a path's distinct samples, from the input's axes (the ones the path
+// was made from). Separate from preparePlanePath because only the layer problems read them:
+// the scheduling makes them once the tangents and curvature are gone (8 bytes per sample fewer
+// where its memory peaked).
+void addOriginalAngles(PlanePath& path, std::span<const Vec3> axes, unsigned threads = 1);
+void addOriginalAngles(PlanePath& path, const std::function<Vec3(std::size_t)>& axisAt,
+                       unsigned threads = 1);
 
 // ang(P_perp v) of spec §1.3 for a traversal sign w . a: atan2(v . p, v . r), r = +z.
 double planeAngle(const Vec3& v, int traversalSign);

@@ -429,6 +429,8 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     freeStorage(stage->tangents);
     freeStorage(stage->curvature);
     freeStorage(path->points);
+    addOriginalAngles(
+        *path, [&access](std::size_t i) { return access.axis(i); }, parameters.threads);
     std::vector<LayerProblem> problems = buildLayerProblems(
         *path, stage->channel, stage->split, margins, shortLengthMm, parameters.threads);
     // From here on the layers read only the plane path's input index.

@@ -133,12 +133,15 @@ TEST(ParallelStages, MergedDuplicatesAcrossRangeBoundariesGiveTheSerialPath) {
     for (std::size_t i = begin; i <= end; ++i) {
         duplicate(i, begin - 3);
     }
-    const auto serial = preparePlanePath(input.centres, input.axes, 1);
+    auto serial = preparePlanePath(input.centres, input.axes, 1);
     ASSERT_TRUE(serial.has_value()) << serial.error().toString();
     EXPECT_LT(serial->firstInput.size(), n - (end - begin));
+    addOriginalAngles(*serial, input.axes, 1);
+    EXPECT_EQ(serial->originalAngle.size(), serial->firstInput.size());
     for (unsigned threads : kThreadCounts) {
-        const auto parallel = preparePlanePath(input.centres, input.axes, threads);
+        auto parallel = preparePlanePath(input.centres, input.axes, threads);
         ASSERT_TRUE(parallel.has_value());
+        addOriginalAngles(*parallel, input.axes, threads);
         expectSamePlanePath(*serial, *parallel);
         // Read through functions, each centre and axis made when read: the same path.
         const std::function<Vec3(std::size_t)> centreAt = [&](std::size_t i) {
@@ -147,8 +150,9 @@ TEST(ParallelStages, MergedDuplicatesAcrossRangeBoundariesGiveTheSerialPath) {
         const std::function<Vec3(std::size_t)> axisAt = [&](std::size_t i) {
             return input.axes[i];
         };
-        const auto read = preparePlanePath(centreAt, axisAt, n, threads);
+        auto read = preparePlanePath(centreAt, axisAt, n, threads);
         ASSERT_TRUE(read.has_value());
+        addOriginalAngles(*read, axisAt, threads);
         expectSamePlanePath(*serial, *read);
     }
 }

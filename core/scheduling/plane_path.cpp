@@ -97,18 +97,18 @@ struct MergeRange {
 // Merges the inputs of [begin, end); `lastKept` is the last kept input before `begin` (unused
 // for begin = 0: the first input is always kept). arcLength holds the steps until summed. The
 // inputs are validated in the same pass (a faulty input fails the whole path, whatever it merged).
-// Each centre is read once, the last kept one held: a centre read again is made again.
 template <class Centres, class Axes>
 MergeRange mergeRange(const Centres& centres, const Axes& axes, PlanePath& path, std::size_t begin,
                       std::size_t end, std::size_t lastKept) {
     MergeRange range{begin, end, 0, lastKept, end};
-    Vec3 lastKeptCentre = begin > 0 ? Vec3(centres[lastKept]) : Vec3::Zero();
     for (std::size_t i = begin; i < end; ++i) {
-        const Vec3 centre = centres[i];
+        // References into an array (a copy here went through the stack and cost a third of
+        // the plane path's time); a centre read through a function is a temporary kept alive.
+        const Vec3& centre = centres[i];
         if (range.firstFault == end && faultOf(centre, axes[i]) != PointFault::None) {
             range.firstFault = i;
         }
-        const double step = i == 0 ? 0.0 : (centre - lastKeptCentre).norm();
+        const double step = i == 0 ? 0.0 : (centre - centres[range.lastKept]).norm();
         if (i > 0 && step < tol::kDuplicatePointMm) {
             continue; // merged into the last kept sample
         }
@@ -117,7 +117,6 @@ MergeRange mergeRange(const Centres& centres, const Axes& axes, PlanePath& path,
         path.arcLength[sample] = step;
         ++range.kept;
         range.lastKept = i;
-        lastKeptCentre = centre;
     }
     return range;
 }
@@ -190,18 +189,17 @@ template <class Centres>
 int traversalSignOf(const Centres& centres, std::span<const std::uint32_t> distinct) {
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
     for (std::size_t i : distinct) {
-        const Vec3 centre = centres[i];
+        const Vec3& centre = centres[i];
         centroid += centre.tail<2>();
     }
     centroid /= static_cast<double>(distinct.size());
     double sum = 0.0;
-    Vec3 q = centres[distinct.front()];
     for (std::size_t k = 0; k + 1 < distinct.size(); ++k) {
-        const Vec3 next = centres[distinct[k + 1]];
+        const Vec3& q = centres[distinct[k]];
+        const Vec3& next = centres[distinct[k + 1]];
         const Eigen::Vector2d r = q.tail<2>() - centroid;
         const Eigen::Vector2d d = next.tail<2>() - q.tail<2>();
         sum += r.x() * d.y() - r.y() * d.x(); // (y, z) components: (r x d) . x
-        q = next;
     }
     return sum >= 0.0 ? 1 : -1;
 }
@@ -214,7 +212,7 @@ std::pair<double, double> axialRange(const PlanePath& path, const Axes& axes,
     double low = std::numeric_limits<double>::infinity();
     double high = -low;
     for (std::size_t k = begin; k < end; ++k) {
-        const Vec3 axis = axes[path.firstInput[k]];
+        const Vec3& axis = axes[path.firstInput[k]];
         axial[k] = std::clamp(axis.x() / axis.norm(), -1.0, 1.0);
         low = std::min(low, axial[k]);
         high = std::max(high, axial[k]);
@@ -283,7 +281,7 @@ Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, u
     path.points.resize(distinct);
     forEachRange(distinct, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
-            const Vec3 q = centres[path.firstInput[k]];
+            const Vec3& q = centres[path.firstInput[k]];
             path.points[k] = Vec2(q.z(), -path.traversalSign * q.y());
         }
     });

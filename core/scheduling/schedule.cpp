@@ -429,8 +429,13 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     freeStorage(stage->tangents);
     freeStorage(stage->curvature);
     freeStorage(path->points);
-    addOriginalAngles(
-        *path, [&access](std::size_t i) { return access.axis(i); }, parameters.threads);
+    // From the arrays when they are kept: through a function the angles took three times as
+    // long on two threads.
+    if (access.readAgain) {
+        addOriginalAngles(*path, input.axisAgain, parameters.threads);
+    } else {
+        addOriginalAngles(*path, input.axes, parameters.threads);
+    }
     std::vector<LayerProblem> problems = buildLayerProblems(
         *path, stage->channel, stage->split, margins, shortLengthMm, parameters.threads);
     // From here on the layers read only the plane path's input index.

@@ -39,17 +39,20 @@ PointFault faultOf(const Vec3& centre, const Vec3& axis) {
 }
 
 // The input's centres or axes where they are kept: an array (std::span), or a function that
-// makes each one again (PointsReadAgain). The functions below read either through operator[].
+// makes each one again (PointsReadAgain). The functions below read either through operator[],
+// and each parallel range through a copy of its own: a function shared by two threads, on the
+// caller's stack beside values the caller's thread writes, made reads through it three times
+// slower on two threads than on one.
 class PointsReadAgain {
   public:
-    PointsReadAgain(const std::function<Vec3(std::size_t)>& read, std::size_t count)
-        : m_read(read), m_count(count) {}
+    PointsReadAgain(std::function<Vec3(std::size_t)> read, std::size_t count)
+        : m_read(std::move(read)), m_count(count) {}
     Vec3 operator[](std::size_t i) const { return m_read(i); }
     std::size_t size() const { return m_count; }
     bool empty() const { return m_count == 0; }
 
   private:
-    const std::function<Vec3(std::size_t)>& m_read;
+    std::function<Vec3(std::size_t)> m_read;
     std::size_t m_count;
 };
 
@@ -98,7 +101,7 @@ struct MergeRange {
 // for begin = 0: the first input is always kept). arcLength holds the steps until summed. The
 // inputs are validated in the same pass (a faulty input fails the whole path, whatever it merged).
 template <class Centres, class Axes>
-MergeRange mergeRange(const Centres& centres, const Axes& axes, PlanePath& path, std::size_t begin,
+MergeRange mergeRange(Centres centres, Axes axes, PlanePath& path, std::size_t begin,
                       std::size_t end, std::size_t lastKept) {
     MergeRange range{begin, end, 0, lastKept, end};
     for (std::size_t i = begin; i < end; ++i) {
@@ -186,7 +189,7 @@ std::size_t mergeDuplicates(const Centres& centres, const Axes& axes, PlanePath&
 // [A] The centroid of the projected points replaces "any point on the axis": for a path that
 // is not a whole number of turns the sum then no longer depends on where the axis is.
 template <class Centres>
-int traversalSignOf(const Centres& centres, std::span<const std::uint32_t> distinct) {
+int traversalSignOf(Centres centres, std::span<const std::uint32_t> distinct) {
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
     for (std::size_t i : distinct) {
         const Vec3& centre = centres[i];
@@ -207,8 +210,8 @@ int traversalSignOf(const Centres& centres, std::span<const std::uint32_t> disti
 // x / |V| of the input axes of the distinct samples [begin, end) (the axial component of
 // V.normalized() without the other two divisions), and their least and greatest values.
 template <class Axes>
-std::pair<double, double> axialRange(const PlanePath& path, const Axes& axes,
-                                     std::span<double> axial, std::size_t begin, std::size_t end) {
+std::pair<double, double> axialRange(const PlanePath& path, Axes axes, std::span<double> axial,
+                                     std::size_t begin, std::size_t end) {
     double low = std::numeric_limits<double>::infinity();
     double high = -low;
     for (std::size_t k = begin; k < end; ++k) {
@@ -280,8 +283,9 @@ Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, u
     const std::size_t distinct = path.firstInput.size();
     path.points.resize(distinct);
     forEachRange(distinct, threads, [&](std::size_t begin, std::size_t end) {
+        const Centres ownCentres = centres;
         for (std::size_t k = begin; k < end; ++k) {
-            const Vec3& q = centres[path.firstInput[k]];
+            const Vec3& q = ownCentres[path.firstInput[k]];
             path.points[k] = Vec2(q.z(), -path.traversalSign * q.y());
         }
     });
@@ -293,8 +297,9 @@ void addOriginalAnglesOf(PlanePath& path, const Axes& axes, unsigned threads) {
     const std::size_t distinct = path.firstInput.size();
     path.originalAngle.resize(distinct);
     forEachRange(distinct, threads, [&](std::size_t begin, std::size_t end) {
+        const Axes ownAxes = axes;
         for (std::size_t k = begin; k < end; ++k) {
-            path.originalAngle[k] = planeAngle(axes[path.firstInput[k]], path.traversalSign);
+            path.originalAngle[k] = planeAngle(ownAxes[path.firstInput[k]], path.traversalSign);
         }
     });
 }

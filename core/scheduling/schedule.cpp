@@ -429,8 +429,8 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     freeStorage(stage->tangents);
     freeStorage(stage->curvature);
     freeStorage(path->points);
-    // From the arrays when they are kept: through a function the angles took three times as
-    // long on two threads.
+    // From the arrays when they are kept: a call through a function per angle costs a third
+    // more.
     if (access.readAgain) {
         addOriginalAngles(*path, input.axisAgain, parameters.threads);
     } else {

@@ -430,9 +430,10 @@ std::vector<double> releasePassAxes(JobResult& result, bool keepA) {
     return a;
 }
 
-// The input's T2, which a job that releases its samples awaits before it frees them, and
-// before the scheduling's channel stage: on five million blocks T2's own arrays (16-24 bytes
-// per sample) beside the tangents and curvature took the peak above 1.5 GB when T2 was slow.
+// The input's T2 into the result, unless already there. A job that releases its samples awaits
+// it before it frees them, and before the scheduling's channel stage: on five million blocks T2's
+// own arrays (16-24 bytes per sample) beside the tangents and curvature took the peak above 1.5 GB
+// when T2 was slow.
 void waitForInputT2(JobResult& result, std::future<std::optional<double>>& timeOptimal) {
     if (timeOptimal.valid()) {
         result.timeOptimal = timeOptimal.get();
@@ -654,9 +655,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
             result.warnings.push_back(warning);
         }
     }
-    if (timeOptimal.valid()) { // not yet taken by a job that released the input's samples
-        result.timeOptimal = timeOptimal.get();
-    }
+    waitForInputT2(result, timeOptimal); // unless a job that released its samples took it
     if (cadSpec) {
         progress.progress(0.65, spec.demo && spec.cad.file.empty()
                                     ? "checking the tool against the demo blade's surface"

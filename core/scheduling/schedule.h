@@ -31,10 +31,10 @@ struct ScheduleInput {
     std::vector<Vec3> axes;    // V_i original tool axes in W (normalised on input)
     double toolRadius = 0.0;   // R, mm
     // Where input i's centre and axis can be read again, with the bits of centres[i] and
-    // axes[i] (a job reads them from its records). An input handed over with both
-    // (schedule(ScheduleInput&&)) has its arrays freed as soon as the plane path is made, 48
-    // bytes per sample less where the scheduling's memory peaks; the centres are read again
-    // for the reconstruction check, the axes of a layer that keeps its orientation.
+    // axes[i]. An input handed over with both and its arrays (schedule(ScheduleInput&&)) has
+    // the arrays freed as soon as the plane path is made, 48 bytes per sample less where the
+    // scheduling's memory peaks; the centres are read again for the reconstruction check, the
+    // axes of a layer that keeps its orientation. A job gives no arrays (`readCount`).
     std::function<Vec3(std::size_t)> centreAgain, axisAgain;
     // An input whose centres and axes are only read (both arrays empty, both functions given)
     // has `readCount` samples: the scheduling reads every one through the functions, from the

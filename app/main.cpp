@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
         int guiArgc = static_cast<int>(arguments.size());
         return bladeaxis::ui::runGui(guiArgc, guiArgv.data());
     }
+    // The batch front end runs one job and ends, so the blocks it keeps are never idle.
+    bladeaxis::keepFreedLargeBlocksForReuse();
     if (std::getenv("BLADEAXIS_TESTING_DISABLE_CATCH_ALL") != nullptr) {
         return bladeaxis::app::runBatchCommandLine(arguments, std::cout, std::cerr);
     }

@@ -26,6 +26,28 @@ void returnLargeBlocksToTheSystem();
 // address-sanitizer build (whose allocator serves `new`), this does nothing.
 void backLargeBlocksWithHugePages();
 
+// Keeps blocks of 4 MB or more, once freed, for the next request of about their size, instead
+// of handing them back to the system (LargeBlockShelf): a job's stages free and allocate
+// per-record arrays of the same sizes one after another, and a kept block is served again
+// without the kernel zeroing its pages. What is kept never makes the process larger than the
+// most it held in large blocks at once. For a program that runs one job and ends (the batch
+// front end); a program that stays (the GUI) would keep that memory while idle. Where the
+// application does not replace `new` (an address-sanitizer build, other C libraries), this
+// does nothing.
+void keepFreedLargeBlocksForReuse();
+
+// A file's pages mapped for reading join the resident set as they are read: `bytes` of them
+// count as in use for the bound of the kept blocks until given back here (MappedText does
+// both). Without the policy in force this does nothing.
+void countMappedFileBytes(std::size_t bytes);
+void uncountMappedFileBytes(std::size_t bytes);
+
+// Stops keeping freed large blocks and frees those kept.
+void stopKeepingFreedLargeBlocks();
+
+// The bytes of the blocks kept now (for tests and benchmarks).
+std::size_t keptLargeBlockBytes();
+
 // Whether backLargeBlocksWithHugePages() is in force in this process (for tests).
 bool largeBlocksAreAdvisedHugePages();
 

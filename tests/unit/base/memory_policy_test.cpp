@@ -1,3 +1,4 @@
+#include "core/base/file_io.h"
 #include "core/base/memory_policy.h"
 
 #include <gtest/gtest.h>
@@ -140,6 +141,72 @@ std::vector<bool> residentPages(const char* begin, std::size_t bytes) {
         resident.push_back((flag & 1u) != 0);
     }
     return resident;
+}
+
+// The address of a block value-initialised (so written) and freed: a number, as a freed
+// pointer may not be read.
+std::uintptr_t touchedThenFreed(std::size_t bytes) {
+    auto block = std::make_unique<char[]>(bytes);
+    const auto address = reinterpret_cast<std::uintptr_t>(block.get());
+    block.reset();
+    return address;
+}
+
+TEST(MemoryPolicy, AFreedLargeBlockIsServedAgainToTheNextRequestOfItsSize) {
+    if (kOwnAllocator) {
+        GTEST_SKIP() << "an address-sanitizer build has its own allocator";
+    }
+    returnLargeBlocksToTheSystem();
+    keepFreedLargeBlocksForReuse();
+    constexpr std::size_t kBytes = 16u << 20;
+    const std::uintptr_t freed = touchedThenFreed(kBytes);
+    EXPECT_GE(keptLargeBlockBytes(), kBytes);
+    const auto again = std::make_unique<char[]>(kBytes);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(again.get()), freed);
+    EXPECT_EQ(again[kBytes / 2], 0) << "value-initialised like any new block";
+    EXPECT_EQ(keptLargeBlockBytes(), 0u);
+    stopKeepingFreedLargeBlocks();
+}
+
+// The 32 MiB block was the most the process held; with it kept, 8 MiB of small blocks would
+// make the process larger than that, so the kept block goes back to the system.
+TEST(MemoryPolicy, SmallBlocksInUseMakeKeptBlocksGoRatherThanThePeakGrow) {
+    if (kOwnAllocator) {
+        GTEST_SKIP() << "an address-sanitizer build has its own allocator";
+    }
+    returnLargeBlocksToTheSystem();
+    keepFreedLargeBlocksForReuse();
+    touchedThenFreed(32u << 20);
+    ASSERT_GE(keptLargeBlockBytes(), 32u << 20);
+    constexpr std::size_t kSmall = 4096;
+    std::vector<std::unique_ptr<char[]>> small((8u << 20) / kSmall);
+    for (auto& block : small) {
+        block = std::make_unique<char[]>(kSmall);
+    }
+    EXPECT_EQ(keptLargeBlockBytes(), 0u);
+    stopKeepingFreedLargeBlocks();
+}
+
+// A file mapped for reading grows the resident set as it is read, like a block in use.
+TEST(MemoryPolicy, AMappedFileMakesKeptBlocksGoRatherThanThePeakGrow) {
+    if (kOwnAllocator) {
+        GTEST_SKIP() << "an address-sanitizer build has its own allocator";
+    }
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("bladeaxis_mapped_" + std::to_string(::getpid()) + ".txt");
+    auto staged = StagedFile::open(path);
+    ASSERT_TRUE(staged) << staged.error().message;
+    ASSERT_TRUE(staged->append(std::string(8u << 20, 'x')));
+    returnLargeBlocksToTheSystem();
+    keepFreedLargeBlocksForReuse();
+    touchedThenFreed(32u << 20);
+    ASSERT_GE(keptLargeBlockBytes(), 32u << 20);
+    {
+        auto mapped = staged->mapText();
+        ASSERT_TRUE(mapped) << mapped.error().message;
+        EXPECT_EQ(keptLargeBlockBytes(), 0u);
+    }
+    stopKeepingFreedLargeBlocks();
 }
 
 TEST(MemoryPolicy, ReturnedPagesLeaveTheResidentSetAndThePartialPagesKeepTheirBytes) {

@@ -39,9 +39,15 @@ Result<std::string> readTextFile(const fs::path& path) {
     in.seekg(0, std::ios::end);
     const auto size = in.tellg();
     if (size > 0) {
-        content.resize(static_cast<std::size_t>(size));
         in.seekg(0, std::ios::beg);
-        in.read(content.data(), static_cast<std::streamsize>(content.size()));
+        // Read straight into the string's fresh memory, not over zeros written first (a
+        // 320 MB program's text is written once instead of twice); a file that shrank since
+        // its size was taken gives what it still has.
+        content.resize_and_overwrite(static_cast<std::size_t>(size),
+                                     [&in](char* data, std::size_t bytes) {
+                                         in.read(data, static_cast<std::streamsize>(bytes));
+                                         return static_cast<std::size_t>(in.gcount());
+                                     });
     }
     if (!in && !in.eof()) {
         return makeError(ErrorCode::FileUnreadable, "read failed", {path.string()});

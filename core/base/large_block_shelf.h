@@ -29,12 +29,15 @@ class LargeBlockShelf {
   public:
     // Blocks smaller than this are not kept: the C library serves them well enough.
     static constexpr std::size_t kSmallestKeptBytes = std::size_t{4} << 20;
+    // A job's stage frees at most a few dozen per-record arrays before the next stage asks for
+    // arrays of the same sizes; beyond that, blocks go back to the C library.
     static constexpr std::size_t kPlaces = 32;
 
     constexpr LargeBlockShelf() = default;
 
     // A kept block of at least `bytes` and at most 1/32 more, the smallest such, now in use;
-    // nullptr when none fits.
+    // nullptr when none fits. The arrays of one job are of a few sizes (records times 8, 24,
+    // 40 bytes); a much larger block would hold resident pages the request never uses.
     void* take(std::size_t bytes);
 
     // Records memory newly in use (blocks obtained from the C library, a file mapped for

@@ -2,6 +2,7 @@
 
 #include "core/base/descriptor.h"
 #include "core/base/memory_policy.h"
+#include "core/base/pages_mapped_ahead.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -42,12 +43,14 @@ Result<std::string> readTextFile(const fs::path& path) {
         in.seekg(0, std::ios::beg);
         // Read straight into the string's fresh memory, not over zeros written first (a
         // 320 MB program's text is written once instead of twice); a file that shrank since
-        // its size was taken gives what it still has.
-        content.resize_and_overwrite(static_cast<std::size_t>(size),
-                                     [&in](char* data, std::size_t bytes) {
-                                         in.read(data, static_cast<std::streamsize>(bytes));
-                                         return static_cast<std::size_t>(in.gcount());
-                                     });
+        // its size was taken gives what it still has. The back half's pages are mapped on the
+        // other core while the front half is read (PagesMappedAhead).
+        content.resize_and_overwrite(
+            static_cast<std::size_t>(size), [&in](char* data, std::size_t bytes) {
+                const PagesMappedAhead backHalf({{data + bytes / 2, bytes - bytes / 2}});
+                in.read(data, static_cast<std::streamsize>(bytes));
+                return static_cast<std::size_t>(in.gcount());
+            });
     }
     if (!in && !in.eof()) {
         return makeError(ErrorCode::FileUnreadable, "read failed", {path.string()});

@@ -2,6 +2,7 @@
 
 #include "core/base/file_io.h"
 #include "core/base/number_io.h"
+#include "core/base/pages_mapped_ahead.h"
 #include "core/io/nc/detail/block_scanner.h"
 #include "core/io/nc/detail/error_list.h"
 #include "core/io/nc/detail/modal_interpreter.h"
@@ -280,6 +281,22 @@ Status interpretProgram(GcodeProgram& program, std::string_view text, std::strin
     return {};
 }
 
+// The interpreter writes the records and their sources one line after another, a few hundred
+// megabytes on a large program: their reserved pages are mapped on the other core meanwhile
+// (PagesMappedAhead), so that the reading, which runs on one core, does not stop at each fresh
+// page. The pages are those the records are reserved for: one per line.
+Status readIntoReservation(GcodeProgram& program, std::string_view fileName,
+                           const kinematics::MachineModel& machine, const ReadOptions& options,
+                           RecordOutlet& outlet) {
+    auto& records = program.path.records;
+    const PagesMappedAhead ahead(
+        {{records.data(), records.capacity() * sizeof(*records.data())},
+         {program.sources.data(), program.sources.capacity() * sizeof(*program.sources.data())},
+         {program.programmedFeeds.data(),
+          program.programmedFeeds.capacity() * sizeof(*program.programmedFeeds.data())}});
+    return interpretProgram(program, program.text, fileName, machine, options, outlet);
+}
+
 Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
                                     const kinematics::MachineModel& machine,
                                     const ReadOptions& options) {
@@ -290,8 +307,8 @@ Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
     program.text = std::move(text);
     reserveForLines(program, machine);
     RecordOutlet keepAll(nullptr);
-    if (Status read = interpretProgram(program, program.text, fileName, machine, options, keepAll);
-        !read) {
+    Status read = readIntoReservation(program, fileName, machine, options, keepAll);
+    if (!read) {
         return std::unexpected(read.error());
     }
     // Shrinking copies the records, so it is done only when the reservation was mostly wasted

@@ -28,6 +28,20 @@ TEST_F(FileIo, WrittenContentReadsBackIdentically) {
     EXPECT_EQ(*back, content);
 }
 
+// Large enough for the back half's pages to be mapped on a second thread while the front half
+// is read.
+TEST_F(FileIo, ALargeFileReadsBackIdentically) {
+    const fs::path path = m_dir / "large.nc";
+    std::string content;
+    for (int line = 0; content.size() < (24u << 20); ++line) {
+        content += "N" + std::to_string(line) + " G1 X" + std::to_string(line % 977) + ".125\n";
+    }
+    ASSERT_TRUE(writeFileAtomically(path, content).has_value());
+    const auto back = readTextFile(path);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_TRUE(*back == content);
+}
+
 TEST_F(FileIo, MissingFileIsFileNotFoundNamingThePath) {
     const auto result = readTextFile(m_dir / "missing.nc");
     ASSERT_FALSE(result.has_value());

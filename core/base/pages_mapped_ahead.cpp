@@ -1,0 +1,85 @@
+#include "core/base/pages_mapped_ahead.h"
+
+#include <algorithm>
+#include <cstdint>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
+namespace bladeaxis {
+
+namespace {
+
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+constexpr bool kCanPopulate = true;
+#else
+constexpr bool kCanPopulate = false;
+#endif
+
+// Below this a thread's start costs more than the pages' mapping it moves.
+constexpr std::size_t kSmallestMappedAhead = std::size_t{8} << 20;
+// A step: two huge pages, or 1,024 small ones.
+constexpr std::uintptr_t kStepBytes = std::uintptr_t{4} << 20;
+
+std::uintptr_t pageBytes() {
+#if defined(__linux__)
+    return static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+#else
+    return 4096;
+#endif
+}
+
+// Maps the whole pages of [first, end); false when the kernel refuses (a kernel without
+// MADV_POPULATE_WRITE, a range no longer mapped): the rest is left to the writer's first touch.
+bool populate(std::uintptr_t first, std::uintptr_t end) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    return ::madvise(reinterpret_cast<void*>(first), end - first, MADV_POPULATE_WRITE) == 0;
+#else
+    (void)first;
+    (void)end;
+    return false;
+#endif
+}
+
+} // namespace
+
+PagesMappedAhead::PagesMappedAhead(std::vector<MemoryRange> ranges) : m_ranges(std::move(ranges)) {
+    std::size_t total = 0;
+    for (const MemoryRange& range : m_ranges) {
+        total += range.bytes;
+    }
+    if (kCanPopulate && total >= kSmallestMappedAhead && std::thread::hardware_concurrency() >= 2) {
+        m_thread = std::thread([this] { mapAll(); });
+    }
+}
+
+PagesMappedAhead::~PagesMappedAhead() {
+    m_stop.store(true, std::memory_order_relaxed);
+    if (m_thread.joinable()) {
+        m_thread.join();
+    }
+}
+
+void PagesMappedAhead::finish() {
+    if (m_thread.joinable()) {
+        m_thread.join();
+    }
+}
+
+void PagesMappedAhead::mapAll() {
+    const std::uintptr_t page = pageBytes();
+    for (const MemoryRange& range : m_ranges) {
+        const auto begin = reinterpret_cast<std::uintptr_t>(range.begin);
+        const std::uintptr_t end = (begin + range.bytes) & ~(page - 1);
+        for (std::uintptr_t at = (begin + page - 1) & ~(page - 1); at < end; at += kStepBytes) {
+            if (m_stop.load(std::memory_order_relaxed) ||
+                !populate(at, std::min(end, at + kStepBytes))) {
+                return;
+            }
+        }
+    }
+}
+
+} // namespace bladeaxis

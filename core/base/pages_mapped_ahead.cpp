@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <system_error>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -51,7 +52,11 @@ PagesMappedAhead::PagesMappedAhead(std::vector<MemoryRange> ranges) : m_ranges(s
         total += range.bytes;
     }
     if (kCanPopulate && total >= kSmallestMappedAhead && std::thread::hardware_concurrency() >= 2) {
-        m_thread = std::thread([this] { mapAll(); });
+        try {
+            m_thread = std::thread([this] { mapAll(); });
+        } catch (const std::system_error&) {
+            // No thread to be had (a process at its limit): the writer maps its pages itself.
+        }
     }
 }
 

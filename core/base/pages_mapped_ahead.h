@@ -12,8 +12,8 @@
 // The thread maps a few megabytes at a time and stops at the next step when this object is
 // destroyed. Mapping a block that was freed meanwhile is harmless: a range no longer mapped is
 // refused, and one mapped again by another allocation only has its pages mapped sooner. Where
-// the kernel cannot populate (before Linux 5.14, elsewhere than Linux), on one core, or for
-// blocks too small to be worth a thread, this does nothing.
+// the kernel cannot populate (before Linux 5.14, elsewhere than Linux), on one core, for blocks
+// too small to be worth a thread, or when no thread can be started, this does nothing.
 
 #include <atomic>
 #include <cstddef>

@@ -1,6 +1,7 @@
 #include "core/base/memory_policy.h"
 
 #include "core/base/large_block_shelf.h"
+#include "core/base/whole_pages.h"
 
 #include <atomic>
 #include <cstdint>
@@ -12,7 +13,6 @@
 #endif
 #if defined(__linux__)
 #include <sys/mman.h>
-#include <unistd.h>
 #endif
 
 namespace bladeaxis {
@@ -24,25 +24,6 @@ std::atomic<bool> keepFreedLargeBlocks{false};
 constinit LargeBlockShelf shelf;
 
 constexpr std::size_t kAdviseFromBytes = std::size_t{4} << 20;
-
-std::uintptr_t pageBytes() {
-#if defined(__linux__)
-    static const auto bytes = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
-    return bytes;
-#else
-    return 4096;
-#endif
-}
-
-// The whole pages inside [block, block + bytes): [first, end), empty when first >= end.
-struct PageRange {
-    std::uintptr_t first = 0, end = 0;
-};
-PageRange wholePagesIn(void* block, std::size_t bytes) {
-    const std::uintptr_t page = pageBytes();
-    const auto begin = reinterpret_cast<std::uintptr_t>(block);
-    return {(begin + page - 1) & ~(page - 1), (begin + bytes) & ~(page - 1)};
-}
 
 #if defined(__linux__) && defined(__GLIBC__) && defined(MADV_HUGEPAGE) &&                          \
     !defined(__SANITIZE_ADDRESS__)

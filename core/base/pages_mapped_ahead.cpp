@@ -1,12 +1,13 @@
 #include "core/base/pages_mapped_ahead.h"
 
+#include "core/base/whole_pages.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <system_error>
 
 #if defined(__linux__)
 #include <sys/mman.h>
-#include <unistd.h>
 #endif
 
 namespace bladeaxis {
@@ -23,14 +24,6 @@ constexpr bool kCanPopulate = false;
 constexpr std::size_t kSmallestMappedAhead = std::size_t{8} << 20;
 // A step: two huge pages, or 1,024 small ones.
 constexpr std::uintptr_t kStepBytes = std::uintptr_t{4} << 20;
-
-std::uintptr_t pageBytes() {
-#if defined(__linux__)
-    return static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
-#else
-    return 4096;
-#endif
-}
 
 // Maps the whole pages of [first, end); false when the kernel refuses (a kernel without
 // MADV_POPULATE_WRITE, a range no longer mapped): the rest is left to the writer's first touch.
@@ -74,13 +67,11 @@ void PagesMappedAhead::finish() {
 }
 
 void PagesMappedAhead::mapAll() {
-    const std::uintptr_t page = pageBytes();
     for (const MemoryRange& range : m_ranges) {
-        const auto begin = reinterpret_cast<std::uintptr_t>(range.begin);
-        const std::uintptr_t end = (begin + range.bytes) & ~(page - 1);
-        for (std::uintptr_t at = (begin + page - 1) & ~(page - 1); at < end; at += kStepBytes) {
+        const PageRange pages = wholePagesIn(range.begin, range.bytes);
+        for (std::uintptr_t at = pages.first; at < pages.end; at += kStepBytes) {
             if (m_stop.load(std::memory_order_relaxed) ||
-                !populate(at, std::min(end, at + kStepBytes))) {
+                !populate(at, std::min(pages.end, at + kStepBytes))) {
                 return;
             }
         }

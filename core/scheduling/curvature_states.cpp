@@ -9,29 +9,6 @@ namespace bladeaxis::scheduling {
 
 namespace {
 
-// Prefix sums of the arc-length weights and of the weighted curvature, in order (a sum in
-// another order would round differently).
-struct WeightPrefix {
-    DefaultInitVector<double> weighted, weight; // n + 1 each, [0] = 0
-};
-
-WeightPrefix weightPrefix(std::span<const double> s, std::span<const double> kappa) {
-    const std::size_t n = s.size();
-    WeightPrefix prefix;
-    prefix.weighted.resize(n + 1);
-    prefix.weight.resize(n + 1);
-    prefix.weighted[0] = 0.0;
-    prefix.weight[0] = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-        const double left = k > 0 ? s[k] - s[k - 1] : 0.0;
-        const double right = k + 1 < n ? s[k + 1] - s[k] : 0.0;
-        const double weight = std::max(0.5 * (left + right), 1e-12);
-        prefix.weighted[k + 1] = prefix.weighted[k] + kappa[k] * weight;
-        prefix.weight[k + 1] = prefix.weight[k] + weight;
-    }
-    return prefix;
-}
-
 // kappa-bar_i: arc-length weighted mean of the per-sample curvature over |S_k - S_i| <= w/2
 // (two pointers over prefix sums, O(n)). The window of sample i is [low(i), high(i)), low the
 // first sample within w/2 before i and high the first beyond w/2 after it; both only grow with
@@ -39,10 +16,10 @@ WeightPrefix weightPrefix(std::span<const double> s, std::span<const double> kap
 // the serial walk from sample 0 would.
 // The smoothed values are written over kappa's own: only the prefix sums read it.
 DefaultInitVector<double> smoothCurvature(std::span<const double> s,
-                                          DefaultInitVector<double> kappa, double window,
+                                          DefaultInitVector<double> kappa,
+                                          const CurvatureWeights prefix, double window,
                                           unsigned threads) {
     const std::size_t n = s.size();
-    const WeightPrefix prefix = weightPrefix(s, kappa);
     DefaultInitVector<double> smoothed = std::move(kappa);
     const double half = 0.5 * window;
     forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
@@ -139,6 +116,23 @@ std::vector<ConcaveRun> mergeAndDrop(std::vector<ConcaveRun> runs, std::span<con
 
 } // namespace
 
+CurvatureWeights curvatureWeights(std::span<const double> s, std::span<const double> kappa) {
+    const std::size_t n = s.size();
+    CurvatureWeights prefix;
+    prefix.weighted.resize(n + 1);
+    prefix.weight.resize(n + 1);
+    prefix.weighted[0] = 0.0;
+    prefix.weight[0] = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double left = k > 0 ? s[k] - s[k - 1] : 0.0;
+        const double right = k + 1 < n ? s[k + 1] - s[k] : 0.0;
+        const double weight = std::max(0.5 * (left + right), 1e-12);
+        prefix.weighted[k + 1] = prefix.weighted[k] + kappa[k] * weight;
+        prefix.weight[k + 1] = prefix.weight[k] + weight;
+    }
+    return prefix;
+}
+
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    std::span<const double> curvature,
                                    std::span<const double> turning,
@@ -152,12 +146,21 @@ CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    DefaultInitVector<double>&& curvature,
                                    std::span<const double> turning,
                                    const CurvatureSettings& settings, unsigned threads) {
+    CurvatureWeights weights = curvatureWeights(arcLength, curvature);
+    return analyseCurvature(arcLength, std::move(curvature), std::move(weights), turning, settings,
+                            threads);
+}
+
+CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
+                                   DefaultInitVector<double>&& curvature,
+                                   CurvatureWeights&& weights, std::span<const double> turning,
+                                   const CurvatureSettings& settings, unsigned threads) {
     CurvatureAnalysis analysis;
     if (arcLength.empty()) {
         return analysis;
     }
-    analysis.smoothedCurvature =
-        smoothCurvature(arcLength, std::move(curvature), settings.windowMm, threads);
+    analysis.smoothedCurvature = smoothCurvature(arcLength, std::move(curvature),
+                                                 std::move(weights), settings.windowMm, threads);
     analysis.hysteresis = hysteresisStates(analysis.smoothedCurvature, settings.hysteresisPerMm);
     analysis.runs = mergeAndDrop(runsOf(analysis.hysteresis), arcLength, turning, settings);
     analysis.state.assign(arcLength.size(), CurvatureState::Convex);

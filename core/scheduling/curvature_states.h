@@ -33,6 +33,15 @@ struct CurvatureAnalysis {
     std::vector<ConcaveRun> runs;                 // kept runs in feed order
 };
 
+// Prefix sums of the arc-length weights of the samples and of their weighted curvature, the
+// smoothing's inputs: n + 1 each, [0] = 0, summed in sample order (a sum in another order
+// would round differently, so this is one chain through the path).
+struct CurvatureWeights {
+    DefaultInitVector<double> weighted, weight;
+};
+CurvatureWeights curvatureWeights(std::span<const double> arcLength,
+                                  std::span<const double> curvature);
+
 // `curvature` is the per-sample estimate of TangentField; `turning` the per-sample tau. The
 // smoothing runs on up to `threads` threads (0 = all), with the same result as on one.
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
@@ -44,6 +53,12 @@ CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    DefaultInitVector<double>&& curvature,
                                    std::span<const double> turning,
+                                   const CurvatureSettings& settings, unsigned threads = 1);
+// The same with the weights already summed (curvatureWeights of the same samples), so that
+// their sum can run beside other serial work. They are freed once the smoothing has read them.
+CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
+                                   DefaultInitVector<double>&& curvature,
+                                   CurvatureWeights&& weights, std::span<const double> turning,
                                    const CurvatureSettings& settings, unsigned threads = 1);
 
 // Indices where the state differs from the predecessor's, in feed order (the altered points).

@@ -26,6 +26,11 @@ bool better(const Candidate& a, const Candidate& b) {
     return a.absTurningRad > b.absTurningRad;
 }
 
+// better(), and of two equally good candidates the first along the path.
+bool preferred(const Candidate& a, const Candidate& b) {
+    return better(a, b) || (!better(b, a) && a.index < b.index);
+}
+
 std::vector<Candidate> candidatesOf(std::span<const ConcaveRun> runs, std::size_t n,
                                     BasePointRule rule) {
     std::vector<Candidate> candidates;
@@ -39,16 +44,31 @@ std::vector<Candidate> candidatesOf(std::span<const ConcaveRun> runs, std::size_
 }
 
 struct Walker {
+    Walker(std::span<const double> phi_, std::span<const double> kappa_,
+           std::vector<Candidate> candidates_)
+        : phi(phi_), kappa(kappa_), candidates(std::move(candidates_)) {
+        // By turning angle, so that a window of angles is found by binary search instead of
+        // a scan of every candidate (the walk asks once per layer: quadratic in the layers).
+        std::sort(candidates.begin(), candidates.end(),
+                  [this](const Candidate& a, const Candidate& b) {
+                      return phi[a.index] != phi[b.index] ? phi[a.index] < phi[b.index]
+                                                          : a.index < b.index;
+                  });
+    }
+
     std::span<const double> phi;
     std::span<const double> kappa;
-    std::span<const Candidate> candidates;
+    std::vector<Candidate> candidates; // by phi, then by index
 
-    // Best candidate with phi in [low, high).
+    // Best candidate with phi in [low, high); of equals, the first along the path.
     std::optional<std::size_t> bestIn(double low, double high) const {
+        const auto first =
+            std::partition_point(candidates.begin(), candidates.end(),
+                                 [&](const Candidate& c) { return phi[c.index] < low; });
         std::optional<Candidate> best;
-        for (const Candidate& c : candidates) {
-            if (phi[c.index] >= low && phi[c.index] < high && (!best || better(c, *best))) {
-                best = c;
+        for (auto c = first; c != candidates.end() && phi[c->index] < high; ++c) {
+            if (!best || preferred(*c, *best)) {
+                best = *c;
             }
         }
         return best ? std::optional(best->index) : std::nullopt;
@@ -96,7 +116,7 @@ void walk(const Walker& w, std::size_t anchor, int direction,
 std::optional<std::size_t> anchorOf(const Walker& w, bool& fallback) {
     fallback = false;
     if (!w.candidates.empty()) {
-        return std::min_element(w.candidates.begin(), w.candidates.end(), better)->index;
+        return std::min_element(w.candidates.begin(), w.candidates.end(), preferred)->index;
     }
     // No concave run anywhere: a fallback anchor only if the path makes a whole revolution.
     if (w.phi.back() - w.phi.front() < kTwoPi) {
@@ -116,8 +136,7 @@ LayerSplit splitLayers(std::span<const double> forwardAngle,
     if (n < 2) {
         return split;
     }
-    const std::vector<Candidate> candidates = candidatesOf(runs, n, rule);
-    const Walker walker{forwardAngle, smoothedCurvature, candidates};
+    const Walker walker(forwardAngle, smoothedCurvature, candidatesOf(runs, n, rule));
     bool anchorFallback = false;
     if (std::optional<std::size_t> anchor = anchorOf(walker, anchorFallback)) {
         std::vector<std::pair<std::size_t, bool>> found{{*anchor, anchorFallback}};

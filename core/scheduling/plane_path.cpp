@@ -1,6 +1,7 @@
 #include "core/scheduling/plane_path.h"
 
 #include "core/base/number_io.h"
+#include "core/base/order_statistic.h"
 #include "core/base/parallel.h"
 #include "core/base/tolerances.h"
 #include "core/base/units.h"
@@ -242,9 +243,12 @@ double tiltOf(const PlanePath& path, const Axes& axes, std::vector<std::string>&
         high = std::max(high, rangeHigh);
     }
     const double spread = std::asin(high) - std::asin(low);
-    std::nth_element(axial.begin(), axial.begin() + static_cast<long>(axial.size() / 2),
-                     axial.end());
-    const double median = std::asin(axial[axial.size() / 2]);
+    // A constant tilt (the usual case) is its own median. Otherwise nthSmallest finds it
+    // without reordering all the values on this thread.
+    const double median =
+        std::asin(low == high ? low
+                              : nthSmallest(axial.size(), axial.size() / 2, threads,
+                                            [&axial](std::size_t k) { return axial[k]; }));
     if (spread > tol::kConstantTiltRad) {
         warn.push_back("input tilt B is not constant (spread " +
                        formatFixed(units::radToDeg(spread), 4) + " deg); the median " +

@@ -109,18 +109,27 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
                                        double radius, const ScheduleInput& input,
                                        std::vector<std::string>& warnings) {
     ChannelStage stage;
-    auto tangents =
-        computeTangents(path.points, p.tangentChordMinMm, p.tangentChordMedianFactor, p.threads);
+    auto tangents = computeWrappedTangents(path.points, p.tangentChordMinMm,
+                                           p.tangentChordMedianFactor, p.threads);
     if (!tangents) {
         return std::unexpected(tangents.error());
     }
     stage.tangents = std::move(*tangents);
+    // The unwrap and the curvature's prefix sums are each one chain through the path, whose
+    // order fixes their rounding, and neither reads the other: on two threads they run at once.
+    CurvatureWeights weights;
+    runBoth(
+        path.points.size(), p.threads, [&field = stage.tangents] { unwrapForwardAngles(field); },
+        [&weights, &path, &stage] {
+            weights = curvatureWeights(path.arcLength, stage.tangents.curvature);
+        });
     const CurvatureSettings settings = curvatureSettings(p, path, stage.tangents, radius);
     // Each per-point array goes once read for the last time: the channel is built where the
     // scheduling's memory peaks (beside the plane path and the input). The curvature becomes
     // the smoothed one.
-    stage.curvature = analyseCurvature(path.arcLength, std::move(stage.tangents.curvature),
-                                       stage.tangents.turning, settings, p.threads);
+    stage.curvature =
+        analyseCurvature(path.arcLength, std::move(stage.tangents.curvature), std::move(weights),
+                         stage.tangents.turning, settings, p.threads);
     stage.split = splitLayers(stage.tangents.forwardAngle, stage.curvature.smoothedCurvature,
                               stage.curvature.runs, p.basePoint);
     freeStorage(stage.curvature.smoothedCurvature); // the runs stay: the channel reads them

@@ -1,5 +1,6 @@
 #include "core/scheduling/tangents.h"
 
+#include "core/base/order_statistic.h"
 #include "core/base/parallel.h"
 #include "core/scheduling/detail/fast_angles.h"
 
@@ -18,15 +19,10 @@ constexpr double kDegenerateChordMm = 1e-9;
 // The square root is monotone, so the median of the squared chords gives the same element as
 // the median of the chords with one square root instead of one per chord.
 double medianChord(std::span<const Vec2> points, unsigned threads) {
-    DefaultInitVector<double> squared(points.size() - 1);
-    forEachRange(squared.size(), threads, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            squared[i] = (points[i + 1] - points[i]).squaredNorm();
-        }
-    });
-    auto middle = squared.begin() + static_cast<long>(squared.size() / 2);
-    std::nth_element(squared.begin(), middle, squared.end());
-    return std::sqrt(*middle);
+    const std::size_t chords = points.size() - 1;
+    return std::sqrt(nthSmallest(chords, chords / 2, threads, [points](std::size_t i) {
+        return (points[i + 1] - points[i]).squaredNorm();
+    }));
 }
 
 struct Chord {
@@ -93,10 +89,25 @@ double angleOf(const Vec2& v) {
     return detail::atan2(v.y(), v.x());
 }
 
+// The arrays the two passes over the chords read and write, by address.
+struct PassArrays {
+    PassArrays(std::span<const Vec2> points_, TangentField& field,
+               DefaultInitVector<std::uint32_t>& forwardEnd_)
+        : points(points_), chordLength(field.chordLengthMm),
+          forwardAngle(field.forwardAngle.data()), turning(field.turning.data()),
+          norm(field.curvature.data()), forwardEnd(forwardEnd_.data()) {}
+    std::span<const Vec2> points;
+    double chordLength;
+    double* forwardAngle;
+    double* turning;
+    double* norm; // |e+_i| after pass 1, the curvature after pass 2
+    std::uint32_t* forwardEnd;
+};
+
 } // namespace
 
-Result<TangentField> computeTangents(std::span<const Vec2> points, double minChordMm,
-                                     double medianFactor, unsigned threads) {
+Result<TangentField> computeWrappedTangents(std::span<const Vec2> points, double minChordMm,
+                                            double medianFactor, unsigned threads) {
     const std::size_t n = points.size();
     if (n < 2) {
         return makeError(ErrorCode::Geometry, "tangents need at least 2 points");
@@ -104,18 +115,23 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
     constexpr std::uint32_t kNoChord = std::numeric_limits<std::uint32_t>::max();
     TangentField field;
     field.chordLengthMm = std::max(minChordMm, medianFactor * medianChord(points, threads));
-    field.forwardAngle.resize(n); // first the wrapped angles, unwrapped in place below
+    field.forwardAngle.resize(n); // wrapped here, unwrapped in place by unwrapForwardAngles
     field.turning.resize(n);
     field.curvature.resize(n); // holds |e+_i| between the two passes
     // Pass 1: the forward chords e+_i, their angles and far ends.
     DefaultInitVector<std::uint32_t> forwardEnd(n);
-    forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
+    // Each range works on copies of the arrays' addresses: read through references to this
+    // frame, they were read again after each call the compiler cannot see into, from a cache
+    // line the calling thread writes, which slowed two threads more than the work.
+    const PassArrays arrays{points, field, forwardEnd};
+    forEachRange(n, threads, [arrays](std::size_t begin, std::size_t end) {
+        const PassArrays own = arrays;
         for (std::size_t i = begin; i < end; ++i) {
-            const Chord forward = chordFrom(points, i, +1, field.chordLengthMm);
-            forwardEnd[i] = forward.found ? static_cast<std::uint32_t>(forward.end) : kNoChord;
+            const Chord forward = chordFrom(own.points, i, +1, own.chordLength);
+            own.forwardEnd[i] = forward.found ? static_cast<std::uint32_t>(forward.end) : kNoChord;
             if (forward.found) {
-                field.forwardAngle[i] = angleOf(forward.vector);
-                field.curvature[i] = forward.norm;
+                own.forwardAngle[i] = angleOf(forward.vector);
+                own.norm[i] = forward.norm;
             }
         }
     });
@@ -124,46 +140,62 @@ Result<TangentField> computeTangents(std::span<const Vec2> points, double minCho
     // point and gives bit-identical values. Point i reads the angle of j only when j has a
     // forward chord, and writes its own angle only when it has none, so ranges of points can
     // run at once.
-    const std::size_t degenerate = forEachUntilFirstFailure(n, threads, [&](std::size_t i) {
-        const Chord backward = chordFrom(points, i, -1, field.chordLengthMm);
-        const bool hasForward = forwardEnd[i] != kNoChord;
+    const std::size_t degenerate = forEachUntilFirstFailure(n, threads, [arrays](std::size_t i) {
+        const Chord backward = chordFrom(arrays.points, i, -1, arrays.chordLength);
+        const bool hasForward = arrays.forwardEnd[i] != kNoChord;
         if (!hasForward && !backward.found) {
             return false;
         }
         double minusAngle = 0.0;
         if (backward.found) {
-            minusAngle = forwardEnd[backward.end] == i ? field.forwardAngle[backward.end]
-                                                       : angleOf(backward.vector);
+            minusAngle = arrays.forwardEnd[backward.end] == i ? arrays.forwardAngle[backward.end]
+                                                              : angleOf(backward.vector);
         }
         // [A] At the ends one side is missing: use the other, so tau = 0 there.
-        const double plusAngle = hasForward ? field.forwardAngle[i] : minusAngle;
-        const double plusNorm = hasForward ? field.curvature[i] : backward.norm;
+        const double plusAngle = hasForward ? arrays.forwardAngle[i] : minusAngle;
+        const double plusNorm = hasForward ? arrays.norm[i] : backward.norm;
         if (!backward.found) {
             minusAngle = plusAngle;
         }
         const double minusNorm = backward.found ? backward.norm : plusNorm;
         if (!hasForward) {
-            field.forwardAngle[i] = plusAngle;
+            arrays.forwardAngle[i] = plusAngle;
         }
-        field.turning[i] = detail::wrapAngle(plusAngle - minusAngle);
+        arrays.turning[i] = detail::wrapAngle(plusAngle - minusAngle);
         // [A] Normalised curvature: the chords' directions are the tangents at their
         // mid-points, so tau spans (|e+| + |e-|)/2 of arc. This keeps kappa_h in 1/mm
         // independent of the point density (the literal sum of tau / w of §1.6 is not).
-        field.curvature[i] = 2.0 * field.turning[i] / (plusNorm + minusNorm);
+        arrays.norm[i] = 2.0 * arrays.turning[i] / (plusNorm + minusNorm);
         return true;
     });
     if (degenerate < n) {
         return makeError(ErrorCode::Geometry,
                          "the projected path is degenerate at point " + std::to_string(degenerate));
     }
-    // Unwrapped along the whole path (geometry::unwrap, with the fast wrap), in place: each
-    // step reads the wrapped value at i before overwriting it. The loop is a chain through the
-    // previous value, so the turn count is guessed from the previous step (the same bits).
-    double previous = field.forwardAngle[0];
+    return field;
+}
+
+void unwrapForwardAngles(TangentField& field) {
+    // As geometry::unwrap, with the fast wrap, in place: each step reads the wrapped value at i
+    // before overwriting it. The loop is a chain through the previous value, so the turn count
+    // is guessed from the previous step (the same bits).
+    auto& angles = field.forwardAngle;
+    if (angles.empty()) {
+        return;
+    }
+    double previous = angles[0];
     double turns = 0.0;
-    for (std::size_t i = 1; i < n; ++i) {
-        previous = detail::unwrapNearGuessed(field.forwardAngle[i], previous, turns);
-        field.forwardAngle[i] = previous;
+    for (std::size_t i = 1; i < angles.size(); ++i) {
+        previous = detail::unwrapNearGuessed(angles[i], previous, turns);
+        angles[i] = previous;
+    }
+}
+
+Result<TangentField> computeTangents(std::span<const Vec2> points, double minChordMm,
+                                     double medianFactor, unsigned threads) {
+    auto field = computeWrappedTangents(points, minChordMm, medianFactor, threads);
+    if (field) {
+        unwrapForwardAngles(*field);
     }
     return field;
 }

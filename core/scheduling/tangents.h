@@ -25,4 +25,12 @@ struct TangentField {
 Result<TangentField> computeTangents(std::span<const Vec2> points, double minChordMm,
                                      double medianFactor, unsigned threads = 1);
 
+// computeTangents in its two steps, so that other serial work can run beside the second: the
+// field with each forwardAngle wrapped to (-pi, pi], then those angles unwrapped along the
+// path. The unwrap is one chain through the path (each angle is taken near the previous one,
+// whose rounding it inherits), so it runs on one thread.
+Result<TangentField> computeWrappedTangents(std::span<const Vec2> points, double minChordMm,
+                                            double medianFactor, unsigned threads = 1);
+void unwrapForwardAngles(TangentField& field);
+
 } // namespace bladeaxis::scheduling

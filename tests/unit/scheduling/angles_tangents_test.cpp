@@ -124,6 +124,29 @@ TEST(Tangents, CircleTurningIsTheChordAngle) {
     }
 }
 
+TEST(Tangents, WrappedThenUnwrappedIsWhatComputeTangentsGives) {
+    // Three turns of a circle: the wrapped angles jump by 2 pi where the unwrapped ones go on.
+    std::vector<Vec2> points;
+    for (int i = 0; i < 3 * 360; ++i) {
+        const double phi = 2.0 * kPi * i / 360.0;
+        points.emplace_back(40.0 * std::cos(phi), 40.0 * std::sin(phi));
+    }
+    const auto whole = computeTangents(points, 2.0, 3.0);
+    auto steps = computeWrappedTangents(points, 2.0, 3.0);
+    ASSERT_TRUE(whole.has_value());
+    ASSERT_TRUE(steps.has_value());
+    for (double angle : steps->forwardAngle) {
+        EXPECT_GT(angle, -kPi);
+        EXPECT_LE(angle, kPi);
+    }
+    unwrapForwardAngles(*steps);
+    EXPECT_EQ(steps->forwardAngle, whole->forwardAngle);
+    EXPECT_EQ(steps->turning, whole->turning);
+    EXPECT_EQ(steps->curvature, whole->curvature);
+    // Nearly three turns from the first tangent to the last (the last ones take shorter chords).
+    EXPECT_GT(whole->forwardAngle.back() - whole->forwardAngle.front(), 5.8 * kPi);
+}
+
 TEST(Tangents, DegenerateProjectionIsAnError) {
     const std::vector<Vec2> points(5, Vec2(1.0, 2.0));
     EXPECT_FALSE(computeTangents(points, 0.5, 3.0).has_value());

@@ -209,14 +209,16 @@ int traversalSignOf(Centres centres, std::span<const std::uint32_t> distinct) {
 }
 
 // x / |V| of the input axes of the distinct samples [begin, end) (the axial component of
-// V.normalized() without the other two divisions), and their least and greatest values.
+// V.normalized() without the other two divisions), and their least and greatest values. The
+// samples' inputs and the values are passed by address: read through a reference to the path,
+// the addresses were read again after every square root, from the calling thread's frame.
 template <class Axes>
-std::pair<double, double> axialRange(const PlanePath& path, Axes axes, std::span<double> axial,
+std::pair<double, double> axialRange(const std::uint32_t* inputs, Axes axes, double* axial,
                                      std::size_t begin, std::size_t end) {
     double low = std::numeric_limits<double>::infinity();
     double high = -low;
     for (std::size_t k = begin; k < end; ++k) {
-        const Vec3& axis = axes[path.firstInput[k]];
+        const Vec3& axis = axes[inputs[k]];
         axial[k] = std::clamp(axis.x() / axis.norm(), -1.0, 1.0);
         low = std::min(low, axial[k]);
         high = std::max(high, axial[k]);
@@ -224,18 +226,11 @@ std::pair<double, double> axialRange(const PlanePath& path, Axes axes, std::span
     return {low, high};
 }
 
-// Spec §1.2: B_in = asin(V . a) must be constant; otherwise take the median and warn.
-template <class Axes>
-double tiltOf(const PlanePath& path, const Axes& axes, std::vector<std::string>& warn,
-              unsigned threads) {
-    // asin is monotone, so the extremes and the median are taken on V . a / |V| and only those
-    // three go through asin (the same values as asin of every sample, without n asin calls).
-    DefaultInitVector<double> axial(path.firstInput.size());
-    std::vector<std::pair<double, double>> extremes(rangeCount(axial.size(), threads));
-    forEachRangeOf(axial.size(), extremes.size(),
-                   [&](std::size_t r, std::size_t begin, std::size_t end) {
-                       extremes[r] = axialRange(path, axes, axial, begin, end);
-                   });
+// Spec §1.2: B_in = asin(V . a) must be constant; otherwise take the median and warn. asin is
+// monotone, so the extremes and the median are taken on the axial values and only those three
+// go through asin (the same values as asin of every sample, without n asin calls).
+double tiltFrom(std::span<const double> axial, std::span<const std::pair<double, double>> extremes,
+                std::vector<std::string>& warn, unsigned threads) {
     double low = extremes.front().first;
     double high = extremes.front().second;
     for (const auto& [rangeLow, rangeHigh] : extremes) {
@@ -243,18 +238,42 @@ double tiltOf(const PlanePath& path, const Axes& axes, std::vector<std::string>&
         high = std::max(high, rangeHigh);
     }
     const double spread = std::asin(high) - std::asin(low);
-    // A constant tilt (the usual case) is its own median. Otherwise nthSmallest finds it
-    // without reordering all the values on this thread.
+    // A constant tilt (the usual case) is its own median. Otherwise nthSmallest finds it on
+    // every thread, without reordering the values.
     const double median =
         std::asin(low == high ? low
                               : nthSmallest(axial.size(), axial.size() / 2, threads,
-                                            [&axial](std::size_t k) { return axial[k]; }));
+                                            [axial](std::size_t k) { return axial[k]; }));
     if (spread > tol::kConstantTiltRad) {
         warn.push_back("input tilt B is not constant (spread " +
                        formatFixed(units::radToDeg(spread), 4) + " deg); the median " +
                        formatFixed(units::radToDeg(median), 4) + " deg is used");
     }
     return median;
+}
+
+// The traversal sign is one sum in order, so it takes one thread; meanwhile the axial values
+// of the tilt, in chunks handed to whichever thread is free, take the others, and the thread
+// of the sum joins them when it is done.
+template <class Centres, class Axes>
+void addSignAndTilt(PlanePath& path, const Centres& centres, const Axes& axes, unsigned threads) {
+    const std::size_t n = path.firstInput.size();
+    DefaultInitVector<double> axial(n);
+    const std::size_t chunks = (n + kMinParallelRange - 1) / kMinParallelRange;
+    std::vector<std::pair<double, double>> extremes(chunks);
+    const std::uint32_t* const inputs = path.firstInput.data();
+    int sign = 1;
+    forEachItem(chunks + 1, 2 * n, threads, [&, inputs, values = axial.data()](std::size_t item) {
+        if (item == 0) {
+            sign = traversalSignOf(centres, path.firstInput);
+            return;
+        }
+        const std::size_t begin = (item - 1) * kMinParallelRange;
+        extremes[item - 1] =
+            axialRange(inputs, axes, values, begin, std::min(n, begin + kMinParallelRange));
+    });
+    path.traversalSign = sign;
+    path.tiltB0 = tiltFrom(axial, extremes, path.warnings, threads);
 }
 
 template <class Centres, class Axes>
@@ -276,11 +295,7 @@ Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, u
         path.warnings.push_back(std::to_string(centres.size() - path.firstInput.size()) +
                                 " duplicate centre(s) merged");
     }
-    // Two loops over every distinct sample, one in order (a sum): one thread each.
-    runBoth(
-        centres.size(), threads,
-        [&] { path.traversalSign = traversalSignOf(centres, path.firstInput); },
-        [&] { path.tiltB0 = tiltOf(path, axes, path.warnings, 1); });
+    addSignAndTilt(path, centres, axes, threads);
     if (std::cos(path.tiltB0) < 1e-6) {
         return makeError(ErrorCode::Geometry, "the tool axis is parallel to the rotary axis");
     }

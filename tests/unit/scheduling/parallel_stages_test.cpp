@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -154,6 +155,33 @@ TEST(ParallelStages, MergedDuplicatesAcrossRangeBoundariesGiveTheSerialPath) {
         ASSERT_TRUE(read.has_value());
         addOriginalAngles(*read, axisAt, threads);
         expectSamePlanePath(*serial, *read);
+    }
+}
+
+// The tilt of every axis drifts a little: the median tilt (chunks of axial values on any
+// thread, then the order statistic) and the warning are the serial ones, and the median is the
+// middle axial value of all of them.
+TEST(ParallelStages, AVaryingTiltGivesTheSerialMedianOnAnyThreadCount) {
+    ScheduleInput input = longHelix();
+    const std::size_t n = input.axes.size();
+    ASSERT_GT(n, 4 * kMinParallelRange);
+    std::vector<double> axial(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        Vec3& axis = input.axes[i];
+        axis.x() += 1e-3 * std::sin(0.37 * static_cast<double>(i));
+        axial[i] = std::clamp(axis.x() / axis.norm(), -1.0, 1.0);
+    }
+    std::nth_element(axial.begin(), axial.begin() + static_cast<long>(n / 2), axial.end());
+    auto serial = preparePlanePath(input.centres, input.axes, 1);
+    ASSERT_TRUE(serial.has_value()) << serial.error().toString();
+    ASSERT_EQ(serial->firstInput.size(), n); // no duplicates: every axis counts
+    EXPECT_EQ(serial->tiltB0, std::asin(axial[n / 2]));
+    ASSERT_FALSE(serial->warnings.empty());
+    EXPECT_NE(serial->warnings.front().find("input tilt B is not constant"), std::string::npos);
+    for (unsigned threads : kThreadCounts) {
+        auto parallel = preparePlanePath(input.centres, input.axes, threads);
+        ASSERT_TRUE(parallel.has_value());
+        expectSamePlanePath(*serial, *parallel);
     }
 }
 

@@ -24,17 +24,21 @@ RawChannel buildRawChannel(const TangentField& tangents, std::span<const Concave
                 channel.thetaMax[i] - units::kPi - tangents.turning[i] + 2.0 * inwardRad;
         }
     });
-    for (const ConcaveRun& run : runs) {
+    // The runs at once: each writes only its own samples.
+    forEachItem(runs.size(), n, threads, [&channel, runs, n](std::size_t r) {
+        const ConcaveRun& run = runs[r];
         // [A] A run without an exit (it reaches the path end) keeps its last sample's limit.
-        // Both limits are read before the run is overwritten; an exit is never inside a run,
-        // so no copy of the convex limits is needed.
+        // Both limits are read before the run is overwritten; an exit is never inside a run
+        // (nor, so, inside another run), so no copy of the convex limits is needed.
         const double exitMax = channel.thetaMax[std::min(run.exit, n - 1)];
         const double entryMin = channel.thetaMin[run.entry];
+        double* const thetaMax = channel.thetaMax.data();
+        double* const thetaMin = channel.thetaMin.data();
         for (std::size_t j = run.entry; j < std::min(run.exit, n); ++j) {
-            channel.thetaMax[j] = exitMax;
-            channel.thetaMin[j] = entryMin;
+            thetaMax[j] = exitMax;
+            thetaMin[j] = entryMin;
         }
-    }
+    });
     return channel;
 }
 

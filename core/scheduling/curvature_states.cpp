@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace bladeaxis::scheduling {
 
@@ -45,40 +46,79 @@ DefaultInitVector<double> smoothCurvature(std::span<const double> s,
 
 // Hysteresis: switch only beyond +-kappa_h. [A] Before the first decisive sample the state is
 // back-filled with the first decided state (the paper does not say where the path starts).
+// A sample's state is that of the last decisive sample up to it, so ranges of samples are
+// decided at once from their own first decisive sample on; the samples before it take the
+// state the ranges before ended in, filled in afterwards.
+struct HysteresisRange {
+    std::size_t begin = 0, end = 0;
+    std::size_t firstDecisive = 0;                // == end: no decisive sample in the range
+    CurvatureState last = CurvatureState::Convex; // the state at the range's end, if decided
+    bool decides() const { return firstDecisive < end; }
+};
+
 DefaultInitVector<CurvatureState> hysteresisStates(std::span<const double> smoothed,
-                                                   double threshold) {
-    DefaultInitVector<CurvatureState> states(smoothed.size()); // every sample is written below
-    bool decided = false;
-    CurvatureState current = CurvatureState::Convex;
-    std::size_t undecided = 0;
-    for (std::size_t i = 0; i < smoothed.size(); ++i) {
-        if (smoothed[i] > threshold || smoothed[i] < -threshold) {
-            current = smoothed[i] > 0.0 ? CurvatureState::Convex : CurvatureState::Concave;
-            if (!decided) {
-                for (std::size_t k = 0; k < undecided; ++k) {
-                    states[k] = current;
+                                                   double threshold, unsigned threads) {
+    const std::size_t n = smoothed.size();
+    DefaultInitVector<CurvatureState> states(n); // every sample is written below
+    std::vector<HysteresisRange> ranges(rangeCount(n, threads));
+    CurvatureState* const out = states.data();
+    forEachRangeOf(
+        n, ranges.size(),
+        [&ranges, smoothed, threshold, out](std::size_t r, std::size_t begin, std::size_t end) {
+            std::size_t firstDecisive = end;
+            CurvatureState current = CurvatureState::Convex;
+            for (std::size_t i = begin; i < end; ++i) {
+                if (smoothed[i] > threshold || smoothed[i] < -threshold) {
+                    current = smoothed[i] > 0.0 ? CurvatureState::Convex : CurvatureState::Concave;
+                    firstDecisive = std::min(firstDecisive, i);
                 }
-                decided = true;
+                out[i] = current; // before firstDecisive: replaced below
             }
-        } else if (!decided) {
-            ++undecided;
-        }
-        states[i] = current;
+            ranges[r] = {begin, end, firstDecisive, current};
+        });
+    // The state each range's undecided start takes: up to the path's first decisive sample the
+    // state that sample decides (Convex when there is none), then the state the last deciding
+    // range ended in.
+    const auto firstDeciding = std::find_if(ranges.begin(), ranges.end(),
+                                            [](const HysteresisRange& r) { return r.decides(); });
+    CurvatureState state =
+        firstDeciding != ranges.end() ? out[firstDeciding->firstDecisive] : CurvatureState::Convex;
+    std::vector<CurvatureState> incoming(ranges.size());
+    for (std::size_t r = 0; r < ranges.size(); ++r) {
+        incoming[r] = state;
+        state = ranges[r].decides() ? ranges[r].last : state;
     }
+    forEachRangeOf(n, ranges.size(), [&](std::size_t r, std::size_t begin, std::size_t) {
+        std::fill(out + begin, out + ranges[r].firstDecisive, incoming[r]);
+    });
     return states;
 }
 
-std::vector<ConcaveRun> runsOf(std::span<const CurvatureState> states) {
+// The runs start where a concave state follows a convex one (or the path starts concave) and
+// end where a convex one follows. Each range of samples lists its own changes of state; the
+// runs are then made from the changes in order (a few per layer).
+std::vector<ConcaveRun> runsOf(std::span<const CurvatureState> states, unsigned threads) {
+    const std::size_t n = states.size();
+    std::vector<std::vector<std::size_t>> changes(rangeCount(n, threads));
+    forEachRangeOf(n, changes.size(),
+                   [&changes, states](std::size_t r, std::size_t begin, std::size_t end) {
+                       for (std::size_t i = std::max<std::size_t>(begin, 1); i < end; ++i) {
+                           if (states[i] != states[i - 1]) {
+                               changes[r].push_back(i);
+                           }
+                       }
+                   });
     std::vector<ConcaveRun> runs;
-    for (std::size_t i = 0; i < states.size(); ++i) {
-        const bool concave = states[i] == CurvatureState::Concave;
-        const bool starts = concave && (i == 0 || states[i - 1] != CurvatureState::Concave);
-        if (starts) {
-            runs.push_back({i, states.size(), 0.0, 0.0});
-        }
-        if (!concave && !runs.empty() && runs.back().exit == states.size() && i > 0 &&
-            states[i - 1] == CurvatureState::Concave) {
-            runs.back().exit = i;
+    if (n > 0 && states[0] == CurvatureState::Concave) {
+        runs.push_back({0, n, 0.0, 0.0});
+    }
+    for (const std::vector<std::size_t>& rangeChanges : changes) {
+        for (std::size_t i : rangeChanges) {
+            if (states[i] == CurvatureState::Concave) {
+                runs.push_back({i, n, 0.0, 0.0});
+            } else {
+                runs.back().exit = i; // a change to convex follows a concave run
+            }
         }
     }
     return runs;
@@ -90,7 +130,7 @@ double endArc(std::span<const double> s, const ConcaveRun& run) {
 
 std::vector<ConcaveRun> mergeAndDrop(std::vector<ConcaveRun> runs, std::span<const double> s,
                                      std::span<const double> turning,
-                                     const CurvatureSettings& settings) {
+                                     const CurvatureSettings& settings, unsigned threads) {
     std::vector<ConcaveRun> merged;
     for (const ConcaveRun& run : runs) {
         if (!merged.empty() && merged.back().exit < s.size() &&
@@ -100,17 +140,20 @@ std::vector<ConcaveRun> mergeAndDrop(std::vector<ConcaveRun> runs, std::span<con
             merged.push_back(run);
         }
     }
-    std::vector<ConcaveRun> kept;
-    for (ConcaveRun run : merged) {
+    // Each run's sum in order, the runs at once.
+    forEachItem(merged.size(), s.size(), threads, [&merged, s, turning](std::size_t r) {
+        ConcaveRun& run = merged[r];
         run.lengthMm = endArc(s, run) - s[run.entry];
         const std::size_t stop = std::min(run.exit, s.size());
+        double sum = 0.0;
         for (std::size_t k = run.entry; k < stop; ++k) {
-            run.absTurningRad += std::abs(turning[k]);
+            sum += std::abs(turning[k]);
         }
-        if (run.lengthMm >= settings.minRunMm) {
-            kept.push_back(run);
-        }
-    }
+        run.absTurningRad = sum;
+    });
+    std::vector<ConcaveRun> kept;
+    std::copy_if(merged.begin(), merged.end(), std::back_inserter(kept),
+                 [&settings](const ConcaveRun& run) { return run.lengthMm >= settings.minRunMm; });
     return kept;
 }
 
@@ -161,8 +204,10 @@ CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
     }
     analysis.smoothedCurvature = smoothCurvature(arcLength, std::move(curvature),
                                                  std::move(weights), settings.windowMm, threads);
-    analysis.hysteresis = hysteresisStates(analysis.smoothedCurvature, settings.hysteresisPerMm);
-    analysis.runs = mergeAndDrop(runsOf(analysis.hysteresis), arcLength, turning, settings);
+    analysis.hysteresis =
+        hysteresisStates(analysis.smoothedCurvature, settings.hysteresisPerMm, threads);
+    analysis.runs =
+        mergeAndDrop(runsOf(analysis.hysteresis, threads), arcLength, turning, settings, threads);
     analysis.state.assign(arcLength.size(), CurvatureState::Convex);
     for (const ConcaveRun& run : analysis.runs) {
         for (std::size_t k = run.entry; k < std::min(run.exit, arcLength.size()); ++k) {

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -233,6 +234,87 @@ TEST(ParallelStages, CurvatureWindowsWiderThanARangeGiveTheSerialResult) {
         EXPECT_EQ(analyseCurvature(s, kappa, turning, settings, threads).smoothedCurvature,
                   serial.smoothedCurvature)
             << threads;
+    }
+}
+
+// The hysteresis and run finding of spec §1.6 as one loop each, in feed order: the oracle for
+// the ranges decided at once.
+std::vector<CurvatureState> serialHysteresis(std::span<const double> smoothed, double threshold) {
+    std::vector<CurvatureState> states(smoothed.size(), CurvatureState::Convex);
+    std::optional<CurvatureState> current;
+    for (std::size_t i = 0; i < smoothed.size(); ++i) {
+        if (std::abs(smoothed[i]) > threshold) {
+            const CurvatureState decided =
+                smoothed[i] > 0.0 ? CurvatureState::Convex : CurvatureState::Concave;
+            if (!current) { // back-fill the undecided start with the first decided state
+                std::fill(states.begin(), states.begin() + static_cast<long>(i), decided);
+            }
+            current = decided;
+        }
+        states[i] = current.value_or(CurvatureState::Convex);
+    }
+    return states;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>>
+serialRuns(std::span<const CurvatureState> states) {
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        const bool concave = states[i] == CurvatureState::Concave;
+        const bool wasConcave = i > 0 && states[i - 1] == CurvatureState::Concave;
+        if (concave && !wasConcave) {
+            runs.emplace_back(i, states.size());
+        } else if (!concave && wasConcave) {
+            runs.back().second = i;
+        }
+    }
+    return runs;
+}
+
+// Undecided samples across the first range boundaries, a whole range without a decisive
+// sample, runs across boundaries and one reaching the path's end.
+TEST(ParallelStages, HysteresisAndRunsAreTheSerialOnesWhereverTheRangesFall) {
+    const std::size_t n = 4 * kMinParallelRange + 7;
+    std::vector<double> s(n), kappa(n, 0.0), turning(n);
+    const auto set = [&kappa](std::size_t from, std::size_t to, double value) {
+        std::fill(kappa.begin() + static_cast<long>(from), kappa.begin() + static_cast<long>(to),
+                  value);
+    };
+    set(20000, 20100, -1.0); // the first decisive samples: concave
+    set(21000, 21010, 1.0);
+    set(49100, 49200, -1.0); // across the boundary of the third of four ranges
+    set(52000, 52010, 1.0);
+    set(60000, 60005, -1.0); // concave to the end
+    for (std::size_t i = 0; i < n; ++i) {
+        s[i] = 0.01 * static_cast<double>(i);
+        turning[i] = 1e-3 * kappa[i] + 1e-6 * static_cast<double>(i % 7);
+    }
+    CurvatureSettings settings;
+    settings.windowMm = 0.001; // each sample its own window
+    settings.mergeGapMm = 0.0;
+    settings.minRunMm = 0.0;
+    const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings, 1);
+    const std::vector<CurvatureState> expected =
+        serialHysteresis(serial.smoothedCurvature, settings.hysteresisPerMm);
+    const auto expectedRuns = serialRuns(expected);
+    ASSERT_EQ(expectedRuns.size(), 3u);
+    EXPECT_EQ(expectedRuns.back().second, n);
+    for (unsigned threads : {1u, 2u, 3u, 4u}) {
+        const CurvatureAnalysis states = analyseCurvature(s, kappa, turning, settings, threads);
+        EXPECT_TRUE(std::equal(states.hysteresis.begin(), states.hysteresis.end(), expected.begin(),
+                               expected.end()))
+            << threads;
+        ASSERT_EQ(states.runs.size(), expectedRuns.size()) << threads;
+        for (std::size_t k = 0; k < expectedRuns.size(); ++k) {
+            const auto [entry, exit] = expectedRuns[k];
+            EXPECT_EQ(states.runs[k].entry, entry);
+            EXPECT_EQ(states.runs[k].exit, exit);
+            double sum = 0.0;
+            for (std::size_t i = entry; i < exit; ++i) {
+                sum += std::abs(turning[i]);
+            }
+            EXPECT_EQ(states.runs[k].absTurningRad, sum);
+        }
     }
 }
 

@@ -396,7 +396,9 @@ streamProgramRecords(std::string_view text, std::string_view fileName, ProgramFo
         return std::unexpected(program.error());
     }
     const std::vector<toolpath::ClRecord>& records = program->path().records;
-    consume(0, records);
+    if (Status taken = consume(0, records); !taken) {
+        return std::unexpected(taken.error());
+    }
     return records.size();
 }
 

@@ -61,7 +61,8 @@ Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInpu
     return std::move(solved.axes);
 }
 
-Result<std::string> rewriteProgram(const RescheduleInput& input, const RescheduleOutcome& outcome) {
+Result<std::string> rewriteProgram(const RescheduleInput& input, const RescheduleOutcome& outcome,
+                                   const CancelToken& cancel) {
     const std::span<const kinematics::MachineAxes> passAxes = *outcome.axes;
     const auto& all = input.program->path().records;
     io::nc::RewriteStreams streams;
@@ -70,8 +71,13 @@ Result<std::string> rewriteProgram(const RescheduleInput& input, const Reschedul
         streams.rewrittenUpTo = input.rewrittenUpTo;
     }
     // A staged program takes the G-code as it is written (keepWritten appends the rest).
+    // Each piece (a few megabytes) is where a cancelled job stops writing: the staged file is
+    // then discarded, as after any failure.
     if (input.stagedProgram) {
-        streams.writtenPiece = [&staged = *input.stagedProgram](std::string_view piece) {
+        streams.writtenPiece = [&staged = *input.stagedProgram, &cancel](std::string_view piece) {
+            if (auto status = checkCancelled(cancel); !status) {
+                return status;
+            }
             return staged.append(piece);
         };
     }
@@ -114,7 +120,8 @@ struct WrittenProgram {
 // is read and then dropped, so the check never holds a second program (about 140 bytes per
 // record) beside the first.
 Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string_view text,
-                                       bool keepFeeds, const io::nc::TextReadUpTo& readUpTo) {
+                                       bool keepFeeds, const io::nc::TextReadUpTo& readUpTo,
+                                       const CancelToken& cancel) {
     const toolpath::Toolpath& original = input.program->path();
     const std::size_t passEnd = input.passFirst + input.passCount;
     WrittenProgram written;
@@ -138,10 +145,14 @@ Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string
                 written.passFeeds.push_back(reread.feed);
             }
         }
+        return checkCancelled(cancel); // every few thousand records
     };
     auto count = io::streamProgramRecords(text, original.sourceFile + " (re-scheduled)",
                                           input.program->format(), *input.machine,
                                           input.program->options, compare, readUpTo);
+    if (!count && count.error().code == ErrorCode::Cancelled) {
+        return std::unexpected(count.error());
+    }
     if (!count) {
         Error error = count.error();
         error.code = ErrorCode::Internal;
@@ -159,9 +170,10 @@ Result<WrittenProgram> readBackWritten(const RescheduleInput& input, std::string
 // The written program from memory, or mapped from its staged file with its pages given back
 // as the reader passes them (a shared file mapping reads dropped pages again from the file).
 Result<WrittenProgram> readBackWritten(const RescheduleInput& input,
-                                       const RescheduleOutcome& outcome, bool keepFeeds) {
+                                       const RescheduleOutcome& outcome, bool keepFeeds,
+                                       const CancelToken& cancel) {
     if (!outcome.stagedProgram) {
-        return readBackWritten(input, outcome.programText, keepFeeds, {});
+        return readBackWritten(input, outcome.programText, keepFeeds, {}, cancel);
     }
     auto mapped = outcome.stagedProgram->mapText();
     if (!mapped) {
@@ -170,7 +182,7 @@ Result<WrittenProgram> readBackWritten(const RescheduleInput& input,
     const io::nc::TextReadUpTo giveBack = [&mapped](std::size_t offset) {
         mapped->releaseBefore(offset);
     };
-    return readBackWritten(input, mapped->text(), keepFeeds, giveBack);
+    return readBackWritten(input, mapped->text(), keepFeeds, giveBack, cancel);
 }
 
 // The written program goes into the outcome, or to the staged file when the job gives one: the
@@ -215,7 +227,10 @@ struct NewMotion {
 
 // With input.releaseNewToolAxes the schedule's new tool axes are freed once the analysis has
 // made its path parameter: the re-read check beside it never reads them.
-Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutcome& outcome) {
+// Runs beside the rewrite and the re-read check: a cancelled job waits for it before it ends,
+// so it stops between its stages too.
+Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutcome& outcome,
+                                   const CancelToken& cancel) {
     analysis::PathSamples samples = rescheduledSamples(passOf(input), outcome);
     if (input.releaseNewToolAxes) {
         samples.posesRead = [&newAxes = outcome.schedule.newAxes] { freeStorage(newAxes); };
@@ -224,8 +239,14 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutco
     if (!profile) {
         return std::unexpected(profile.error());
     }
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
     NewMotion motion{std::move(*profile), {}, std::nullopt};
     motion.constantFeed = analysis::constantFeedTime(motion.profile, *input.machine, false);
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
     motion.timeOptimal = analysis::timeOptimalSeconds(motion.profile, *input.machine);
     return motion;
 }
@@ -415,13 +436,13 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     const bool analyseAtOnce = input.analyseNewMotion && !feedsFromWritten;
     const auto startAnalysis = [&] {
         return std::async(analyseAtOnce ? std::launch::async : std::launch::deferred,
-                          [&] { return analyseNewMotion(input, outcome); });
+                          [&] { return analyseNewMotion(input, outcome, cancel); });
     };
     std::future<Result<NewMotion>> analysed;
     if (!input.rewritten) {
         analysed = startAnalysis();
     }
-    auto text = rewriteProgram(input, outcome);
+    auto text = rewriteProgram(input, outcome, cancel);
     if (input.rewritten) {
         // Also after a failed rewrite, which may have given back part of the text already.
         input.rewritten();
@@ -440,7 +461,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(status.error());
     }
     auto written = input.verifyByRereading || feedsFromWritten
-                       ? readBackWritten(input, outcome, feedsFromWritten)
+                       ? readBackWritten(input, outcome, feedsFromWritten, cancel)
                        : Result<WrittenProgram>(WrittenProgram{});
     outcome.stageSeconds.verify = clock.lap();
     if (!written) {

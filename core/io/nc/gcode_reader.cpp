@@ -144,10 +144,13 @@ class RecordOutlet {
     }
 
     void handOn(GcodeProgram& program) {
-        if (m_consume == nullptr || program.path.records.empty()) {
+        if (m_consume == nullptr || program.path.records.empty() || m_stop) {
             return;
         }
-        (*m_consume)(m_handedOn, program.path.records);
+        if (Status taken = (*m_consume)(m_handedOn, program.path.records); !taken) {
+            m_stop = std::move(taken.error());
+            return;
+        }
         m_handedOn += program.path.records.size();
         if (m_readUpTo != nullptr && *m_readUpTo && !program.sources.empty()) {
             (*m_readUpTo)(program.sources.back().lineBegin);
@@ -158,12 +161,15 @@ class RecordOutlet {
     }
 
     bool firstRecordInInches() const { return m_firstInch.value_or(false); }
+    // Why the consumer stopped the read, if it did.
+    const std::optional<Error>& stop() const { return m_stop; }
 
   private:
     const RecordChunkConsumer* m_consume;
     const TextReadUpTo* m_readUpTo;
     std::size_t m_handedOn = 0;
     std::optional<bool> m_firstInch;
+    std::optional<Error> m_stop;
 };
 
 // Interprets every line of `text` (the program's own text, or the text a streamed read
@@ -178,7 +184,7 @@ std::size_t interpretLines(GcodeProgram& program, std::string_view text,
     int lineNumber = 0;
     bool ended = false;
     int endLine = 0;
-    while (begin < text.size() && !errors.full()) {
+    while (begin < text.size() && !errors.full() && !outlet.stop()) {
         ++lineNumber;
         const void* newline = std::memchr(text.data() + begin, '\n', text.size() - begin);
         const std::size_t end =
@@ -271,6 +277,9 @@ Status interpretProgram(GcodeProgram& program, std::string_view text, std::strin
                         RecordOutlet& outlet) {
     detail::ErrorList errors(fileName, kMaxParseErrors);
     const std::size_t records = interpretLines(program, text, machine, options, errors, outlet);
+    if (outlet.stop()) {
+        return std::unexpected(*outlet.stop());
+    }
     if (!errors.empty()) {
         return std::unexpected(errors.take());
     }
@@ -350,7 +359,7 @@ Result<std::size_t> streamGcodeRecords(std::string_view text, std::string_view f
     const RecordChunkConsumer counting = [&](std::size_t first,
                                              std::span<const toolpath::ClRecord> chunk) {
         records = first + chunk.size();
-        consume(first, chunk);
+        return consume(first, chunk);
     };
     RecordOutlet outlet(&counting, &readUpTo);
     if (Status read = interpretProgram(program, text, fileName, machine, options, outlet); !read) {

@@ -55,9 +55,10 @@ Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName
                                      const ReadOptions& options = {});
 
 // A run of consecutive records of a streamed program; `first` is the index of records[0] in the
-// whole program.
+// whole program. A failed status stops the read, which returns it (a cancelled job, a check
+// that has seen enough).
 using RecordChunkConsumer =
-    std::function<void(std::size_t first, std::span<const toolpath::ClRecord> records)>;
+    std::function<Status(std::size_t first, std::span<const toolpath::ClRecord> records)>;
 
 // How far a streamed read has read its text: nothing before `offset` is read again. A reader
 // of a large mapped file gives those pages back (MappedText::releaseBefore).

@@ -48,6 +48,7 @@ Result<std::size_t> stream(std::string_view text, StreamedRecords& seen) {
                                   seen.contiguous = seen.contiguous && first == seen.records.size();
                                   seen.runSizes.push_back(run.size());
                                   seen.records.insert(seen.records.end(), run.begin(), run.end());
+                                  return Status{};
                               });
 }
 
@@ -104,6 +105,7 @@ TEST(StreamedReading, SaysHowFarItHasReadAndNeverHandsOnABlockBeforeThat) {
                 handedOnBeforeReport = handedOnBeforeReport ||
                                        lineStarts[static_cast<std::size_t>(record.line)] < readUpTo;
             }
+            return Status{};
         },
         [&](std::size_t offset) {
             reports.push_back(offset);
@@ -120,6 +122,22 @@ TEST(StreamedReading, SaysHowFarItHasReadAndNeverHandsOnABlockBeforeThat) {
         }
     }
     EXPECT_GT(reports.back(), text.size() / 2);
+}
+
+// A cancelled job stops its re-read check this way: the consumer's error ends the read at
+// once and is what the read returns, not a parse error.
+TEST(StreamedReading, AConsumerThatFailsStopsTheReadWithItsError) {
+    const std::string text = helicalProgram(3 * static_cast<int>(kStreamChunkRecords));
+    std::size_t runs = 0;
+    const auto count = streamGcodeRecords(text, "t.nc", kinematics::defaultBladeMachine(), {},
+                                          [&](std::size_t, std::span<const ClRecord>) -> Status {
+                                              ++runs;
+                                              return makeError(ErrorCode::Cancelled, "enough");
+                                          });
+    ASSERT_FALSE(count.has_value());
+    EXPECT_EQ(count.error().code, ErrorCode::Cancelled);
+    EXPECT_EQ(count.error().message, "enough");
+    EXPECT_EQ(runs, 1u);
 }
 
 TEST(StreamedReading, RefusesWhatAWholeParseRefusesWithTheSameMessage) {

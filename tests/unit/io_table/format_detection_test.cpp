@@ -98,6 +98,7 @@ TEST(OwnedText, OwnedAndStreamedReadsGiveTheRecordsACopiedTextGives) {
                                  [&](std::size_t first, std::span<const toolpath::ClRecord> run) {
                                      EXPECT_EQ(first, streamed.size());
                                      streamed.insert(streamed.end(), run.begin(), run.end());
+                                     return Status{};
                                  });
         ASSERT_TRUE(count.has_value()) << count.error().toString();
         ASSERT_EQ(*count, copied->path().records.size());
@@ -107,6 +108,13 @@ TEST(OwnedText, OwnedAndStreamedReadsGiveTheRecordsACopiedTextGives) {
             EXPECT_EQ(streamed[i].axis, copied->path().records[i].axis);
             EXPECT_EQ(streamed[i].feed, copied->path().records[i].feed);
         }
+        // A consumer's error ends the read and is what it returns, in every format.
+        const auto stopped = streamProgramRecords(
+            text, "a", format, machine, {}, [](std::size_t, std::span<const toolpath::ClRecord>) {
+                return Status(makeError(ErrorCode::Cancelled, "stop"));
+            });
+        ASSERT_FALSE(stopped.has_value());
+        EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled);
     }
 }
 

@@ -29,7 +29,7 @@ RawChannel buildRawChannel(const TangentField& tangents, std::span<const Concave
         const ConcaveRun& run = runs[r];
         // [A] A run without an exit (it reaches the path end) keeps its last sample's limit.
         // Both limits are read before the run is overwritten; an exit is never inside a run
-        // (nor, so, inside another run), so no copy of the convex limits is needed.
+        // (so never inside another run either), and no copy of the convex limits is needed.
         const double exitMax = channel.thetaMax[std::min(run.exit, n - 1)];
         const double entryMin = channel.thetaMin[run.entry];
         double* const thetaMax = channel.thetaMax.data();

@@ -9,6 +9,7 @@
 // on those alone. When the sample misjudges the bracket (about one chance in 10^9 for values
 // in any order), the values are all gathered and selected as before.
 
+#include "core/base/default_init.h"
 #include "core/base/parallel.h"
 
 #include <algorithm>
@@ -31,7 +32,7 @@ inline constexpr std::size_t kSelectionMargin = 192;
 template <class ValueAt>
 double nthSmallestGathered(std::size_t count, std::size_t k, unsigned threads,
                            const ValueAt& valueAt) {
-    std::vector<double> values(count);
+    DefaultInitVector<double> values(count); // every value is written below
     forEachRange(count, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             values[i] = valueAt(i);

@@ -55,9 +55,7 @@ PagesMappedAhead::PagesMappedAhead(std::vector<MemoryRange> ranges) : m_ranges(s
 
 PagesMappedAhead::~PagesMappedAhead() {
     m_stop.store(true, std::memory_order_relaxed);
-    if (m_thread.joinable()) {
-        m_thread.join();
-    }
+    finish();
 }
 
 void PagesMappedAhead::finish() {

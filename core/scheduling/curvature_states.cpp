@@ -50,7 +50,7 @@ DefaultInitVector<double> smoothCurvature(std::span<const double> s,
 // decided at once from their own first decisive sample on; the samples before it take the
 // state the ranges before ended in, filled in afterwards.
 struct HysteresisRange {
-    std::size_t begin = 0, end = 0;
+    std::size_t end = 0;
     std::size_t firstDecisive = 0;                // == end: no decisive sample in the range
     CurvatureState last = CurvatureState::Convex; // the state at the range's end, if decided
     bool decides() const { return firstDecisive < end; }
@@ -74,7 +74,7 @@ DefaultInitVector<CurvatureState> hysteresisStates(std::span<const double> smoot
                 }
                 out[i] = current; // before firstDecisive: replaced below
             }
-            ranges[r] = {begin, end, firstDecisive, current};
+            ranges[r] = {end, firstDecisive, current};
         });
     // The state each range's undecided start takes: up to the path's first decisive sample the
     // state that sample decides (Convex when there is none), then the state the last deciding
@@ -95,30 +95,19 @@ DefaultInitVector<CurvatureState> hysteresisStates(std::span<const double> smoot
 }
 
 // The runs start where a concave state follows a convex one (or the path starts concave) and
-// end where a convex one follows. Each range of samples lists its own changes of state; the
-// runs are then made from the changes in order (a few per layer).
+// end where a convex one follows: they are made from the altered points, in order (a few per
+// layer).
 std::vector<ConcaveRun> runsOf(std::span<const CurvatureState> states, unsigned threads) {
     const std::size_t n = states.size();
-    std::vector<std::vector<std::size_t>> changes(rangeCount(n, threads));
-    forEachRangeOf(n, changes.size(),
-                   [&changes, states](std::size_t r, std::size_t begin, std::size_t end) {
-                       for (std::size_t i = std::max<std::size_t>(begin, 1); i < end; ++i) {
-                           if (states[i] != states[i - 1]) {
-                               changes[r].push_back(i);
-                           }
-                       }
-                   });
     std::vector<ConcaveRun> runs;
     if (n > 0 && states[0] == CurvatureState::Concave) {
         runs.push_back({0, n, 0.0, 0.0});
     }
-    for (const std::vector<std::size_t>& rangeChanges : changes) {
-        for (std::size_t i : rangeChanges) {
-            if (states[i] == CurvatureState::Concave) {
-                runs.push_back({i, n, 0.0, 0.0});
-            } else {
-                runs.back().exit = i; // a change to convex follows a concave run
-            }
+    for (std::size_t i : alteredPoints(states, threads)) {
+        if (states[i] == CurvatureState::Concave) {
+            runs.push_back({i, n, 0.0, 0.0});
+        } else {
+            runs.back().exit = i; // a change to convex follows a concave run
         }
     }
     return runs;
@@ -217,12 +206,21 @@ CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
     return analysis;
 }
 
-std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states) {
+std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states, unsigned threads) {
+    // Each range of samples lists its own changes; the lists are joined in order.
+    const std::size_t n = states.size();
+    std::vector<std::vector<std::size_t>> changes(rangeCount(n, threads));
+    forEachRangeOf(n, changes.size(),
+                   [&changes, states](std::size_t r, std::size_t begin, std::size_t end) {
+                       for (std::size_t i = std::max<std::size_t>(begin, 1); i < end; ++i) {
+                           if (states[i] != states[i - 1]) {
+                               changes[r].push_back(i);
+                           }
+                       }
+                   });
     std::vector<std::size_t> points;
-    for (std::size_t i = 1; i < states.size(); ++i) {
-        if (states[i] != states[i - 1]) {
-            points.push_back(i);
-        }
+    for (const std::vector<std::size_t>& rangeChanges : changes) {
+        points.insert(points.end(), rangeChanges.begin(), rangeChanges.end());
     }
     return points;
 }

@@ -61,7 +61,9 @@ CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    CurvatureWeights&& weights, std::span<const double> turning,
                                    const CurvatureSettings& settings, unsigned threads = 1);
 
-// Indices where the state differs from the predecessor's, in feed order (the altered points).
-std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states);
+// Indices where the state differs from the predecessor's, in feed order (the altered points),
+// found on up to `threads` threads (0 = all).
+std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states,
+                                       unsigned threads = 1);
 
 } // namespace bladeaxis::scheduling

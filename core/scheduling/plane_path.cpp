@@ -263,6 +263,7 @@ void addSignAndTilt(PlanePath& path, const Centres& centres, const Axes& axes, u
     std::vector<std::pair<double, double>> extremes(chunks);
     const std::uint32_t* const inputs = path.firstInput.data();
     int sign = 1;
+    // The work is two passes over the samples: the sum and the axial values.
     forEachItem(chunks + 1, 2 * n, threads, [&, inputs, values = axial.data()](std::size_t item) {
         if (item == 0) {
             sign = traversalSignOf(centres, path.firstInput);

@@ -1,5 +1,6 @@
 #include "core/base/pages_mapped_ahead.h"
 
+#include "core/base/parallel.h"
 #include "core/base/whole_pages.h"
 
 #include <algorithm>
@@ -44,7 +45,7 @@ PagesMappedAhead::PagesMappedAhead(std::vector<MemoryRange> ranges) : m_ranges(s
     for (const MemoryRange& range : m_ranges) {
         total += range.bytes;
     }
-    if (kCanPopulate && total >= kSmallestMappedAhead && std::thread::hardware_concurrency() >= 2) {
+    if (kCanPopulate && total >= kSmallestMappedAhead && hardwareThreadCount() >= 2) {
         try {
             m_thread = std::thread([this] { mapAll(); });
         } catch (const std::system_error&) {

@@ -1,6 +1,7 @@
 #include "core/cad/clearance.h"
 
 #include "core/base/number_io.h"
+#include "core/base/parallel.h"
 
 #include <algorithm>
 #include <atomic>
@@ -195,8 +196,7 @@ Result<ClearanceReport> checkClearance(const SurfaceSamples& blade, const toolpa
             }
         }
     };
-    const unsigned threads =
-        options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    const unsigned threads = resolveThreadCount(options.threads);
     {
         std::vector<std::jthread> pool;
         for (unsigned t = 1; t < threads; ++t) {

@@ -1,5 +1,6 @@
 #include "core/cad/sections.h"
 
+#include "core/base/parallel.h"
 #include "core/cad/detail/occt_shape.h"
 
 #include <BRepAdaptor_Curve.hxx>
@@ -281,8 +282,7 @@ Result<std::vector<std::vector<Polyline3>>> sectionsAtX(const CadShape& shape,
         }
     };
     const unsigned count = std::min<unsigned>(
-        threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency()),
-        static_cast<unsigned>(std::max<std::size_t>(1, xs.size())));
+        resolveThreadCount(threads), static_cast<unsigned>(std::max<std::size_t>(1, xs.size())));
     std::vector<std::jthread> pool;
     for (unsigned t = 1; t < count; ++t) {
         pool.emplace_back(worker);

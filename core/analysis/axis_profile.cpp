@@ -165,6 +165,14 @@ std::span<const double> sampledAxis(std::span<const kinematics::MachineAxes> axe
     return values;
 }
 
+// ErrorCode::Cancelled once the analysis's token is set.
+Status checkCancelled(const AxisProfileOptions& options) {
+    if (options.cancel && options.cancel->isCancelled()) {
+        return makeError(ErrorCode::Cancelled, "the analysis was cancelled");
+    }
+    return {};
+}
+
 } // namespace
 
 Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSamples& path,
@@ -191,6 +199,9 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
         path.posesRead();
     }
     profile.cycleTime = profile.pathParameter.back() / profile.feed;
+    if (Status going = checkCancelled(options); !going) {
+        return std::unexpected(std::move(going.error()));
+    }
     const std::size_t n = profile.pathParameter.size();
     std::vector<std::size_t> knots;
     if (options.method == DerivativeMethod::Spline) {
@@ -210,13 +221,19 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
                        [](const kinematics::MachineAxes& m) { return m.a; });
         profile.aReversals = auditReversals(a);
     }
+    if (Status going = checkCancelled(options); !going) {
+        return std::unexpected(std::move(going.error()));
+    }
     // Each axis's positions are gathered for its own differentiation and dropped after it.
     const PositionsOf positionsOf = [&](std::size_t k, std::vector<double>& scratch) {
         return sampledAxis(axes, profile.sampleRecord, kinematics::kAllAxes[k], scratch);
     };
     std::vector<Result<AxisSeries>> series = differentiateAxes(
         profile.pathParameter, kinematics::kAllAxes.size(), positionsOf, profile.feed,
-        options.method, options.filterSeconds, knots, options.threads);
+        options.method, options.filterSeconds, knots, options.threads, options.cancel);
+    if (Status going = checkCancelled(options); !going) { // not an axis's error
+        return std::unexpected(std::move(going.error()));
+    }
     for (kinematics::AxisId id : kinematics::kAllAxes) {
         Result<AxisSeries>& axis = series[static_cast<int>(id)];
         if (!axis) {

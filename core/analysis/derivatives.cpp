@@ -408,10 +408,14 @@ std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s, std
                                                   const PositionsOf& positionsOf, double feed,
                                                   DerivativeMethod method, double filterSeconds,
                                                   std::span<const std::size_t> knots,
-                                                  unsigned threads) {
+                                                  unsigned threads, const CancelToken* cancel) {
     const SharedFit fit(s, feed, method, filterSeconds, knots);
     std::vector<Result<AxisSeries>> results(axes);
     forEachSeries(axes, s.size(), threads, [&](std::size_t k) {
+        if (cancel && cancel->isCancelled()) {
+            results[k] = makeError(ErrorCode::Cancelled, "the analysis was cancelled");
+            return;
+        }
         std::vector<double> scratch;
         const std::span<const double> position = positionsOf(k, scratch);
         const bool inScratch =

@@ -42,11 +42,13 @@ using PositionsOf =
     std::function<std::span<const double>(std::size_t axis, std::vector<double>& scratch)>;
 
 // differentiateAxes of `axes` axes whose positions are handed out one axis at a time: only the
-// axes being differentiated (one per thread) have positions and spline moments at once.
+// axes being differentiated (one per thread) have positions and spline moments at once. An axis
+// that starts after `cancel` is set is not differentiated: its result is ErrorCode::Cancelled.
 std::vector<Result<AxisSeries>>
 differentiateAxes(std::span<const double> s, std::size_t axes, const PositionsOf& positionsOf,
                   double feed, DerivativeMethod method, double filterSeconds = 0.008,
-                  std::span<const std::size_t> knots = {}, unsigned threads = 1);
+                  std::span<const std::size_t> knots = {}, unsigned threads = 1,
+                  const CancelToken* cancel = nullptr);
 
 // The p-quantile (0 <= p <= 1) of |values|, linear interpolation between order statistics
 // (numpy's default). 0 for an empty input. O(n).

@@ -135,7 +135,7 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
     return program;
 }
 
-Status analyse(JobResult& result, const JobSpec& spec) {
+Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
     const auto& records = result.program.path().records;
     result.pass = longestFeedRun(records);
     if (result.pass.count < 2) {
@@ -169,6 +169,7 @@ Status analyse(JobResult& result, const JobSpec& spec) {
     analysis::AxisProfileOptions options = spec.analysis;
     options.blockTimes = passIsBlockTimed(result.program, result.pass.first, result.pass.count);
     options.threads = spec.parameters.threads; // nothing else runs yet
+    options.cancel = &cancel;
     if (result.toolRadius) {
         options.toolRadius = *result.toolRadius;
     }
@@ -621,7 +622,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     }
     progress.progress(0.3, "analysing the original axis motion");
     const std::size_t warningsBeforeAnalysis = result.warnings.size();
-    if (auto status = analyse(result, spec); !status) {
+    if (auto status = analyse(result, spec, cancel); !status) {
         return std::unexpected(status.error());
     }
     // Now, not only in the summary: a refused output prints no summary.

@@ -235,7 +235,9 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutco
     if (input.releaseNewToolAxes) {
         samples.posesRead = [&newAxes = outcome.schedule.newAxes] { freeStorage(newAxes); };
     }
-    auto profile = analysis::analyseAxisMotion(outcome.axes, samples, input.analysis);
+    analysis::AxisProfileOptions options = input.analysis;
+    options.cancel = &cancel;
+    auto profile = analysis::analyseAxisMotion(outcome.axes, samples, options);
     if (!profile) {
         return std::unexpected(profile.error());
     }

@@ -302,6 +302,41 @@ TEST(AnalyseAxisMotion, LentPosesFreedOnceReadGiveTheProfileOfKeptOnes) {
     }
 }
 
+TEST(AnalyseAxisMotion, ACancelledAnalysisEndsWithCancelledInsteadOfAProfile) {
+    const Program line = straightLine(Vec3(1.0, 2.0, -2.0) / 3.0, 40, 30.0, 0.01, 0.002);
+    CancelToken cancel;
+    cancel.requestCancel();
+    AxisProfileOptions options;
+    options.cancel = &cancel;
+    const Result<AxisProfile> profile = analyseAxisMotion(line.axes, line.records, options);
+    ASSERT_FALSE(profile.has_value());
+    EXPECT_EQ(profile.error().code, ErrorCode::Cancelled);
+}
+
+// The token set once the path parameter is made (where a lender frees its poses) stops the
+// analysis before the derivatives, the longest part of it; unset, the same analysis ends.
+TEST(AnalyseAxisMotion, ACancelWhileThePathIsReadStopsBeforeTheDerivatives) {
+    const Program line = straightLine(Vec3(1.0, 2.0, -2.0) / 3.0, 40, 30.0, 0.01, 0.002);
+    for (const bool cancelling : {false, true}) {
+        CancelToken cancel;
+        PathSamples samples{.records = line.records};
+        samples.posesRead = [&] {
+            if (cancelling) {
+                cancel.requestCancel();
+            }
+        };
+        AxisProfileOptions options;
+        options.cancel = &cancel;
+        const Result<AxisProfile> profile = analyseAxisMotion(line.axes, samples, options);
+        if (cancelling) {
+            ASSERT_FALSE(profile.has_value());
+            EXPECT_EQ(profile.error().code, ErrorCode::Cancelled);
+        } else {
+            EXPECT_TRUE(profile.has_value()) << profile.error().toString();
+        }
+    }
+}
+
 // A profile keeps no positions of its own: it reads them from the machine axes it was made from,
 // which it shares with their maker, through the records its samples stand for.
 TEST(AnalyseAxisMotion, PositionsAreTheSharedMachineAxesOfTheSampledRecords) {

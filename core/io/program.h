@@ -92,18 +92,23 @@ void toProgramFrame(std::span<toolpath::ClRecord> records, const kinematics::Mac
 // the first warning of the toolpath.
 Result<LoadedProgram> readProgramText(std::string_view text, const std::filesystem::path& path,
                                       const kinematics::MachineModel& machine,
-                                      const ReadOptions& options = {});
+                                      const ReadOptions& options = {},
+                                      const CancelToken* cancel = nullptr);
 
 // Reads and parses a program. G-code needs the machine (its axes are turned into CL by FK).
+// With `cancel` the read ends with ErrorCode::Cancelled once the token is set: G-code within a
+// few thousand blocks (nc::parseOwnedGcode), CL data and point tables once they are parsed.
 Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
                                   const kinematics::MachineModel& machine,
-                                  const ReadOptions& options = {});
+                                  const ReadOptions& options = {},
+                                  const CancelToken* cancel = nullptr);
 
 // parseProgram of text the loaded program then keeps: a G-code program's text is not copied.
 Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileName,
                                         ProgramFormat format,
                                         const kinematics::MachineModel& machine,
-                                        const ReadOptions& options = {});
+                                        const ReadOptions& options = {},
+                                        const CancelToken* cancel = nullptr);
 
 // Reads a program of `format` and hands its records (in the engine's frame, as parseProgram
 // gives them) to `consume` in order; returns their number. G-code is streamed and its records

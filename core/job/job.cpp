@@ -102,7 +102,7 @@ Result<std::vector<kinematics::MachineAxes>> passAxes(std::span<const ClRecord> 
 // The program read and parsed: the document keeps the one copy of the text the writer needs,
 // or with spec.dropInputText none (the rewrite reads the file again).
 Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::MachineModel& machine,
-                                    std::optional<double>& toolRadius) {
+                                    std::optional<double>& toolRadius, const CancelToken& cancel) {
     if (spec.demo) {
         auto demo = demoProgram(machine);
         if (!demo) {
@@ -115,7 +115,7 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
         return makeError(ErrorCode::InvalidArgument, "no input program given (or use --demo)");
     }
     if (spec.programText) {
-        return io::readProgramText(*spec.programText, spec.program, machine, spec.read);
+        return io::readProgramText(*spec.programText, spec.program, machine, spec.read, &cancel);
     }
     // The file as it was before and after its text was read: the same file, unchanged, is the
     // one a dropped text can be read again from.
@@ -126,7 +126,7 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
         }
     }
     // The text read is the parsed program's own: no copy of it stands beside the records.
-    auto program = io::loadProgram(spec.program, machine, spec.read);
+    auto program = io::loadProgram(spec.program, machine, spec.read, &cancel);
     if (program && before) {
         if (const auto after = snapshotOf(spec.program); after && after->sameFileAs(*before)) {
             program->dropTextKeptInItsFile(*after);
@@ -581,7 +581,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     progress.progress(0.05,
                       spec.demo ? "generating the demo blade program" : "reading the program");
     std::optional<double> generatedRadius;
-    auto program = loadInput(spec, *machine, generatedRadius);
+    auto program = loadInput(spec, *machine, generatedRadius, cancel);
     if (!program) {
         return std::unexpected(program.error());
     }

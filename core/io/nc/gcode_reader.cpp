@@ -131,12 +131,19 @@ void applyStatedTools(const std::vector<StatedTool>& tools, bool inch, GcodeProg
 class RecordOutlet {
   public:
     explicit RecordOutlet(const RecordChunkConsumer* consume,
-                          const TextReadUpTo* readUpTo = nullptr)
-        : m_consume(consume), m_readUpTo(readUpTo) {}
+                          const TextReadUpTo* readUpTo = nullptr,
+                          const CancelToken* cancel = nullptr)
+        : m_consume(consume), m_readUpTo(readUpTo), m_cancel(cancel) {}
 
     void afterBlock(GcodeProgram& program) {
         if (!m_firstInch && !program.sources.empty()) {
             m_firstInch = (program.sources.front().flags & kInch) != 0;
+        }
+        if (m_cancel != nullptr && ++m_blocksSincePoll == kBlocksPerCancelPoll) {
+            m_blocksSincePoll = 0;
+            if (m_cancel->isCancelled() && !m_stop) {
+                m_stop = makeError(ErrorCode::Cancelled, "the read was cancelled").error();
+            }
         }
         if (m_consume != nullptr && program.path.records.size() >= kStreamChunkRecords) {
             handOn(program);
@@ -165,8 +172,13 @@ class RecordOutlet {
     const std::optional<Error>& stop() const { return m_stop; }
 
   private:
+    // About a millisecond of reading between two looks at the token.
+    static constexpr std::size_t kBlocksPerCancelPoll = 4096;
+
     const RecordChunkConsumer* m_consume;
     const TextReadUpTo* m_readUpTo;
+    const CancelToken* m_cancel;
+    std::size_t m_blocksSincePoll = 0;
     std::size_t m_handedOn = 0;
     std::optional<bool> m_firstInch;
     std::optional<Error> m_stop;
@@ -308,14 +320,14 @@ Status readIntoReservation(GcodeProgram& program, std::string_view fileName,
 
 Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
                                     const kinematics::MachineModel& machine,
-                                    const ReadOptions& options) {
+                                    const ReadOptions& options, const CancelToken* cancel) {
     GcodeProgram program;
     if (Status ready = prepareProgram(text, fileName, options, program); !ready) {
         return std::unexpected(ready.error());
     }
     program.text = std::move(text);
     reserveForLines(program, machine);
-    RecordOutlet keepAll(nullptr);
+    RecordOutlet keepAll(nullptr, nullptr, cancel);
     Status read = readIntoReservation(program, fileName, machine, options, keepAll);
     if (!read) {
         return std::unexpected(read.error());
@@ -335,13 +347,13 @@ Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
 Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName,
                                 const kinematics::MachineModel& machine,
                                 const ReadOptions& options) {
-    return parseOwnedText(std::string(text), fileName, machine, options);
+    return parseOwnedText(std::string(text), fileName, machine, options, nullptr);
 }
 
 Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName,
                                      const kinematics::MachineModel& machine,
-                                     const ReadOptions& options) {
-    return parseOwnedText(std::move(text), fileName, machine, options);
+                                     const ReadOptions& options, const CancelToken* cancel) {
+    return parseOwnedText(std::move(text), fileName, machine, options, cancel);
 }
 
 Result<std::size_t> streamGcodeRecords(std::string_view text, std::string_view fileName,
@@ -375,7 +387,7 @@ Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,
     if (!text) {
         return std::unexpected(std::move(text.error()));
     }
-    return parseOwnedText(std::move(*text), path.string(), machine, options);
+    return parseOwnedText(std::move(*text), path.string(), machine, options, nullptr);
 }
 
 } // namespace bladeaxis::io::nc

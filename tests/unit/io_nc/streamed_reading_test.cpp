@@ -140,6 +140,20 @@ TEST(StreamedReading, AConsumerThatFailsStopsTheReadWithItsError) {
     EXPECT_EQ(runs, 1u);
 }
 
+// A whole parse looks at its token every few thousand blocks: unset, a long program is read;
+// set, the same read ends Cancelled instead of reading to the end.
+TEST(CancelledReading, AWholeParseOfALongProgramStopsOnceTheTokenIsSet) {
+    const std::string text = helicalProgram(3 * static_cast<int>(kStreamChunkRecords));
+    CancelToken cancel;
+    const auto read = parseOwnedGcode(text, "t.nc", kinematics::defaultBladeMachine(), {}, &cancel);
+    ASSERT_TRUE(read.has_value()) << read.error().toString();
+    cancel.requestCancel();
+    const auto stopped =
+        parseOwnedGcode(text, "t.nc", kinematics::defaultBladeMachine(), {}, &cancel);
+    ASSERT_FALSE(stopped.has_value());
+    EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled);
+}
+
 TEST(StreamedReading, RefusesWhatAWholeParseRefusesWithTheSameMessage) {
     std::string text = helicalProgram(2 * static_cast<int>(kStreamChunkRecords));
     // A macro variable deep in the program, after runs have been handed on.

@@ -69,6 +69,25 @@ TEST(FormatDetection, ATableNamedLikeGcodeIsReadAsATableWithTheWarningFirst) {
     EXPECT_NE(program->path().warnings.front().find("extension"), std::string::npos);
 }
 
+// CL data and point tables are parsed whole, then the token is looked at: a cancelled read
+// ends Cancelled in every format.
+TEST(OwnedText, ACancelledReadEndsCancelledInEveryFormat) {
+    const auto machine = kinematics::defaultBladeMachine();
+    ReadOptions options;
+    options.feedMmPerS = 10.0;
+    CancelToken cancel;
+    cancel.requestCancel();
+    for (const auto& [text, format] :
+         {std::pair{std::string("FEDRAT/1000\nGOTO/1,2,3,0,0,1\nGOTO/2,2,3,0,0,1\n"),
+                    ProgramFormat::Apt},
+          std::pair{std::string("1 2 3 0 0 1\n2 2 3 0 0 1\n"), ProgramFormat::Table}}) {
+        ASSERT_TRUE(parseOwnedProgram(text, "a", format, machine, options).has_value());
+        const auto stopped = parseOwnedProgram(text, "a", format, machine, options, &cancel);
+        ASSERT_FALSE(stopped.has_value());
+        EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled);
+    }
+}
+
 // A program read from text it keeps, and the re-read check's stream of a written program, must
 // give the records a read of copied text gives, in every format; on a machine whose table turns
 // about Y every read turns CL data into the engine's frame.

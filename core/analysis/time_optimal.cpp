@@ -194,10 +194,25 @@ Status validate(const AxisProfile& profile) {
 // The forward pass reads sample i + 1's controllable bound for the last time where it writes
 // that sample's speed, so the speeds are written over the bounds: one array of 8 bytes per
 // sample rather than two.
-Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& profile) {
+// Whether a pass at sample i should stop: the token is looked at every 65,536 samples (about a
+// millisecond of either pass).
+bool isCancelledAt(const CancelToken* cancel, std::size_t i) {
+    constexpr std::size_t kSamplesPerPoll = std::size_t{1} << 16;
+    return cancel != nullptr && i % kSamplesPerPoll == 0 && cancel->isCancelled();
+}
+
+std::unexpected<Error> cancelled() {
+    return makeError(ErrorCode::Cancelled, "the time-optimal machining time was cancelled");
+}
+
+Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& profile,
+                                     const CancelToken* cancel) {
     const std::size_t n = problem.size();
     std::vector<double> controllable(n, 0.0); // K_i = [0, controllable[i]]; rest at the end
     for (std::size_t i = n - 1; i-- > 0;) {
+        if (isCancelledAt(cancel, i)) {
+            return cancelled();
+        }
         controllable[i] = problem.largestControllable(i, controllable[i + 1]);
     }
     TimeOptimalTime result;
@@ -206,6 +221,9 @@ Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& 
     result.pathSpeed[0] = 0.0;
     double x = 0.0;
     for (std::size_t i = 0; i + 1 < n; ++i) {
+        if (isCancelledAt(cancel, i)) {
+            return cancelled();
+        }
         const double u = problem.largestControl(i, x, bound[i + 1]);
         const double next = std::clamp(x + 2.0 * problem.step(i) * u, 0.0, bound[i + 1]);
         const double speeds = std::sqrt(x) + std::sqrt(next);
@@ -284,7 +302,7 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
         return std::unexpected(status.error());
     }
     Problem problem(profile, machine);
-    auto result = parameterise(problem, profile);
+    auto result = parameterise(problem, profile, options.cancel);
     if (!result) {
         return result;
     }
@@ -296,7 +314,7 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
                 break;
             }
             const int rounds = result->jerkRounds + 1;
-            result = parameterise(problem, profile);
+            result = parameterise(problem, profile, options.cancel);
             if (!result) {
                 return result;
             }
@@ -312,8 +330,9 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
 }
 
 std::optional<double> timeOptimalSeconds(const AxisProfile& profile,
-                                         const kinematics::MachineModel& machine) {
-    auto t2 = timeOptimalTime(profile, machine);
+                                         const kinematics::MachineModel& machine,
+                                         const CancelToken* cancel) {
+    auto t2 = timeOptimalTime(profile, machine, {.cancel = cancel});
     return t2 ? std::optional<double>(t2->time) : std::nullopt;
 }
 

@@ -26,6 +26,10 @@ struct TimeOptimalOptions {
     // non-convex; this is a heuristic, not an optimum).
     bool jerkHeuristic = false;
     int maxJerkRounds = 20;
+    // Polled every few ten thousand samples of each pass: once it is set, T2 ends with
+    // ErrorCode::Cancelled (a cancelled job does not wait the 0.4 s T2 takes at five million
+    // samples).
+    const CancelToken* cancel = nullptr;
 };
 
 struct TimeOptimalTime {
@@ -47,7 +51,9 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
 
 // T2 alone (s), or none when the machine's limits do not let the tool move along the path: what
 // a job and a limit sweep report.
+// None too when `cancel` is set before T2 ends.
 std::optional<double> timeOptimalSeconds(const AxisProfile& profile,
-                                         const kinematics::MachineModel& machine);
+                                         const kinematics::MachineModel& machine,
+                                         const CancelToken* cancel = nullptr);
 
 } // namespace bladeaxis::analysis

@@ -634,8 +634,8 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     // T2 needs only the input's profile, which nothing changes from here on: it runs beside the
     // tilt check and the re-scheduling. The future is declared after the result, so an early
     // return waits for it before the result goes.
-    auto timeOptimal = std::async(std::launch::async, [&result] {
-        return analysis::timeOptimalSeconds(result.original, result.machine);
+    auto timeOptimal = std::async(std::launch::async, [&result, &cancel] {
+        return analysis::timeOptimalSeconds(result.original, result.machine, &cancel);
     });
     if (originalReady) {
         originalReady(result);

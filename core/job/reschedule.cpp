@@ -249,7 +249,7 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutco
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
-    motion.timeOptimal = analysis::timeOptimalSeconds(motion.profile, *input.machine);
+    motion.timeOptimal = analysis::timeOptimalSeconds(motion.profile, *input.machine, &cancel);
     return motion;
 }
 

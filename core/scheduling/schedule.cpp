@@ -160,6 +160,14 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
     return stage;
 }
 
+bool isCancelled(const CancelToken* cancel) {
+    return cancel != nullptr && cancel->isCancelled();
+}
+
+std::unexpected<Error> cancelledError() {
+    return makeError(ErrorCode::Cancelled, "scheduling cancelled");
+}
+
 // Runs every layer; a parallel run writes each result into its own slot, so it is identical
 // to the serial run.
 std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems, const PlanePath& path,
@@ -167,7 +175,7 @@ std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems, const P
                                     const ScheduleParameters& p, const CancelToken* cancel) {
     std::vector<LayerOutcome> outcomes(problems.size());
     forEachItem(problems.size(), path.firstInput.size(), p.threads, [&](std::size_t k) {
-        if (cancel != nullptr && cancel->isCancelled()) {
+        if (isCancelled(cancel)) {
             return;
         }
         std::vector<std::size_t> inputs;
@@ -408,6 +416,9 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     if (input.planePathMade) {
         input.planePathMade();
     }
+    if (isCancelled(cancel)) { // between the stages that run before the layers, too
+        return cancelledError();
+    }
     ScheduleResult result;
     result.warnings = path->warnings;
     result.tiltB0 = path->tiltB0;
@@ -415,6 +426,9 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     auto stage = buildChannelStage(*path, parameters, input.toolRadius, input, result.warnings);
     if (!stage) {
         return std::unexpected(stage.error());
+    }
+    if (isCancelled(cancel)) {
+        return cancelledError();
     }
     for (std::size_t b : stage->split.basePoints) {
         result.basePoints.push_back(path->firstInput[b]);
@@ -456,8 +470,8 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
                                problem.warnings.end());
     }
     std::vector<LayerOutcome> outcomes = runLayers(problems, *path, perLayer, parameters, cancel);
-    if (cancel != nullptr && cancel->isCancelled()) {
-        return makeError(ErrorCode::Cancelled, "scheduling cancelled");
+    if (isCancelled(cancel)) {
+        return cancelledError();
     }
     if (auto applied = applyKeyPointEdits(outcomes, overrides, perLayer); !applied) {
         return std::unexpected(applied.error());

@@ -186,6 +186,20 @@ TEST(TimeOptimal, SecondsAreTheTimeOfTheSolutionAndNoneWhereItFails) {
     EXPECT_FALSE(timeOptimalSeconds(feedless, machine).has_value());
 }
 
+// Each pass looks at the token at its first sample and every 65,536 after: a set token ends
+// even a short T2 with Cancelled, and its seconds are none.
+TEST(TimeOptimal, ACancelledTokenEndsItWithCancelledInsteadOfATime) {
+    const AxisProfile line = straightLine(10.0, 11, 10.0);
+    const kinematics::MachineModel machine = linearMachine(1e3, 100.0);
+    CancelToken cancel;
+    ASSERT_TRUE(timeOptimalTime(line, machine, {.cancel = &cancel}).has_value());
+    cancel.requestCancel();
+    const auto stopped = timeOptimalTime(line, machine, {.cancel = &cancel});
+    ASSERT_FALSE(stopped.has_value());
+    EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled);
+    EXPECT_FALSE(timeOptimalSeconds(line, machine, &cancel).has_value());
+}
+
 TEST(TimeOptimal, NonFiniteProfileValuesAreErrors) {
     AxisProfile derivative = straightLine(10.0, 11, 10.0);
     derivative.axes[0].velocity[5] = std::nan("");

@@ -314,6 +314,20 @@ TEST(ScheduleCases, CancelledRunReturnsCancelled) {
     EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
 }
 
+// A cancel that comes while the stages before the layers run (here: once the plane path is
+// made) ends the schedule there, not after every layer's turn to look at the token.
+TEST(ScheduleCases, ACancelBeforeTheLayersEndsTheRunWithCancelled) {
+    CancelToken token;
+    ScheduleInput input = helix(2.0);
+    bool layersSplit = false;
+    input.planePathMade = [&] { token.requestCancel(); };
+    input.layersSplit = [&](std::span<const LayerBounds>) { layersSplit = true; };
+    auto result = schedule(input, bestPreset(), &token);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
+    EXPECT_FALSE(layersSplit);
+}
+
 // Appendix B re-established: layer length 217.5 mm, theta_e = 2 pi, and the peak theta'' of
 // the paper rule vs the exact rule (table of Appendix B, within 5 %).
 TEST(ScheduleCases, AppendixBNumbers) {

@@ -231,7 +231,8 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
     std::vector<Result<AxisSeries>> series = differentiateAxes(
         profile.pathParameter, kinematics::kAllAxes.size(), positionsOf, profile.feed,
         options.method, options.filterSeconds, knots, options.threads, options.cancel);
-    if (Status going = checkCancelled(options); !going) { // not an axis's error
+    // The axes skipped on cancellation hold Cancelled: the job's, not an error of theirs.
+    if (Status going = checkCancelled(options); !going) {
         return std::unexpected(std::move(going.error()));
     }
     for (kinematics::AxisId id : kinematics::kAllAxes) {

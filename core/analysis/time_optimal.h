@@ -26,7 +26,7 @@ struct TimeOptimalOptions {
     // non-convex; this is a heuristic, not an optimum).
     bool jerkHeuristic = false;
     int maxJerkRounds = 20;
-    // Polled every few ten thousand samples of each pass: once it is set, T2 ends with
+    // Polled every 65,536 samples of each pass: once it is set, T2 ends with
     // ErrorCode::Cancelled (a cancelled job does not wait the 0.4 s T2 takes at five million
     // samples).
     const CancelToken* cancel = nullptr;

@@ -657,6 +657,10 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
         }
     }
     waitForInputT2(result, timeOptimal); // unless a job that released its samples took it
+    // A T2 cut short by the token is none, not a path the limits cannot move along.
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
     if (cadSpec) {
         progress.progress(0.65, spec.demo && spec.cad.file.empty()
                                     ? "checking the tool against the demo blade's surface"

@@ -250,6 +250,9 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutco
         return std::unexpected(status.error());
     }
     motion.timeOptimal = analysis::timeOptimalSeconds(motion.profile, *input.machine, &cancel);
+    if (auto status = checkCancelled(cancel); !status) { // T2 cut short: none, not a figure
+        return std::unexpected(status.error());
+    }
     return motion;
 }
 

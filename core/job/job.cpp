@@ -477,8 +477,12 @@ Status checkScheduledLayers(JobResult& result, const JobSpec& spec,
     return orientation;
 }
 
-Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel,
-                      std::future<std::optional<double>>& timeOptimal, std::vector<double>& passA) {
+// The share of a job's progress its re-scheduling spans; its stages report within it.
+constexpr struct { double from, to; } kRescheduleProgress{0.5, 0.65};
+
+Status rescheduleInto(JobResult& result, const JobSpec& spec, ProgressSink& progress,
+                      const CancelToken& cancel, std::future<std::optional<double>>& timeOptimal,
+                      std::vector<double>& passA) {
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
                          "the ball radius is not known: give --tool-radius (" +
@@ -531,6 +535,11 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, const CancelToken&
     };
     input.scheduled = [&](scheduling::ScheduleResult& schedule) {
         orientationInChannel = checkScheduledLayers(result, spec, schedule);
+    };
+    input.stageStarted = [&progress](double done, std::string_view stage) {
+        progress.progress(kRescheduleProgress.from +
+                              done * (kRescheduleProgress.to - kRescheduleProgress.from),
+                          stage);
     };
     auto outcome = reschedule(input, cancel);
     if (!outcome) {
@@ -647,8 +656,8 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
         return std::unexpected(status.error());
     }
     if (spec.reschedule) {
-        progress.progress(0.5, "re-scheduling the tool orientation");
-        if (auto status = rescheduleInto(result, spec, cancel, timeOptimal, passA); !status) {
+        if (auto status = rescheduleInto(result, spec, progress, cancel, timeOptimal, passA);
+            !status) {
             return std::unexpected(status.error());
         }
         for (const std::string& warning : result.rescheduled->schedule.warnings) {

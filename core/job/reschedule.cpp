@@ -401,6 +401,12 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
                          "the ball radius is not known: give --tool-radius");
     }
     StageClock clock;
+    const auto startStage = [&input](double done, std::string_view stage) {
+        if (input.stageStarted) {
+            input.stageStarted(done, stage);
+        }
+    };
+    startStage(0.0, "re-scheduling the tool orientation");
     auto schedule =
         scheduling::schedule(scheduleInputOf(input), input.parameters, &cancel, input.layerEdits);
     if (!schedule) {
@@ -419,6 +425,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
+    startStage(0.28, "computing the new machine axes");
     auto axes = newMachineAxes(input, outcome);
     if (!axes) {
         return std::unexpected(axes.error());
@@ -447,6 +454,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     if (!input.rewritten) {
         analysed = startAnalysis();
     }
+    startStage(0.35, "writing the re-scheduled program");
     auto text = rewriteProgram(input, outcome, cancel);
     if (input.rewritten) {
         // Also after a failed rewrite, which may have given back part of the text already.
@@ -464,6 +472,9 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
     outcome.stageSeconds.rewrite = clock.lap();
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
+    }
+    if (input.verifyByRereading || feedsFromWritten) {
+        startStage(0.68, "reading the written program back to check it");
     }
     auto written = input.verifyByRereading || feedsFromWritten
                        ? readBackWritten(input, outcome, feedsFromWritten, cancel)
@@ -487,6 +498,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(status.error());
     }
     if (input.analyseNewMotion) {
+        startStage(0.98, "analysing the new axis motion");
         auto motion = analysed.get();
         if (!motion) {
             return std::unexpected(motion.error());

@@ -17,6 +17,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace bladeaxis::job {
@@ -103,6 +104,11 @@ struct RescheduleInput {
     // goes. A million-block program's text (65 bytes per record) then does not stand beside the
     // new motion's analysis, where a job's memory peaks. Null: kept in programText.
     std::shared_ptr<StagedFile> stagedProgram;
+    // Called as each stage of the re-scheduling starts, on the calling thread, with the share
+    // of the re-scheduling done before it and what the stage does ("writing the re-scheduled
+    // program"): a job shows it as its progress. The shares are those of a five-million-block
+    // program, whose re-scheduling takes about 3 s.
+    std::function<void(double done, std::string_view stage)> stageStarted;
 };
 
 // Largest ball-centre deviation accepted when the written program is read back: the program's

@@ -74,6 +74,43 @@ TEST(Job, CancelledJobStopsWithCancelled) {
     EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
 }
 
+// What a job reports as it goes, with its share of the whole.
+class ProgressRecorder final : public ProgressSink {
+  public:
+    void progress(double fraction, std::string_view stage) override {
+        steps.emplace_back(fraction, stage);
+    }
+    void warning(std::string_view) override {}
+    std::vector<std::pair<double, std::string>> steps;
+};
+
+// The re-scheduling, the longest part of a large job (about 3 s at five million blocks), shows
+// each of its stages in order, and the job's progress never goes back.
+TEST(Job, TheReschedulingReportsEachOfItsStagesInOrder) {
+    JobSpec spec;
+    spec.demo = true;
+    ProgressRecorder progress;
+    CancelToken cancel;
+    ASSERT_TRUE(runJob(spec, progress, cancel).has_value());
+    std::vector<std::string> stages;
+    for (std::size_t i = 0; i < progress.steps.size(); ++i) {
+        stages.push_back(progress.steps[i].second);
+        if (i > 0) {
+            EXPECT_GE(progress.steps[i].first, progress.steps[i - 1].first) << stages.back();
+        }
+    }
+    const std::vector<std::string> rescheduling{
+        "re-scheduling the tool orientation", "computing the new machine axes",
+        "writing the re-scheduled program", "reading the written program back to check it",
+        "analysing the new axis motion"};
+    const auto first = std::ranges::find(stages, rescheduling.front());
+    ASSERT_NE(first, stages.end());
+    ASSERT_GE(static_cast<std::size_t>(stages.end() - first), rescheduling.size());
+    EXPECT_EQ(
+        std::vector<std::string>(first, first + static_cast<std::ptrdiff_t>(rescheduling.size())),
+        rescheduling);
+}
+
 TEST(Job, MissingProgramIsFileNotFound) {
     JobSpec spec;
     spec.program = "/nonexistent/blade.nc";

@@ -371,15 +371,15 @@ void toProgramFrame(std::span<toolpath::ClRecord> records,
 Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileName,
                                         ProgramFormat format,
                                         const kinematics::MachineModel& machine,
-                                        const ReadOptions& options, const CancelToken* cancel) {
+                                        const ReadOptions& options, const ReadWatch& watch) {
     if (format != ProgramFormat::Gcode) {
         auto program = parseTextFormat(text, fileName, format, machine, options);
-        if (program && cancel != nullptr && cancel->isCancelled()) {
+        if (program && watch.cancel != nullptr && watch.cancel->isCancelled()) {
             return makeError(ErrorCode::Cancelled, "the read was cancelled");
         }
         return program;
     }
-    auto program = nc::parseOwnedGcode(std::move(text), fileName, machine, options, cancel);
+    auto program = nc::parseOwnedGcode(std::move(text), fileName, machine, options, watch);
     if (!program) {
         return std::unexpected(program.error());
     }
@@ -419,13 +419,13 @@ namespace {
 
 Result<LoadedProgram> readOwnedProgramText(std::string text, const std::filesystem::path& path,
                                            const kinematics::MachineModel& machine,
-                                           const ReadOptions& options, const CancelToken* cancel) {
+                                           const ReadOptions& options, const ReadWatch& watch) {
     auto probed = detectFormat(path, text);
     if (!probed) {
         return std::unexpected(probed.error());
     }
     auto program =
-        parseOwnedProgram(std::move(text), path.string(), probed->format, machine, options, cancel);
+        parseOwnedProgram(std::move(text), path.string(), probed->format, machine, options, watch);
     if (program && probed->warning) {
         program->mutablePath().warnings.insert(program->mutablePath().warnings.begin(),
                                                *probed->warning);
@@ -437,18 +437,18 @@ Result<LoadedProgram> readOwnedProgramText(std::string text, const std::filesyst
 
 Result<LoadedProgram> readProgramText(std::string_view text, const std::filesystem::path& path,
                                       const kinematics::MachineModel& machine,
-                                      const ReadOptions& options, const CancelToken* cancel) {
-    return readOwnedProgramText(std::string(text), path, machine, options, cancel);
+                                      const ReadOptions& options, const ReadWatch& watch) {
+    return readOwnedProgramText(std::string(text), path, machine, options, watch);
 }
 
 Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
                                   const kinematics::MachineModel& machine,
-                                  const ReadOptions& options, const CancelToken* cancel) {
+                                  const ReadOptions& options, const ReadWatch& watch) {
     auto text = readTextFile(path);
     if (!text) {
         return std::unexpected(text.error());
     }
-    return readOwnedProgramText(std::move(*text), path, machine, options, cancel);
+    return readOwnedProgramText(std::move(*text), path, machine, options, watch);
 }
 
 } // namespace bladeaxis::io

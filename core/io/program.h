@@ -7,6 +7,7 @@
 #include "core/io/cl/apt_reader.h"
 #include "core/io/nc/gcode_reader.h"
 #include "core/io/read_options.h"
+#include "core/io/read_watch.h"
 #include "core/io/table/point_table.h"
 
 #include <filesystem>
@@ -92,23 +93,21 @@ void toProgramFrame(std::span<toolpath::ClRecord> records, const kinematics::Mac
 // the first warning of the toolpath.
 Result<LoadedProgram> readProgramText(std::string_view text, const std::filesystem::path& path,
                                       const kinematics::MachineModel& machine,
-                                      const ReadOptions& options = {},
-                                      const CancelToken* cancel = nullptr);
+                                      const ReadOptions& options = {}, const ReadWatch& watch = {});
 
 // Reads and parses a program. G-code needs the machine (its axes are turned into CL by FK).
-// With `cancel` the read ends with ErrorCode::Cancelled once the token is set: G-code within a
-// few thousand blocks (nc::parseOwnedGcode), CL data and point tables once they are parsed.
+// The `watch` hears how far a G-code read has come and may stop any read (ErrorCode::Cancelled):
+// G-code within a few thousand blocks, CL data and point tables once they are parsed.
 Result<LoadedProgram> loadProgram(const std::filesystem::path& path,
                                   const kinematics::MachineModel& machine,
-                                  const ReadOptions& options = {},
-                                  const CancelToken* cancel = nullptr);
+                                  const ReadOptions& options = {}, const ReadWatch& watch = {});
 
 // parseProgram of text the loaded program then keeps: a G-code program's text is not copied.
 Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileName,
                                         ProgramFormat format,
                                         const kinematics::MachineModel& machine,
                                         const ReadOptions& options = {},
-                                        const CancelToken* cancel = nullptr);
+                                        const ReadWatch& watch = {});
 
 // Reads a program of `format` and hands its records (in the engine's frame, as parseProgram
 // gives them) to `consume` in order; returns their number. G-code is streamed and its records

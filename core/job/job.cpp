@@ -15,7 +15,9 @@
 #include "core/kinematics/machine_file.h"
 #include "core/kinematics/travel_limits.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <future>
 
 namespace bladeaxis::job {
@@ -99,10 +101,36 @@ Result<std::vector<kinematics::MachineAxes>> passAxes(std::span<const ClRecord> 
     return axes;
 }
 
+// A stage's share [from, to] of a job's progress. What the stage reports within it reaches the
+// sink only when the whole percent or the stage's text changes: a large read reports about a
+// thousand times.
+class ProgressShare {
+  public:
+    ProgressShare(ProgressSink& sink, double from, double to)
+        : m_sink(sink), m_from(from), m_to(to) {}
+
+    void report(double done, std::string_view stage) {
+        const double fraction = m_from + std::clamp(done, 0.0, 1.0) * (m_to - m_from);
+        const int percent = static_cast<int>(std::floor(100.0 * fraction));
+        if (percent == m_shownPercent && stage == m_shownStage) {
+            return;
+        }
+        m_shownPercent = percent;
+        m_shownStage = stage;
+        m_sink.progress(fraction, stage);
+    }
+
+  private:
+    ProgressSink& m_sink;
+    double m_from, m_to;
+    int m_shownPercent = -1;
+    std::string m_shownStage;
+};
+
 // The program read and parsed: the document keeps the one copy of the text the writer needs,
 // or with spec.dropInputText none (the rewrite reads the file again).
 Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::MachineModel& machine,
-                                    std::optional<double>& toolRadius, const CancelToken& cancel) {
+                                    std::optional<double>& toolRadius, const io::ReadWatch& watch) {
     if (spec.demo) {
         auto demo = demoProgram(machine);
         if (!demo) {
@@ -115,7 +143,7 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
         return makeError(ErrorCode::InvalidArgument, "no input program given (or use --demo)");
     }
     if (spec.programText) {
-        return io::readProgramText(*spec.programText, spec.program, machine, spec.read, &cancel);
+        return io::readProgramText(*spec.programText, spec.program, machine, spec.read, watch);
     }
     // The file as it was before and after its text was read: the same file, unchanged, is the
     // one a dropped text can be read again from.
@@ -126,7 +154,7 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
         }
     }
     // The text read is the parsed program's own: no copy of it stands beside the records.
-    auto program = io::loadProgram(spec.program, machine, spec.read, &cancel);
+    auto program = io::loadProgram(spec.program, machine, spec.read, watch);
     if (program && before) {
         if (const auto after = snapshotOf(spec.program); after && after->sameFileAs(*before)) {
             program->dropTextKeptInItsFile(*after);
@@ -477,9 +505,6 @@ Status checkScheduledLayers(JobResult& result, const JobSpec& spec,
     return orientation;
 }
 
-// The share of a job's progress its re-scheduling spans; its stages report within it.
-constexpr struct { double from, to; } kRescheduleProgress{0.5, 0.65};
-
 Status rescheduleInto(JobResult& result, const JobSpec& spec, ProgressSink& progress,
                       const CancelToken& cancel, std::future<std::optional<double>>& timeOptimal,
                       std::vector<double>& passA) {
@@ -536,10 +561,9 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, ProgressSink& prog
     input.scheduled = [&](scheduling::ScheduleResult& schedule) {
         orientationInChannel = checkScheduledLayers(result, spec, schedule);
     };
-    input.stageStarted = [&progress](double done, std::string_view stage) {
-        progress.progress(kRescheduleProgress.from +
-                              done * (kRescheduleProgress.to - kRescheduleProgress.from),
-                          stage);
+    ProgressShare rescheduling(progress, 0.5, 0.65);
+    input.stageStarted = [&rescheduling](double done, std::string_view stage) {
+        rescheduling.report(done, stage);
     };
     auto outcome = reschedule(input, cancel);
     if (!outcome) {
@@ -587,10 +611,14 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     if (!machine) {
         return std::unexpected(machine.error());
     }
-    progress.progress(0.05,
-                      spec.demo ? "generating the demo blade program" : "reading the program");
+    const std::string_view readingStage =
+        spec.demo ? "generating the demo blade program" : "reading the program";
+    ProgressShare reading(progress, 0.05, 0.3);
+    reading.report(0.0, readingStage);
+    const io::ReadWatch watch{.cancel = &cancel,
+                              .progress = [&](double read) { reading.report(read, readingStage); }};
     std::optional<double> generatedRadius;
-    auto program = loadInput(spec, *machine, generatedRadius, cancel);
+    auto program = loadInput(spec, *machine, generatedRadius, watch);
     if (!program) {
         return std::unexpected(program.error());
     }

@@ -131,22 +131,30 @@ void applyStatedTools(const std::vector<StatedTool>& tools, bool inch, GcodeProg
 class RecordOutlet {
   public:
     explicit RecordOutlet(const RecordChunkConsumer* consume,
-                          const TextReadUpTo* readUpTo = nullptr,
-                          const CancelToken* cancel = nullptr)
-        : m_consume(consume), m_readUpTo(readUpTo), m_cancel(cancel) {}
+                          const TextReadUpTo* readUpTo = nullptr, const ReadWatch* watch = nullptr)
+        : m_consume(consume), m_readUpTo(readUpTo), m_watch(watch) {}
 
     void afterBlock(GcodeProgram& program) {
         if (!m_firstInch && !program.sources.empty()) {
             m_firstInch = (program.sources.front().flags & kInch) != 0;
         }
-        if (m_cancel != nullptr && ++m_blocksSincePoll == kBlocksPerCancelPoll) {
-            m_blocksSincePoll = 0;
-            if (m_cancel->isCancelled() && !m_stop) {
-                m_stop = makeError(ErrorCode::Cancelled, "the read was cancelled").error();
-            }
-        }
         if (m_consume != nullptr && program.path.records.size() >= kStreamChunkRecords) {
             handOn(program);
+        }
+    }
+
+    // After each line: every kLinesPerLook lines the watch hears how far the read is (`read`
+    // of `total` bytes) and may stop it.
+    void lineRead(std::size_t read, std::size_t total) {
+        if (m_watch == nullptr || ++m_linesSinceLook < kLinesPerLook) {
+            return;
+        }
+        m_linesSinceLook = 0;
+        if (m_watch->progress) {
+            m_watch->progress(static_cast<double>(read) / static_cast<double>(total));
+        }
+        if (m_watch->cancel != nullptr && m_watch->cancel->isCancelled() && !m_stop) {
+            m_stop = makeError(ErrorCode::Cancelled, "the read was cancelled").error();
         }
     }
 
@@ -172,13 +180,13 @@ class RecordOutlet {
     const std::optional<Error>& stop() const { return m_stop; }
 
   private:
-    // About a millisecond of reading between two looks at the token.
-    static constexpr std::size_t kBlocksPerCancelPoll = 4096;
+    // About a millisecond of reading between two looks.
+    static constexpr std::size_t kLinesPerLook = 4096;
 
     const RecordChunkConsumer* m_consume;
     const TextReadUpTo* m_readUpTo;
-    const CancelToken* m_cancel;
-    std::size_t m_blocksSincePoll = 0;
+    const ReadWatch* m_watch;
+    std::size_t m_linesSinceLook = 0;
     std::size_t m_handedOn = 0;
     std::optional<bool> m_firstInch;
     std::optional<Error> m_stop;
@@ -237,6 +245,7 @@ std::size_t interpretLines(GcodeProgram& program, std::string_view text,
             }
         }
         begin = end + 1;
+        outlet.lineRead(std::min(begin, text.size()), text.size());
     }
     interpreter.finish();
     outlet.handOn(program);
@@ -320,14 +329,14 @@ Status readIntoReservation(GcodeProgram& program, std::string_view fileName,
 
 Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
                                     const kinematics::MachineModel& machine,
-                                    const ReadOptions& options, const CancelToken* cancel) {
+                                    const ReadOptions& options, const ReadWatch& watch) {
     GcodeProgram program;
     if (Status ready = prepareProgram(text, fileName, options, program); !ready) {
         return std::unexpected(ready.error());
     }
     program.text = std::move(text);
     reserveForLines(program, machine);
-    RecordOutlet keepAll(nullptr, nullptr, cancel);
+    RecordOutlet keepAll(nullptr, nullptr, &watch);
     Status read = readIntoReservation(program, fileName, machine, options, keepAll);
     if (!read) {
         return std::unexpected(read.error());
@@ -347,13 +356,13 @@ Result<GcodeProgram> parseOwnedText(std::string text, std::string_view fileName,
 Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName,
                                 const kinematics::MachineModel& machine,
                                 const ReadOptions& options) {
-    return parseOwnedText(std::string(text), fileName, machine, options, nullptr);
+    return parseOwnedText(std::string(text), fileName, machine, options, {});
 }
 
 Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName,
                                      const kinematics::MachineModel& machine,
-                                     const ReadOptions& options, const CancelToken* cancel) {
-    return parseOwnedText(std::move(text), fileName, machine, options, cancel);
+                                     const ReadOptions& options, const ReadWatch& watch) {
+    return parseOwnedText(std::move(text), fileName, machine, options, watch);
 }
 
 Result<std::size_t> streamGcodeRecords(std::string_view text, std::string_view fileName,
@@ -387,7 +396,7 @@ Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,
     if (!text) {
         return std::unexpected(std::move(text.error()));
     }
-    return parseOwnedText(std::move(*text), path.string(), machine, options, nullptr);
+    return parseOwnedText(std::move(*text), path.string(), machine, options, {});
 }
 
 } // namespace bladeaxis::io::nc

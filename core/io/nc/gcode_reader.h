@@ -29,9 +29,9 @@
 // - Errors are ErrorCode::Parse with file:line:column; up to 20 are collected (Error::more).
 
 #include "core/base/error.h"
-#include "core/base/progress.h"
 #include "core/io/nc/gcode_program.h"
 #include "core/io/read_options.h"
+#include "core/io/read_watch.h"
 #include "core/kinematics/machine_model.h"
 
 #include <cstddef>
@@ -51,12 +51,10 @@ Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName
                                 const ReadOptions& options = {});
 
 // parseGcode of text the program then keeps as it is: a large program's text is not copied.
-// With `cancel`, the read polls the token every few thousand blocks and ends with
-// ErrorCode::Cancelled once it is set (a five-million-block program reads for over a second).
+// The `watch` hears how far the read has come and may stop it (ErrorCode::Cancelled).
 Result<GcodeProgram> parseOwnedGcode(std::string text, std::string_view fileName,
                                      const kinematics::MachineModel& machine,
-                                     const ReadOptions& options = {},
-                                     const CancelToken* cancel = nullptr);
+                                     const ReadOptions& options = {}, const ReadWatch& watch = {});
 
 // A run of consecutive records of a streamed program; `first` is the index of records[0] in the
 // whole program. A failed status stops the read, which returns it (a cancelled job, a check

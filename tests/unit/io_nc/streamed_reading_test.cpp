@@ -140,18 +140,34 @@ TEST(StreamedReading, AConsumerThatFailsStopsTheReadWithItsError) {
     EXPECT_EQ(runs, 1u);
 }
 
-// A whole parse looks at its token every few thousand blocks: unset, a long program is read;
-// set, the same read ends Cancelled instead of reading to the end.
-TEST(CancelledReading, AWholeParseOfALongProgramStopsOnceTheTokenIsSet) {
+// A whole parse looks at its watch every few thousand blocks. The token unset, a long program
+// is read; set, the same read ends Cancelled instead of reading to the end.
+TEST(WatchedReading, AWholeParseOfALongProgramStopsOnceTheTokenIsSet) {
     const std::string text = helicalProgram(3 * static_cast<int>(kStreamChunkRecords));
     CancelToken cancel;
-    const auto read = parseOwnedGcode(text, "t.nc", kinematics::defaultBladeMachine(), {}, &cancel);
+    const auto read = parseOwnedGcode(text, "t.nc", kinematics::defaultBladeMachine(), {},
+                                      {.cancel = &cancel, .progress = {}});
     ASSERT_TRUE(read.has_value()) << read.error().toString();
     cancel.requestCancel();
-    const auto stopped =
-        parseOwnedGcode(text, "t.nc", kinematics::defaultBladeMachine(), {}, &cancel);
+    const auto stopped = parseOwnedGcode(text, "t.nc", kinematics::defaultBladeMachine(), {},
+                                         {.cancel = &cancel, .progress = {}});
     ASSERT_FALSE(stopped.has_value());
     EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled);
+}
+
+// The watch hears the share of the text read every 4,096 lines, rising, never past the end.
+TEST(WatchedReading, HearsTheShareOfTheTextReadEveryFewThousandLines) {
+    const std::string text = helicalProgram(3 * static_cast<int>(kStreamChunkRecords));
+    std::vector<double> heard;
+    const auto read = parseOwnedGcode(
+        text, "t.nc", kinematics::defaultBladeMachine(), {},
+        {.cancel = nullptr, .progress = [&](double share) { heard.push_back(share); }});
+    ASSERT_TRUE(read.has_value()) << read.error().toString();
+    ASSERT_EQ(heard.size(), 3u); // 12,295 lines
+    for (std::size_t i = 0; i < heard.size(); ++i) {
+        EXPECT_GT(heard[i], i == 0 ? 0.0 : heard[i - 1]);
+        EXPECT_LE(heard[i], 1.0);
+    }
 }
 
 TEST(StreamedReading, RefusesWhatAWholeParseRefusesWithTheSameMessage) {

@@ -82,7 +82,8 @@ TEST(OwnedText, ACancelledReadEndsCancelledInEveryFormat) {
                     ProgramFormat::Apt},
           std::pair{std::string("1 2 3 0 0 1\n2 2 3 0 0 1\n"), ProgramFormat::Table}}) {
         ASSERT_TRUE(parseOwnedProgram(text, "a", format, machine, options).has_value());
-        const auto stopped = parseOwnedProgram(text, "a", format, machine, options, &cancel);
+        const auto stopped = parseOwnedProgram(text, "a", format, machine, options,
+                                               {.cancel = &cancel, .progress = {}});
         ASSERT_FALSE(stopped.has_value());
         EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled);
     }

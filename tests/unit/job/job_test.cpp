@@ -111,6 +111,40 @@ TEST(Job, TheReschedulingReportsEachOfItsStagesInOrder) {
         rescheduling);
 }
 
+// A program of some thousand lines (the demo with comment lines after its first) shows its read
+// moving through the reading's share of the progress, not one step for the whole read.
+TEST(Job, ALongReadShowsHowFarItHasCome) {
+    const auto demo = demoProgram(kinematics::defaultBladeMachine());
+    ASSERT_TRUE(demo.has_value()) << demo.error().toString();
+    std::string padded = demo->text;
+    const std::size_t firstLineEnd = padded.find('\n') + 1;
+    std::string comments;
+    for (int i = 0; i < 3 * 4096; ++i) {
+        comments += "(PADDING)\n";
+    }
+    padded.insert(firstLineEnd, comments);
+    JobSpec spec;
+    spec.program = "padded.nc";
+    spec.programText = padded;
+    spec.toolRadius = demo->toolRadius;
+    spec.reschedule = false;
+    ProgressRecorder progress;
+    CancelToken cancel;
+    ASSERT_TRUE(runJob(spec, progress, cancel).has_value());
+    std::vector<double> reading;
+    for (const auto& [fraction, stage] : progress.steps) {
+        if (stage == "reading the program") {
+            reading.push_back(fraction);
+        }
+    }
+    ASSERT_GE(reading.size(), 3u);
+    EXPECT_EQ(reading.front(), 0.05);
+    for (std::size_t i = 1; i < reading.size(); ++i) {
+        EXPECT_GT(reading[i], reading[i - 1]);
+        EXPECT_LE(reading[i], 0.3);
+    }
+}
+
 TEST(Job, MissingProgramIsFileNotFound) {
     JobSpec spec;
     spec.program = "/nonexistent/blade.nc";

@@ -43,7 +43,8 @@ using PositionsOf =
 
 // differentiateAxes of `axes` axes whose positions are handed out one axis at a time: only the
 // axes being differentiated (one per thread) have positions and spline moments at once. An axis
-// that starts after `cancel` is set is not differentiated: its result is ErrorCode::Cancelled.
+// that starts after `cancel` is set is not differentiated, and a spline fit under way stops
+// within 65,536 samples: their results are ErrorCode::Cancelled.
 std::vector<Result<AxisSeries>>
 differentiateAxes(std::span<const double> s, std::size_t axes, const PositionsOf& positionsOf,
                   double feed, DerivativeMethod method, double filterSeconds = 0.008,

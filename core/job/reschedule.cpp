@@ -43,15 +43,20 @@ scheduling::ScheduleInput scheduleInputOf(const RescheduleInput& input) {
 // IK of the new poses with A unwrapped from the original A of the first record, so the new
 // program starts where the old one did and A stays continuous.
 Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInput& input,
-                                                            const RescheduleOutcome& outcome) {
+                                                            const RescheduleOutcome& outcome,
+                                                            const CancelToken& cancel) {
     const analysis::PathSamples samples = rescheduledSamples(passOf(input), outcome);
     // The poses are made as the IK reads them: an array of them (48 bytes per record) would
     // stand beside the schedule and the new axes, where read-schedule-write's memory peaks.
     const auto poseAt = [&samples](std::size_t i) {
         return kinematics::ToolPose{samples.tip(i), samples.toolAxis(i)};
     };
-    auto solved = kinematics::inverseKinematicsAlong(input.machine->chain, samples.size(), poseAt,
-                                                     input.startA, input.parameters.threads);
+    auto solved =
+        kinematics::inverseKinematicsAlong(input.machine->chain, samples.size(), poseAt,
+                                           input.startA, input.parameters.threads, &cancel);
+    if (solved.cancelled) {
+        return makeError(ErrorCode::Cancelled, "the job was cancelled");
+    }
     if (solved.failedIndex) {
         Error error = solved.failure;
         error.where = {input.program->path().sourceFile, passOf(input)[*solved.failedIndex].line,
@@ -426,7 +431,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         return std::unexpected(status.error());
     }
     startStage(0.28, "computing the new machine axes");
-    auto axes = newMachineAxes(input, outcome);
+    auto axes = newMachineAxes(input, outcome, cancel);
     if (!axes) {
         return std::unexpected(axes.error());
     }

@@ -65,13 +65,26 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const T
 
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count,
                                      const std::function<ToolPose(std::size_t)>& poseAt,
-                                     double aStart, unsigned threads) {
+                                     double aStart, unsigned threads, const CancelToken* cancel) {
+    constexpr std::size_t kPosesPerPoll = std::size_t{1} << 16;
+    const auto stopsAt = [cancel](std::size_t i) {
+        return cancel != nullptr && i % kPosesPerPoll == 0 && cancel->isCancelled();
+    };
+    const auto cancelled = [] {
+        IkAlongResult stopped;
+        stopped.cancelled = true;
+        return stopped;
+    };
     IkAlongResult result;
     // The angles of every pose at once (they need no neighbour), the earliest failure wins.
     // They wait in the result's own a and b (math convention, A wrapped) until the axes are
-    // made, rather than in an array of their own.
+    // made, rather than in an array of their own. A poll that finds the token set stops the
+    // pass like a failure; the token, looked at afterwards, tells the two apart.
     result.axes.resize(count);
     const std::size_t failed = forEachUntilFirstFailure(count, threads, [&](std::size_t i) {
+        if (stopsAt(i)) {
+            return false;
+        }
         auto solved = axisAngles(poseAt(i));
         if (solved) {
             result.axes[i].b = solved->bMath;
@@ -79,6 +92,9 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count
         }
         return solved.has_value();
     });
+    if (cancel != nullptr && cancel->isCancelled()) {
+        return cancelled();
+    }
     if (failed < count) {
         result.axes.clear();
         result.failedIndex = failed;
@@ -93,11 +109,17 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count
     }
     forEachRange(count, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
+            if (stopsAt(i)) {
+                return;
+            }
             const double bMath = result.axes[i].b;
             const double aMath = result.axes[i].a;
             result.axes[i] = axesAt(chain, poseAt(i), bMath, aMath);
         }
     });
+    if (cancel != nullptr && cancel->isCancelled()) {
+        return cancelled();
+    }
     return result;
 }
 

@@ -3,6 +3,7 @@
 // Branch selection: A is chosen nearest to a reference angle (unwrapping), B in [-90, 90] deg.
 
 #include "core/base/error.h"
+#include "core/base/progress.h"
 #include "core/geometry/vec.h"
 #include "core/kinematics/machine_model.h"
 
@@ -34,15 +35,19 @@ Result<MachineAxes> inverseKinematics(const TableAHeadB& chain, const ToolPose& 
 struct IkAlongResult {
     std::vector<MachineAxes> axes;
     std::optional<std::size_t> failedIndex;
-    Error failure; // meaningful when failedIndex is set
+    Error failure;          // meaningful when failedIndex is set
+    bool cancelled = false; // the token was set: no axes, no failure
 };
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const ToolPose> poses,
                                      double aStart, unsigned threads = 1);
 // The same for `count` poses made on demand: poseAt(i) is called (from up to `threads`
-// threads, twice per pose) instead of a pose array being kept, 48 bytes per pose.
+// threads, twice per pose) instead of a pose array being kept, 48 bytes per pose. With a
+// token, each thread looks at it every 65,536 poses (a few milliseconds): once it is set the
+// result is `cancelled`.
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count,
                                      const std::function<ToolPose(std::size_t)>& poseAt,
-                                     double aStart, unsigned threads = 1);
+                                     double aStart, unsigned threads = 1,
+                                     const CancelToken* cancel = nullptr);
 
 // Tool axis for a given programmed A and B, in W (spec §6.1 with the sign conventions).
 Vec3 toolAxisFor(const TableAHeadB& chain, double a, double b);

@@ -211,5 +211,42 @@ TEST(InverseKinematicsAlong, PosesMadeOnDemandGiveThePoseArraysResultBitForBit) 
     EXPECT_TRUE(failed.axes.empty());
 }
 
+// A job interrupted while the new axes are solved stops within 65,536 poses, in either pass,
+// instead of solving the rest of a path of millions; a token never set changes nothing.
+TEST(InverseKinematicsAlong, StopsSoonAfterTheTokenIsSetInEitherPass) {
+    const TableAHeadB chain = spiralChain();
+    const std::vector<ToolPose> poses = spiralPoses(200'000);
+    const IkAlongResult whole = inverseKinematicsAlong(chain, poses, 0.0, 1);
+    ASSERT_FALSE(whole.failedIndex);
+    // Each pose is asked for twice, once per pass: call 70,000 is in the first pass, call
+    // 270,000 the second pass's pose 70,000.
+    for (const std::size_t setAtCall : {std::size_t{70'000}, std::size_t{270'000}}) {
+        CancelToken cancel;
+        std::size_t calls = 0;
+        const IkAlongResult stopped = inverseKinematicsAlong(
+            chain, poses.size(),
+            [&](std::size_t i) {
+                if (++calls == setAtCall) {
+                    cancel.requestCancel();
+                }
+                return poses[i];
+            },
+            0.0, 1, &cancel);
+        EXPECT_TRUE(stopped.cancelled) << setAtCall;
+        EXPECT_FALSE(stopped.failedIndex.has_value()) << setAtCall;
+        EXPECT_TRUE(stopped.axes.empty()) << setAtCall;
+        EXPECT_LE(calls, setAtCall + 65'536) << setAtCall;
+    }
+    CancelToken never;
+    const IkAlongResult watched = inverseKinematicsAlong(
+        chain, poses.size(), [&poses](std::size_t i) { return poses[i]; }, 0.0, 2, &never);
+    EXPECT_FALSE(watched.cancelled);
+    ASSERT_EQ(watched.axes.size(), whole.axes.size());
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        ASSERT_TRUE(watched.axes[i].a == whole.axes[i].a && watched.axes[i].x == whole.axes[i].x)
+            << i;
+    }
+}
+
 } // namespace
 } // namespace bladeaxis::kinematics

@@ -105,14 +105,28 @@ std::vector<LayerBounds> boundsOf(const LayerSplit& split, const PlanePath& path
     return bounds;
 }
 
+bool isCancelled(const CancelToken* cancel) {
+    return cancel != nullptr && cancel->isCancelled();
+}
+
+std::unexpected<Error> cancelledError() {
+    return makeError(ErrorCode::Cancelled, "scheduling cancelled");
+}
+
+// Looks at the token after the tangents and after the curvature: at five million points each
+// of this stage's steps takes 0.05-0.15 s.
 Result<ChannelStage> buildChannelStage(const PlanePath& path, const ScheduleParameters& p,
                                        double radius, const ScheduleInput& input,
-                                       std::vector<std::string>& warnings) {
+                                       std::vector<std::string>& warnings,
+                                       const CancelToken* cancel) {
     ChannelStage stage;
     auto tangents = computeWrappedTangents(path.points, p.tangentChordMinMm,
                                            p.tangentChordMedianFactor, p.threads);
     if (!tangents) {
         return std::unexpected(tangents.error());
+    }
+    if (isCancelled(cancel)) {
+        return cancelledError();
     }
     stage.tangents = std::move(*tangents);
     // The unwrap and the curvature's prefix sums are each one chain through the path, whose
@@ -130,6 +144,9 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
     stage.curvature =
         analyseCurvature(path.arcLength, std::move(stage.tangents.curvature), std::move(weights),
                          stage.tangents.turning, settings, p.threads);
+    if (isCancelled(cancel)) {
+        return cancelledError();
+    }
     stage.split = splitLayers(stage.tangents.forwardAngle, stage.curvature.smoothedCurvature,
                               stage.curvature.runs, p.basePoint);
     freeStorage(stage.curvature.smoothedCurvature); // the runs stay: the channel reads them
@@ -158,14 +175,6 @@ Result<ChannelStage> buildChannelStage(const PlanePath& path, const SchedulePara
         }
     }
     return stage;
-}
-
-bool isCancelled(const CancelToken* cancel) {
-    return cancel != nullptr && cancel->isCancelled();
-}
-
-std::unexpected<Error> cancelledError() {
-    return makeError(ErrorCode::Cancelled, "scheduling cancelled");
 }
 
 // Runs every layer; a parallel run writes each result into its own slot, so it is identical
@@ -423,7 +432,8 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     result.warnings = path->warnings;
     result.tiltB0 = path->tiltB0;
     result.traversalSign = path->traversalSign;
-    auto stage = buildChannelStage(*path, parameters, input.toolRadius, input, result.warnings);
+    auto stage =
+        buildChannelStage(*path, parameters, input.toolRadius, input, result.warnings, cancel);
     if (!stage) {
         return std::unexpected(stage.error());
     }
@@ -461,6 +471,9 @@ Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
     }
     std::vector<LayerProblem> problems = buildLayerProblems(
         *path, stage->channel, stage->split, margins, shortLengthMm, parameters.threads);
+    if (isCancelled(cancel)) {
+        return cancelledError();
+    }
     // From here on the layers read only the plane path's input index.
     freeStorage(*stage);
     freeStorage(path->arcLength);

@@ -183,16 +183,6 @@ double interiorSpeed(const geometry::CubicSplineInterval& piece) {
     return peak;
 }
 
-// Velocity, acceleration and jerk at every sample from the spline with the given knot values and
-// moments (a merged sample lies inside the interval that starts at the knot before it). Peaks
-// and percentiles are taken as the values are made rather than by reading the series back. The
-// peak velocity also looks at 4 interior points per interval; they cost two divisions each, the
-// most of the evaluation, so an interval whose bound does not exceed the peak so far, and so
-// cannot raise it, is passed over.
-// `velocityStorage`, when given, holds s.size() values that become the velocities, written
-// over: the axis's positions, which knotQ may be (every sample a knot). Sample k's velocity is
-// written once interval k has read its end values, and the last interval is taken before any,
-// so a position is never read after its sample's velocity replaced it.
 // Whether the differentiation should stop: looked at by one axis between its steps and every
 // 65,536 samples of its sampling (a few milliseconds), so that a cancelled job does not wait
 // for the rest of an axis (about 0.15 s at five million samples).
@@ -204,8 +194,17 @@ std::unexpected<Error> cancelledAxis() {
     return makeError(ErrorCode::Cancelled, "the analysis was cancelled");
 }
 
-// The spline's derivatives at every sample; false, with `series` unfinished, when `cancel` was
-// set on the way.
+// Velocity, acceleration and jerk at every sample from the spline with the given knot values and
+// moments (a merged sample lies inside the interval that starts at the knot before it). Peaks
+// and percentiles are taken as the values are made rather than by reading the series back. The
+// peak velocity also looks at 4 interior points per interval; they cost two divisions each, the
+// most of the evaluation, so an interval whose bound does not exceed the peak so far, and so
+// cannot raise it, is passed over.
+// `velocityStorage`, when given, holds s.size() values that become the velocities, written
+// over: the axis's positions, which knotQ may be (every sample a knot). Sample k's velocity is
+// written once interval k has read its end values, and the last interval is taken before any,
+// so a position is never read after its sample's velocity replaced it.
+// False, with `series` unfinished, when `cancel` was set on the way.
 bool sampleSpline(std::span<const double> s, const SplineKnots& knots,
                   std::span<const double> knotS, std::span<const double> knotQ,
                   std::span<const double> moments, double feed, AxisSeries& series,

@@ -183,13 +183,9 @@ double interiorSpeed(const geometry::CubicSplineInterval& piece) {
     return peak;
 }
 
-// Whether the differentiation should stop: looked at by one axis between its steps and every
-// 65,536 samples of its sampling (a few milliseconds), so that a cancelled job does not wait
-// for the rest of an axis (about 0.15 s at five million samples).
-bool isCancelled(const CancelToken* cancel) {
-    return cancel != nullptr && cancel->isCancelled();
-}
-
+// One axis looks at the token between its steps and every kIterationsPerCancelPoll samples of
+// its sampling, so that a cancelled job does not wait for the rest of an axis (about 0.15 s at
+// five million samples).
 std::unexpected<Error> cancelledAxis() {
     return makeError(ErrorCode::Cancelled, "the analysis was cancelled");
 }
@@ -209,7 +205,6 @@ bool sampleSpline(std::span<const double> s, const SplineKnots& knots,
                   std::span<const double> knotS, std::span<const double> knotQ,
                   std::span<const double> moments, double feed, AxisSeries& series,
                   std::vector<double>* velocityStorage, const CancelToken* cancel) {
-    constexpr std::size_t kSamplesPerPoll = std::size_t{1} << 16;
     const double feed2 = feed * feed;
     const double feed3 = feed2 * feed;
     const auto interval = [&](std::size_t k) {
@@ -236,7 +231,7 @@ bool sampleSpline(std::span<const double> s, const SplineKnots& knots,
         accelerationQuantile.add(series.acceleration[i]);
     };
     double interiorPeak = 0.0;
-    std::size_t nextPoll = kSamplesPerPoll;
+    std::size_t nextPoll = kIterationsPerCancelPoll;
     for (std::size_t k = 0; k < last; ++k) {
         const geometry::CubicSplineInterval piece = interval(k);
         const std::size_t first = knots.sample(k);
@@ -244,7 +239,7 @@ bool sampleSpline(std::span<const double> s, const SplineKnots& knots,
             if (isCancelled(cancel)) {
                 return false;
             }
-            nextPoll = first + kSamplesPerPoll;
+            nextPoll = first + kIterationsPerCancelPoll;
         }
         store(first, piece.firstDerivative(piece.left), piece.leftMoment, piece.thirdDerivative());
         for (std::size_t i = first + 1; i < knots.sample(k + 1); ++i) {

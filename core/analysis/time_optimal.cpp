@@ -190,21 +190,15 @@ Status validate(const AxisProfile& profile) {
     return {};
 }
 
-// Backward and forward passes: T2 and the path speed per sample for the problem's bounds.
-// The forward pass reads sample i + 1's controllable bound for the last time where it writes
-// that sample's speed, so the speeds are written over the bounds: one array of 8 bytes per
-// sample rather than two.
-// Whether a pass at sample i should stop: the token is looked at every 65,536 samples (about a
-// millisecond of either pass).
-bool isCancelledAt(const CancelToken* cancel, std::size_t i) {
-    constexpr std::size_t kSamplesPerPoll = std::size_t{1} << 16;
-    return cancel != nullptr && i % kSamplesPerPoll == 0 && cancel->isCancelled();
-}
-
 std::unexpected<Error> cancelled() {
     return makeError(ErrorCode::Cancelled, "the time-optimal machining time was cancelled");
 }
 
+// Backward and forward passes: T2 and the path speed per sample for the problem's bounds.
+// The forward pass reads sample i + 1's controllable bound for the last time where it writes
+// that sample's speed, so the speeds are written over the bounds: one array of 8 bytes per
+// sample rather than two. Both passes look at the token every kIterationsPerCancelPoll samples
+// (about a millisecond of either).
 Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& profile,
                                      const CancelToken* cancel) {
     const std::size_t n = problem.size();

@@ -3,6 +3,7 @@
 // ProgressSink and marshals calls to its own thread; batch prints or ignores them.
 
 #include <atomic>
+#include <cstddef>
 #include <string_view>
 
 namespace bladeaxis {
@@ -16,6 +17,20 @@ class CancelToken {
   private:
     std::atomic<bool> m_cancelled{false};
 };
+
+// Whether an optional token (null: the caller cannot cancel) is set.
+inline bool isCancelled(const CancelToken* cancel) {
+    return cancel != nullptr && cancel->isCancelled();
+}
+
+// The per-sample loops of large jobs look at their token every 65,536 iterations: a few
+// milliseconds of any of them, and no cost worth measuring per iteration.
+inline constexpr std::size_t kIterationsPerCancelPoll = std::size_t{1} << 16;
+
+// Whether iteration i of such a loop should stop.
+inline bool isCancelledAt(const CancelToken* cancel, std::size_t i) {
+    return i % kIterationsPerCancelPoll == 0 && isCancelled(cancel);
+}
 
 class ProgressSink {
   public:

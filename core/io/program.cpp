@@ -374,7 +374,7 @@ Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileN
                                         const ReadOptions& options, const ReadWatch& watch) {
     if (format != ProgramFormat::Gcode) {
         auto program = parseTextFormat(text, fileName, format, machine, options);
-        if (program && watch.cancel != nullptr && watch.cancel->isCancelled()) {
+        if (program && isCancelled(watch.cancel)) {
             return makeError(ErrorCode::Cancelled, "the read was cancelled");
         }
         return program;

@@ -55,7 +55,7 @@ Result<std::vector<kinematics::MachineAxes>> newMachineAxes(const RescheduleInpu
         kinematics::inverseKinematicsAlong(input.machine->chain, samples.size(), poseAt,
                                            input.startA, input.parameters.threads, &cancel);
     if (solved.cancelled) {
-        return makeError(ErrorCode::Cancelled, "the job was cancelled");
+        return std::unexpected(checkCancelled(cancel).error()); // the job's own Cancelled
     }
     if (solved.failedIndex) {
         Error error = solved.failure;

@@ -66,10 +66,6 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const T
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count,
                                      const std::function<ToolPose(std::size_t)>& poseAt,
                                      double aStart, unsigned threads, const CancelToken* cancel) {
-    constexpr std::size_t kPosesPerPoll = std::size_t{1} << 16;
-    const auto stopsAt = [cancel](std::size_t i) {
-        return cancel != nullptr && i % kPosesPerPoll == 0 && cancel->isCancelled();
-    };
     const auto cancelled = [] {
         IkAlongResult stopped;
         stopped.cancelled = true;
@@ -82,7 +78,7 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count
     // pass like a failure; the token, looked at afterwards, tells the two apart.
     result.axes.resize(count);
     const std::size_t failed = forEachUntilFirstFailure(count, threads, [&](std::size_t i) {
-        if (stopsAt(i)) {
+        if (isCancelledAt(cancel, i)) {
             return false;
         }
         auto solved = axisAngles(poseAt(i));
@@ -92,7 +88,7 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count
         }
         return solved.has_value();
     });
-    if (cancel != nullptr && cancel->isCancelled()) {
+    if (isCancelled(cancel)) {
         return cancelled();
     }
     if (failed < count) {
@@ -109,7 +105,7 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count
     }
     forEachRange(count, threads, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
-            if (stopsAt(i)) {
+            if (isCancelledAt(cancel, i)) {
                 return;
             }
             const double bMath = result.axes[i].b;
@@ -117,7 +113,7 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count
             result.axes[i] = axesAt(chain, poseAt(i), bMath, aMath);
         }
     });
-    if (cancel != nullptr && cancel->isCancelled()) {
+    if (isCancelled(cancel)) {
         return cancelled();
     }
     return result;

@@ -105,10 +105,6 @@ std::vector<LayerBounds> boundsOf(const LayerSplit& split, const PlanePath& path
     return bounds;
 }
 
-bool isCancelled(const CancelToken* cancel) {
-    return cancel != nullptr && cancel->isCancelled();
-}
-
 std::unexpected<Error> cancelledError() {
     return makeError(ErrorCode::Cancelled, "scheduling cancelled");
 }

@@ -153,7 +153,7 @@ class RecordOutlet {
         if (m_watch->progress) {
             m_watch->progress(static_cast<double>(read) / static_cast<double>(total));
         }
-        if (m_watch->cancel != nullptr && m_watch->cancel->isCancelled() && !m_stop) {
+        if (isCancelled(m_watch->cancel) && !m_stop) {
             m_stop = makeError(ErrorCode::Cancelled, "the read was cancelled").error();
         }
     }

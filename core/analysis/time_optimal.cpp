@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace bladeaxis::analysis {
 
@@ -39,8 +40,12 @@ class Problem {
   public:
     // Stages are computed when needed, not stored: a million-sample path would otherwise hold
     // ~90 MB of derivatives that the profile already has.
-    Problem(const AxisProfile& profile, const kinematics::MachineModel& machine)
-        : m_profile(profile), m_s(profile.pathParameter) {
+    // Each interval of the profile's samples is cut into `subdivisions` equal steps: the grid
+    // on which the constraints hold (a grid point per sample misses a spike one block wide).
+    Problem(const AxisProfile& profile, const kinematics::MachineModel& machine,
+            std::size_t subdivisions)
+        : m_profile(profile), m_s(profile.pathParameter),
+          m_subdivisions(std::max<std::size_t>(subdivisions, 1)) {
         for (std::size_t j = 0; j < kAxes; ++j) {
             const auto& limits = machine.limit(kinematics::kAllAxes[j]);
             m_velocity[j] = limits.velocity;
@@ -53,7 +58,7 @@ class Problem {
     // reduction: without the heuristic every scale is 1 and needs no array.
     void scaleState(std::size_t i, double factor) {
         if (m_stateScale.empty()) {
-            m_stateScale.assign(m_s.size(), 1.0);
+            m_stateScale.assign(size(), 1.0);
         }
         m_stateScale[i] *= factor;
     }
@@ -63,10 +68,14 @@ class Problem {
     Stage stage(std::size_t i) const {
         Stage stage;
         const double feed = m_profile.feed;
+        const std::size_t sample = i / m_subdivisions;
+        const double fraction =
+            static_cast<double>(i % m_subdivisions) / static_cast<double>(m_subdivisions);
         for (std::size_t j = 0; j < kAxes; ++j) {
             const AxisSeries& series = m_profile.axes[j];
-            stage.first[j] = series.velocityAt(i) / feed;
-            stage.second[j] = series.accelerationAt(i) / (feed * feed);
+            const auto [first, second] = derivativesWithin(series, sample, fraction);
+            stage.first[j] = first / feed;
+            stage.second[j] = second / (feed * feed);
             const double q1 = std::abs(stage.first[j]);
             if (limited(m_velocity[j]) && q1 > 0.0) {
                 stage.maxState = std::min(stage.maxState, std::pow(m_velocity[j] / q1, 2));
@@ -82,8 +91,16 @@ class Problem {
         return stage;
     }
 
-    std::size_t size() const { return m_s.size(); }
-    double step(std::size_t i) const { return m_s[i + 1] - m_s[i]; }
+    std::size_t size() const { return (m_s.size() - 1) * m_subdivisions + 1; }
+    double step(std::size_t i) const {
+        const std::size_t sample = i / m_subdivisions;
+        return (m_s[sample + 1] - m_s[sample]) / static_cast<double>(m_subdivisions);
+    }
+    // The path parameter of grid point i, mm.
+    double pathAt(std::size_t i) const {
+        const std::size_t sample = std::min(i / m_subdivisions, m_s.size() - 1);
+        return m_s[sample] + static_cast<double>(i - sample * m_subdivisions) * step(i);
+    }
 
     // The lines bounding u at stage i for a state x, with x_{i+1} in [0, next].
     Bounds bounds(std::size_t i, const Stage& stage, double next) const {
@@ -153,8 +170,27 @@ class Problem {
   private:
     static bool significant(double derivative) { return std::abs(derivative) > 1e-12; }
 
+    // An axis's velocity and acceleration (time derivatives at the feed) a fraction of the way
+    // through interval `sample`. The acceleration is interpolated linearly and the velocity is
+    // its integral, corrected linearly so that both ends match the samples: exact for the
+    // default cubic spline (q'' linear, q' quadratic per interval), and a smooth blend of the
+    // samples for the other derivative methods.
+    std::pair<double, double> derivativesWithin(const AxisSeries& series, std::size_t sample,
+                                                double fraction) const {
+        if (fraction == 0.0 || series.still()) {
+            return {series.velocityAt(sample), series.accelerationAt(sample)};
+        }
+        const double h = (m_s[sample + 1] - m_s[sample]) / m_profile.feed; // s at the feed
+        const double v0 = series.velocity[sample], v1 = series.velocity[sample + 1];
+        const double a0 = series.acceleration[sample], a1 = series.acceleration[sample + 1];
+        const double integral = h * (a0 * fraction + (a1 - a0) * fraction * fraction / 2.0);
+        const double mismatch = v1 - v0 - h * (a0 + a1) / 2.0;
+        return {v0 + integral + fraction * mismatch, a0 + (a1 - a0) * fraction};
+    }
+
     const AxisProfile& m_profile;
     const std::vector<double>& m_s;
+    std::size_t m_subdivisions = 1;
     std::vector<double> m_stateScale;
     std::array<double, kAxes> m_velocity{}, m_acceleration{}, m_jerk{};
 };
@@ -199,8 +235,7 @@ std::unexpected<Error> cancelled() {
 // that sample's speed, so the speeds are written over the bounds: one array of 8 bytes per
 // sample rather than two. Both passes look at the token every kIterationsPerCancelPoll samples
 // (about a millisecond of either).
-Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& profile,
-                                     const CancelToken* cancel) {
+Result<TimeOptimalTime> parameterise(const Problem& problem, const CancelToken* cancel) {
     const std::size_t n = problem.size();
     std::vector<double> controllable(n, 0.0); // K_i = [0, controllable[i]]; rest at the end
     for (std::size_t i = n - 1; i-- > 0;) {
@@ -229,7 +264,7 @@ Result<TimeOptimalTime> parameterise(const Problem& problem, const AxisProfile& 
         if (!(speeds > 0.0) && !(restAcceleration > 0.0)) {
             return makeError(ErrorCode::Geometry,
                              "the axis limits do not let the tool move along the path near s = " +
-                                 std::to_string(profile.pathParameter[i]) + " mm");
+                                 std::to_string(problem.pathAt(i)) + " mm");
         }
         result.time += speeds > 0.0 ? 2.0 * problem.step(i) / speeds
                                     : 2.0 * std::sqrt(problem.step(i) / restAcceleration);
@@ -295,8 +330,8 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
     if (auto status = validate(profile); !status) {
         return std::unexpected(status.error());
     }
-    Problem problem(profile, machine);
-    auto result = parameterise(problem, profile, options.cancel);
+    Problem problem(profile, machine, options.subdivisions);
+    auto result = parameterise(problem, options.cancel);
     if (!result) {
         return result;
     }
@@ -308,7 +343,7 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
                 break;
             }
             const int rounds = result->jerkRounds + 1;
-            result = parameterise(problem, profile, options.cancel);
+            result = parameterise(problem, options.cancel);
             if (!result) {
                 return result;
             }
@@ -323,10 +358,40 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
     return result;
 }
 
+Result<ConvergedTime> convergedTimeOptimal(const AxisProfile& profile,
+                                           const kinematics::MachineModel& machine,
+                                           const ConvergedTimeOptions& options) {
+    auto first = timeOptimalTime(profile, machine, {.cancel = options.cancel});
+    if (!first) {
+        return std::unexpected(first.error());
+    }
+    ConvergedTime result{.time = first->time};
+    while (!result.converged && result.subdivisions * 2 <= options.maxSubdivisions) {
+        const std::size_t subdivisions = result.subdivisions * 2;
+        auto finer = timeOptimalTime(profile, machine,
+                                     {.cancel = options.cancel, .subdivisions = subdivisions});
+        if (!finer) {
+            return std::unexpected(finer.error());
+        }
+        result.lastChange = std::abs(finer->time - result.time) / std::max(finer->time, 1e-300);
+        result.converged = result.lastChange < options.tolerance;
+        result.time = finer->time;
+        result.subdivisions = subdivisions;
+    }
+    return result;
+}
+
+std::optional<ConvergedTime> convergedTimeOptimalOrNone(const AxisProfile& profile,
+                                                        const kinematics::MachineModel& machine,
+                                                        const CancelToken* cancel) {
+    auto t2 = convergedTimeOptimal(profile, machine, {.cancel = cancel});
+    return t2 ? std::optional<ConvergedTime>(*t2) : std::nullopt;
+}
+
 std::optional<double> timeOptimalSeconds(const AxisProfile& profile,
                                          const kinematics::MachineModel& machine,
                                          const CancelToken* cancel) {
-    auto t2 = timeOptimalTime(profile, machine, {.cancel = cancel});
+    const auto t2 = convergedTimeOptimalOrNone(profile, machine, cancel);
     return t2 ? std::optional<double>(t2->time) : std::nullopt;
 }
 

@@ -70,7 +70,7 @@ Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::strin
     result.machineAxes = std::move(machineAxes);
     result.profile = std::move(*profile);
     result.t1 = analysis::constantFeedTime(result.profile, *context.machine, false);
-    if (auto t2 = analysis::timeOptimalTime(result.profile, *context.machine)) {
+    if (auto t2 = analysis::convergedTimeOptimal(result.profile, *context.machine)) {
         result.t2 = t2->time;
     } else {
         result.t2Failure = t2.error().message;

@@ -1,6 +1,7 @@
 #include "core/job/job.h"
 
 #include "core/analysis/axis_profile.h"
+#include "core/analysis/block_planner.h"
 #include "core/analysis/time_optimal.h"
 #include "core/analysis/time_optimal_sweep.h"
 #include "core/base/file_io.h"
@@ -163,6 +164,18 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
     return program;
 }
 
+// The block-by-block model's time of the input: its machine axes and each block's feed.
+analysis::BlockPlannerTime blockByBlockOf(std::span<const kinematics::MachineAxes> axes,
+                                          std::span<const ClRecord> pass,
+                                          const kinematics::MachineModel& machine) {
+    std::vector<double> feeds(pass.size());
+    for (std::size_t i = 0; i < pass.size(); ++i) {
+        feeds[i] = pass[i].feed;
+    }
+    return analysis::blockByBlockTime(axes, feeds, machine,
+                                      {.blendTolerance = machine.controller.blendTolerance});
+}
+
 Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
     const auto& records = result.program.path().records;
     result.pass = longestFeedRun(records);
@@ -207,6 +220,7 @@ Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel
     }
     result.original = std::move(*profile);
     result.constantFeed = analysis::constantFeedTime(result.original, result.machine, false);
+    result.blockByBlock = blockByBlockOf(*result.axes, pass, result.machine);
     result.originalLostMotion = analysis::lostMotion(result.original, result.machine);
     return {};
 }
@@ -463,7 +477,8 @@ std::vector<double> releasePassAxes(JobResult& result, bool keepA) {
 // it before it frees them, and before the scheduling's channel stage: on five million blocks T2's
 // own arrays (16-24 bytes per sample) beside the tangents and curvature took the peak above 1.5 GB
 // when T2 was slow.
-void waitForInputT2(JobResult& result, std::future<std::optional<double>>& timeOptimal) {
+void waitForInputT2(JobResult& result,
+                    std::future<std::optional<analysis::ConvergedTime>>& timeOptimal) {
     if (timeOptimal.valid()) {
         result.timeOptimal = timeOptimal.get();
     }
@@ -476,7 +491,7 @@ void waitForInputT2(JobResult& result, std::future<std::optional<double>>& timeO
 void takeInputLayerMotion(JobResult& result, const JobSpec& spec,
                           std::span<const scheduling::LayerBounds> layers,
                           std::vector<double>& passA,
-                          std::future<std::optional<double>>& timeOptimal) {
+                          std::future<std::optional<analysis::ConvergedTime>>& timeOptimal) {
     result.layerMotionBefore = result.axes
                                    ? report::layerAxisMotion(layers, result.original, *result.axes)
                                    : report::layerAxisMotion(layers, result.original, passA);
@@ -506,7 +521,8 @@ Status checkScheduledLayers(JobResult& result, const JobSpec& spec,
 }
 
 Status rescheduleInto(JobResult& result, const JobSpec& spec, ProgressSink& progress,
-                      const CancelToken& cancel, std::future<std::optional<double>>& timeOptimal,
+                      const CancelToken& cancel,
+                      std::future<std::optional<analysis::ConvergedTime>>& timeOptimal,
                       std::vector<double>& passA) {
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
         return makeError(ErrorCode::InvalidArgument,
@@ -633,6 +649,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .original = {},
                      .constantFeed = {},
                      .timeOptimal = std::nullopt,
+                     .blockByBlock = {},
                      .layerMotionBefore = {},
                      .originalLostMotion = {},
                      .rescheduled = std::nullopt,
@@ -672,7 +689,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     // tilt check and the re-scheduling. The future is declared after the result, so an early
     // return waits for it before the result goes.
     auto timeOptimal = std::async(std::launch::async, [&result, &cancel] {
-        return analysis::timeOptimalSeconds(result.original, result.machine, &cancel);
+        return analysis::convergedTimeOptimalOrNone(result.original, result.machine, &cancel);
     });
     if (originalReady) {
         originalReady(result);

@@ -89,7 +89,10 @@ struct JobResult {
     analysis::SharedMachineAxes axes;
     analysis::AxisProfile original;
     analysis::ConstantFeedTime constantFeed;
-    std::optional<double> timeOptimal; // s, T2 under the machine limits (spec §8.3)
+    // T2 under the machine limits (spec §8.3), grid-converged: the look-ahead controller model.
+    std::optional<analysis::ConvergedTime> timeOptimal;
+    // The block-by-block controller model (LinuxCNC 2.9's planner on rotary blocks).
+    analysis::BlockPlannerTime blockByBlock;
     // Per layer of the re-scheduled pass, the input's motion (report::layerAxisMotion), taken as
     // soon as the layers were known; empty without a re-scheduling.
     std::vector<report::LayerAxisMotion> layerMotionBefore;

@@ -130,6 +130,36 @@ std::vector<report::LayerMotion> layerMotionOf(const JobResult& result) {
 
 namespace {
 
+// Every cycle-time estimate of one program, each with the controller model it assumes, and which
+// of them the machine file names as its control's ("machine_model").
+nlohmann::json cycleTimesJson(const analysis::ConstantFeedTime& constantFeed,
+                              const std::optional<analysis::ConvergedTime>& lookAhead,
+                              const analysis::BlockPlannerTime& blockByBlock,
+                              const kinematics::MachineModel& machine) {
+    nlohmann::json json;
+    json["machine_model"] = kinematics::plannerName(machine.controller.planner);
+    json["constant_feed"] = {
+        {"time_s", constantFeed.time},
+        {"model", "T1: the whole pass at one constant feed, the highest the slowest point "
+                  "allows (a bound, not a controller)"}};
+    if (lookAhead) {
+        json["look_ahead"] = {
+            {"time_s", lookAhead->time},
+            {"model", "T2: look-ahead, time-optimal along the path under the axes' velocity and "
+                      "acceleration limits and the feed (TOPP-RA), grid-converged"},
+            {"grid_steps_per_block", lookAhead->subdivisions},
+            {"last_grid_change", lookAhead->lastChange},
+            {"converged", lookAhead->converged}};
+    }
+    json["block_by_block"] = {
+        {"time_s", blockByBlock.time},
+        {"model", "each block planned alone from rest to rest, parabolic blends, no blending "
+                  "across rotary blocks, F read as the XYZ speed (LinuxCNC 2.9's planner)"},
+        {"blocks", blockByBlock.blocks},
+        {"blend_tolerance_mm", machine.controller.blendTolerance}};
+    return json;
+}
+
 nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
     const RescheduleOutcome& outcome = *result.rescheduled;
     nlohmann::json json;
@@ -151,11 +181,17 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
     const double after = outcome.constantFeed.time;
     json["t1_reduction"] = before > 0.0 ? (before - after) / before : 0.0;
     if (outcome.timeOptimal) {
-        json["analysis"]["time_optimal_s"] = *outcome.timeOptimal;
+        json["analysis"]["time_optimal_s"] = outcome.timeOptimal->time;
         if (result.timeOptimal) {
             json["t2_reduction"] =
-                (*result.timeOptimal - *outcome.timeOptimal) / *result.timeOptimal;
+                (result.timeOptimal->time - outcome.timeOptimal->time) / result.timeOptimal->time;
         }
+    }
+    json["analysis"]["cycle_times"] = cycleTimesJson(outcome.constantFeed, outcome.timeOptimal,
+                                                     outcome.blockByBlock, result.machine);
+    if (result.blockByBlock.time > 0.0) {
+        json["block_by_block_reduction"] =
+            (result.blockByBlock.time - outcome.blockByBlock.time) / result.blockByBlock.time;
     }
     json["checks"] = {
         {"max_centre_deviation_mm", outcome.maxCentreDeviationMm},
@@ -276,8 +312,10 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
     json["original"] = report::analysisJson(result.original, result.constantFeed);
     json["original"]["lost_motion"] = report::lostMotionJson(result.originalLostMotion);
     if (result.timeOptimal) {
-        json["original"]["time_optimal_s"] = *result.timeOptimal;
+        json["original"]["time_optimal_s"] = result.timeOptimal->time;
     }
+    json["original"]["cycle_times"] = cycleTimesJson(result.constantFeed, result.timeOptimal,
+                                                     result.blockByBlock, result.machine);
     if (result.rescheduled) {
         json["rescheduled"] = rescheduledJson(result, spec);
     }
@@ -529,6 +567,35 @@ std::string clearanceText(const RescheduleOutcome& outcome) {
            formatFixed(units::radToDeg(outcome.minChannelClearanceRad), 3) + " deg";
 }
 
+// One line per cycle-time model, each naming what it assumes; the machine file's model is
+// marked "(this machine)".
+std::string cycleTimeSummary(const JobResult& result, const RescheduleOutcome& outcome) {
+    const kinematics::Planner planner = result.machine.controller.planner;
+    const auto mark = [planner](kinematics::Planner model) {
+        return model == planner ? " (this machine)" : "";
+    };
+    std::string text =
+        "T1           " + formatFixed(result.constantFeed.time, 1) + " -> " +
+        formatFixed(outcome.constantFeed.time, 1) + " s " +
+        change(result.constantFeed.time, outcome.constantFeed.time, "shorter", "longer") +
+        ", one constant feed set by the slowest point (a bound, not a control)\n";
+    if (result.timeOptimal && outcome.timeOptimal) {
+        text += "T2           " + formatFixed(result.timeOptimal->time, 1) + " -> " +
+                formatFixed(outcome.timeOptimal->time, 1) + " s " +
+                change(result.timeOptimal->time, outcome.timeOptimal->time, "shorter", "longer") +
+                ", look-ahead time-optimal, grid-converged" + mark(kinematics::Planner::LookAhead) +
+                "\n";
+    }
+    if (result.blockByBlock.time > 0.0 && outcome.blockByBlock.time > 0.0) {
+        text += "block time   " + formatFixed(result.blockByBlock.time, 1) + " -> " +
+                formatFixed(outcome.blockByBlock.time, 1) + " s " +
+                change(result.blockByBlock.time, outcome.blockByBlock.time, "shorter", "longer") +
+                ", block-by-block, no blending across rotary blocks (LinuxCNC 2.9)" +
+                mark(kinematics::Planner::BlockByBlock) + "\n";
+    }
+    return text;
+}
+
 std::string rescheduledSummary(const JobResult& result) {
     using kinematics::AxisId;
     const RescheduleOutcome& outcome = *result.rescheduled;
@@ -552,15 +619,7 @@ std::string rescheduledSummary(const JobResult& result) {
     text += table + " peak acc.  " + formatFixed(units::radToDeg(a0.peakAcceleration), 0) + " -> " +
             formatFixed(units::radToDeg(a1.peakAcceleration), 0) + " deg/s^2 " +
             change(a0.peakAcceleration, a1.peakAcceleration, "lower", "higher") + "\n";
-    text += "T1           " + formatFixed(result.constantFeed.time, 1) + " -> " +
-            formatFixed(outcome.constantFeed.time, 1) + " s " +
-            change(result.constantFeed.time, outcome.constantFeed.time, "shorter", "longer") + "\n";
-    if (result.timeOptimal && outcome.timeOptimal) {
-        text += "T2           " + formatFixed(*result.timeOptimal, 1) + " -> " +
-                formatFixed(*outcome.timeOptimal, 1) + " s " +
-                change(*result.timeOptimal, *outcome.timeOptimal, "shorter", "longer") +
-                ", time-optimal\n";
-    }
+    text += cycleTimeSummary(result, outcome);
     text += "checks       ball centres kept within " +
             formatFixed(outcome.maxCentreDeviationMm * 1000.0, 2) + " um after re-reading; " +
             clearanceText(outcome) + "\n";

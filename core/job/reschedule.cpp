@@ -227,8 +227,22 @@ RescheduleOutcome outcomeFrom(scheduling::ScheduleResult schedule) {
 struct NewMotion {
     analysis::AxisProfile profile;
     analysis::ConstantFeedTime constantFeed;
-    std::optional<double> timeOptimal;
+    std::optional<analysis::ConvergedTime> timeOptimal;
+    analysis::BlockPlannerTime blockByBlock;
 };
+
+// The block-by-block model's time of the new program: its machine axes and the feed of each
+// block as the written program states it.
+analysis::BlockPlannerTime blockByBlockOf(std::span<const kinematics::MachineAxes> axes,
+                                          const analysis::PathSamples& samples,
+                                          const kinematics::MachineModel& machine) {
+    std::vector<double> feeds(samples.size());
+    for (std::size_t i = 0; i < feeds.size(); ++i) {
+        feeds[i] = samples.feed(i);
+    }
+    return analysis::blockByBlockTime(axes, feeds, machine,
+                                      {.blendTolerance = machine.controller.blendTolerance});
+}
 
 // With input.releaseNewToolAxes the schedule's new tool axes are freed once the analysis has
 // made its path parameter: the re-read check beside it never reads them.
@@ -249,12 +263,14 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutco
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
-    NewMotion motion{std::move(*profile), {}, std::nullopt};
+    NewMotion motion{std::move(*profile), {}, std::nullopt, {}};
     motion.constantFeed = analysis::constantFeedTime(motion.profile, *input.machine, false);
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
-    motion.timeOptimal = analysis::timeOptimalSeconds(motion.profile, *input.machine, &cancel);
+    motion.blockByBlock = blockByBlockOf(*outcome.axes, samples, *input.machine);
+    motion.timeOptimal =
+        analysis::convergedTimeOptimalOrNone(motion.profile, *input.machine, &cancel);
     if (auto status = checkCancelled(cancel); !status) { // T2 cut short: none, not a figure
         return std::unexpected(status.error());
     }
@@ -511,6 +527,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         outcome.profile = std::move(motion->profile);
         outcome.constantFeed = motion->constantFeed;
         outcome.timeOptimal = motion->timeOptimal;
+        outcome.blockByBlock = motion->blockByBlock;
     }
     outcome.stageSeconds.analysis = clock.lap(); // what the analysis added after the check
     return outcome;

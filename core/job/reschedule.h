@@ -4,7 +4,9 @@
 // re-reading it -> axis analysis of the new motion.
 
 #include "core/analysis/axis_profile.h"
+#include "core/analysis/block_planner.h"
 #include "core/analysis/constant_feed.h"
+#include "core/analysis/time_optimal.h"
 #include "core/base/error.h"
 #include "core/base/file_io.h"
 #include "core/base/progress.h"
@@ -39,7 +41,8 @@ struct RescheduleOutcome {
     std::vector<double> passFeeds;
     analysis::AxisProfile profile; // axis motion of the new program
     analysis::ConstantFeedTime constantFeed;
-    std::optional<double> timeOptimal; // s, T2 of the new motion
+    std::optional<analysis::ConvergedTime> timeOptimal; // T2 of the new motion, grid-converged
+    analysis::BlockPlannerTime blockByBlock;            // the block-by-block model's time
     // The whole rewritten program; empty when it was staged (stagedProgram).
     std::string programText;
     // The rewritten program written to its output file while the job ran, not yet in place

@@ -51,6 +51,7 @@ class MachineReader {
     Status chain(const Json& root, MachineModel& machine) const;
     Status axes(const Json& root, MachineModel& machine) const;
     Status numberRules(const Json& root, NumberRules& rules) const;
+    Status controller(const Json& root, ControllerModel& controller) const;
 
     std::string_view m_text;
     std::string m_file;
@@ -279,6 +280,47 @@ Status MachineReader::numberRules(const Json& root, NumberRules& rules) const {
     return {};
 }
 
+// "controller": {"planner": "look-ahead" | "block-by-block", "blend_tolerance_mm": 0.01}: which
+// cycle-time model the report leads with, and the G64 P tolerance of the block-by-block one.
+Status MachineReader::controller(const Json& root, ControllerModel& controller) const {
+    if (!root.contains("controller")) {
+        return {};
+    }
+    const Json& value = root.at("controller");
+    if (!value.is_object()) {
+        return fail("controller", "controller",
+                    "expected an object such as {\"planner\": \"block-by-block\"}, got " +
+                        value.dump());
+    }
+    for (const auto& [key, unused] : value.items()) {
+        if (key != "planner" && key != "blend_tolerance_mm") {
+            return fail("controller." + key, key,
+                        "unknown key: expected \"planner\" or \"blend_tolerance_mm\"");
+        }
+    }
+    if (value.contains("planner")) {
+        const Json& planner = value.at("planner");
+        const auto named =
+            planner.is_string() ? plannerNamed(planner.get<std::string>()) : std::nullopt;
+        if (!named) {
+            return fail("controller.planner", "planner",
+                        "expected \"look-ahead\" or \"block-by-block\", got " + planner.dump());
+        }
+        controller.planner = *named;
+    }
+    if (value.contains("blend_tolerance_mm")) {
+        const Json& tolerance = value.at("blend_tolerance_mm");
+        if (!tolerance.is_number() || !(tolerance.get<double>() >= 0.0) ||
+            !std::isfinite(tolerance.get<double>())) {
+            return fail("controller.blend_tolerance_mm", "blend_tolerance_mm",
+                        "expected a finite number of mm >= 0 (0: plain G64), got " +
+                            tolerance.dump());
+        }
+        controller.blendTolerance = tolerance.get<double>();
+    }
+    return {};
+}
+
 Result<MachineModel> MachineReader::read(const Json& root) {
     if (!root.is_object()) {
         return makeError(ErrorCode::MachineFile, "expected a JSON object at the top level",
@@ -307,6 +349,9 @@ Result<MachineModel> MachineReader::read(const Json& root) {
                         "expected \"path\" or \"combined_axes\", got " + value.dump());
         }
         machine.feedMeaning = meaning == "path" ? FeedMeaning::Path : FeedMeaning::CombinedAxes;
+    }
+    if (auto status = controller(root, machine.controller); !status) {
+        return std::unexpected(status.error());
     }
     const std::string table(1, machine.letter(AxisId::A));
     const std::string mode = root.at("axes").at(table).value("mode", "continuous");

@@ -9,6 +9,20 @@ const char* axisName(AxisId axis) {
     return kNames[static_cast<int>(axis)];
 }
 
+const char* plannerName(Planner planner) {
+    return planner == Planner::BlockByBlock ? "block-by-block" : "look-ahead";
+}
+
+std::optional<Planner> plannerNamed(std::string_view name) {
+    if (name == "look-ahead") {
+        return Planner::LookAhead;
+    }
+    if (name == "block-by-block") {
+        return Planner::BlockByBlock;
+    }
+    return std::nullopt;
+}
+
 const char* layoutName(Layout layout) {
     switch (layout) {
     case Layout::TableAHeadB:

@@ -10,7 +10,9 @@
 #include "core/geometry/vec.h"
 
 #include <array>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace bladeaxis::kinematics {
 
@@ -110,6 +112,23 @@ enum class FeedMeaning {
                   // a block lasts sqrt(dX^2 + dY^2 + dZ^2 + dA^2 + dB^2) / F
 };
 
+// How the machine's control plans a program, for the cycle time the report leads with. Both
+// models are always computed and reported with their names; this says which one is "the"
+// cycle time of the machine.
+enum class Planner {
+    LookAhead,    // time-optimal along the whole path under velocity/acceleration limits
+    BlockByBlock, // each block planned alone, no blending across rotary blocks (LinuxCNC 2.9)
+};
+
+// "look-ahead", "block-by-block": the machine file's and the report's names.
+const char* plannerName(Planner planner);
+std::optional<Planner> plannerNamed(std::string_view name);
+
+struct ControllerModel {
+    Planner planner = Planner::LookAhead;
+    double blendTolerance = 0.01; // mm, the control's G64 P for the block-by-block model
+};
+
 // Which rotary axis the table turns about, and whether the head tilts.
 enum class Layout {
     TableAHeadB, // table A about X, head B about Y ("table_a_head_b")
@@ -140,6 +159,7 @@ struct MachineModel {
     RotaryMode aMode = RotaryMode::Continuous;
     NumberRules numbers; // how its control reads numbers without a decimal point
     FeedMeaning feedMeaning = FeedMeaning::Path;
+    ControllerModel controller; // the machine file's "controller"
 
     const AxisLimits& limit(AxisId axis) const { return limits[static_cast<int>(axis)]; }
     AxisLimits& limit(AxisId axis) { return limits[static_cast<int>(axis)]; }

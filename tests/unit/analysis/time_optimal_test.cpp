@@ -8,8 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace bladeaxis::analysis {
 namespace {
@@ -207,6 +211,153 @@ TEST(TimeOptimal, NonFiniteProfileValuesAreErrors) {
     AxisProfile parameter = straightLine(10.0, 11, 10.0);
     parameter.pathParameter[3] = std::numeric_limits<double>::infinity();
     EXPECT_FALSE(timeOptimalTime(parameter, bladeMachine()).has_value());
+}
+
+// A with a sharp reversal every 40 samples (a reciprocating CAM orientation): the acceleration
+// spike at each reversal is one block wide.
+AxisProfile reciprocatingProfile() {
+    testing::Program program;
+    for (int i = 0; i <= 400; ++i) {
+        const double t = 0.01 * i;
+        const double phase = std::fmod(static_cast<double>(i), 80.0);
+        const double triangle = phase < 40.0 ? phase : 80.0 - phase;
+        program.add(Vec3(0.2 * t, 20.0 * std::cos(t), 20.0 * std::sin(t)),
+                    0.5 * t + 0.004 * triangle, 50.0);
+    }
+    return *analyseAxisMotion(program.axes, program.records, {});
+}
+
+// An independent reference written here: the classic forward-backward integration in the
+// phase plane (x = sdot^2) on a very fine grid, each step's acceleration bounds taken at its
+// known end, the maximum velocity curve by bisection. Within an interval of the profile the
+// default spline's q'' is linear and q' its integral.
+struct FineGridReference {
+    const AxisProfile& profile;
+    const kinematics::MachineModel& machine;
+
+    struct Point {
+        std::array<double, 5> first{}, second{};
+    };
+
+    Point at(std::size_t sample, double fraction) const {
+        Point p;
+        const double h = profile.pathParameter[sample + 1] - profile.pathParameter[sample];
+        const double f2 = profile.feed * profile.feed;
+        for (std::size_t j = 0; j < 5; ++j) {
+            const AxisSeries& axis = profile.axes[j];
+            const double q1a = axis.velocityAt(sample) / profile.feed;
+            const double q2a = axis.accelerationAt(sample) / f2;
+            const double q2b = axis.accelerationAt(sample + 1) / f2;
+            p.second[j] = q2a + (q2b - q2a) * fraction;
+            p.first[j] = q1a + h * (q2a * fraction + (q2b - q2a) * fraction * fraction / 2.0);
+        }
+        return p;
+    }
+
+    // The bounds on u = sddot at state x: [lower, upper] (lower > upper: infeasible).
+    std::pair<double, double> controlBounds(const Point& p, double x) const {
+        double lower = -1e300, upper = 1e300;
+        for (std::size_t j = 0; j < 5; ++j) {
+            const double a = machine.limits[j].acceleration;
+            if (!(a > 0.0) || std::abs(p.first[j]) < 1e-12) {
+                if (a > 0.0 && std::abs(p.second[j] * x) > a) {
+                    return {1.0, -1.0};
+                }
+                continue;
+            }
+            const double b1 = (-a - p.second[j] * x) / p.first[j];
+            const double b2 = (a - p.second[j] * x) / p.first[j];
+            lower = std::max(lower, std::min(b1, b2));
+            upper = std::min(upper, std::max(b1, b2));
+        }
+        return {lower, upper};
+    }
+
+    double maximumState(const Point& p) const {
+        double high = profile.feed * profile.feed;
+        for (std::size_t j = 0; j < 5; ++j) {
+            const double v = machine.limits[j].velocity;
+            if (v > 0.0 && std::abs(p.first[j]) > 1e-12) {
+                high = std::min(high, std::pow(v / p.first[j], 2));
+            }
+        }
+        double low = 0.0;
+        if (controlBounds(p, high).first <= controlBounds(p, high).second) {
+            return high;
+        }
+        for (int k = 0; k < 60; ++k) {
+            const double mid = 0.5 * (low + high);
+            const auto [lower, upper] = controlBounds(p, mid);
+            (lower <= upper ? low : high) = mid;
+        }
+        return low;
+    }
+
+    double time(std::size_t subdivisions) const {
+        std::vector<Point> points;
+        std::vector<double> steps;
+        const std::size_t n = profile.pathParameter.size();
+        for (std::size_t i = 0; i + 1 < n; ++i) {
+            const double h = profile.pathParameter[i + 1] - profile.pathParameter[i];
+            for (std::size_t k = 0; k < subdivisions; ++k) {
+                points.push_back(at(i, static_cast<double>(k) / static_cast<double>(subdivisions)));
+                steps.push_back(h / static_cast<double>(subdivisions));
+            }
+        }
+        points.push_back(at(n - 2, 1.0));
+        std::vector<double> x(points.size());
+        for (std::size_t g = 0; g < points.size(); ++g) {
+            x[g] = maximumState(points[g]);
+        }
+        x.front() = 0.0;
+        x.back() = 0.0;
+        for (std::size_t g = 0; g + 1 < points.size(); ++g) {
+            const double u = controlBounds(points[g], x[g]).second;
+            x[g + 1] = std::min(x[g + 1], std::max(0.0, x[g] + 2.0 * steps[g] * u));
+        }
+        for (std::size_t g = points.size() - 1; g > 0; --g) {
+            const double u = controlBounds(points[g], x[g]).first;
+            x[g - 1] = std::min(x[g - 1], std::max(0.0, x[g] - 2.0 * steps[g - 1] * u));
+        }
+        double total = 0.0;
+        for (std::size_t g = 0; g + 1 < points.size(); ++g) {
+            total += 2.0 * steps[g] / (std::sqrt(x[g]) + std::sqrt(x[g + 1]));
+        }
+        return total;
+    }
+};
+
+TEST(ConvergedTimeOptimal, RefinesTheGridUntilTheTimeHolds) {
+    const AxisProfile profile = reciprocatingProfile();
+    const auto machine = kinematics::defaultBladeMachine();
+    const auto converged = convergedTimeOptimal(profile, machine);
+    ASSERT_TRUE(converged.has_value()) << converged.error().toString();
+    EXPECT_TRUE(converged->converged);
+    EXPECT_LT(converged->lastChange, 0.005);
+    EXPECT_GE(converged->subdivisions, 2U);
+    // One grid point per block misjudges the spike at each reversal: on this path the time it
+    // gives differs from the converged one by more than the tolerance.
+    const double coarse = timeOptimalTime(profile, machine)->time;
+    EXPECT_GT(std::abs(coarse - converged->time), 0.005 * converged->time);
+}
+
+TEST(ConvergedTimeOptimal, AgreesWithAnIndependentFineGridSolution) {
+    const AxisProfile profile = reciprocatingProfile();
+    const auto machine = kinematics::defaultBladeMachine();
+    const auto converged = convergedTimeOptimal(profile, machine);
+    ASSERT_TRUE(converged.has_value());
+    const double reference = FineGridReference{profile, machine}.time(256);
+    EXPECT_NEAR(converged->time, reference, 0.01 * reference);
+}
+
+TEST(ConvergedTimeOptimal, ASmoothPathConvergesOnTheFirstRefinement) {
+    const AxisProfile profile = helixLikeProfile();
+    const auto machine = kinematics::defaultBladeMachine();
+    const auto converged = convergedTimeOptimal(profile, machine);
+    ASSERT_TRUE(converged.has_value());
+    EXPECT_TRUE(converged->converged);
+    EXPECT_NEAR(converged->time, timeOptimalTime(profile, machine)->time, 0.01 * converged->time);
+    EXPECT_EQ(timeOptimalSeconds(profile, machine), converged->time);
 }
 
 } // namespace

@@ -220,3 +220,51 @@ TEST(MachineFile, ModuloModeIsRead) {
 
 } // namespace
 } // namespace bladeaxis::kinematics
+
+namespace bladeaxis::kinematics {
+namespace {
+
+std::string machineWithController(const std::string& controller) {
+    const std::string linear =
+        R"({"velocity_mm_s": 500, "acceleration_mm_s2": 3000, "jerk_mm_s3": 30000})";
+    return R"({"schema": "bladeaxis-machine/1", "kinematics": {"type": "table_a_head_b"}, "axes": {"X": )" +
+           linear + R"(, "Y": )" + linear + R"(, "Z": )" + linear +
+           R"(, "A": {"velocity_deg_s": 360, "acceleration_deg_s2": 1800, "jerk_deg_s3": 18000})" +
+           R"(, "B": {"velocity_deg_s": 90, "acceleration_deg_s2": 900, "jerk_deg_s3": 9000}})" +
+           (controller.empty() ? "" : ", \"controller\": " + controller) + "}";
+}
+
+TEST(MachineFileController, WithoutTheKeyTheControlIsALookAheadOne) {
+    const auto machine = parseMachineJson(machineWithController(""), "m.json");
+    ASSERT_TRUE(machine.has_value()) << machine.error().toString();
+    EXPECT_EQ(machine->controller.planner, Planner::LookAhead);
+    EXPECT_DOUBLE_EQ(machine->controller.blendTolerance, 0.01);
+}
+
+TEST(MachineFileController, NamesTheBlockByBlockPlannerAndItsBlendTolerance) {
+    const auto machine = parseMachineJson(
+        machineWithController(R"({"planner": "block-by-block", "blend_tolerance_mm": 0})"),
+        "m.json");
+    ASSERT_TRUE(machine.has_value()) << machine.error().toString();
+    EXPECT_EQ(machine->controller.planner, Planner::BlockByBlock);
+    EXPECT_DOUBLE_EQ(machine->controller.blendTolerance, 0.0);
+    EXPECT_STREQ(plannerName(machine->controller.planner), "block-by-block");
+}
+
+TEST(MachineFileController, RefusesAnUnknownPlannerATypoAndANegativeTolerance) {
+    const auto unknown =
+        parseMachineJson(machineWithController(R"({"planner": "magic"})"), "m.json");
+    ASSERT_FALSE(unknown.has_value());
+    EXPECT_NE(unknown.error().toString().find("controller.planner"), std::string::npos);
+    const auto typo =
+        parseMachineJson(machineWithController(R"({"planer": "look-ahead"})"), "m.json");
+    ASSERT_FALSE(typo.has_value());
+    EXPECT_NE(typo.error().toString().find("unknown key"), std::string::npos);
+    const auto negative =
+        parseMachineJson(machineWithController(R"({"blend_tolerance_mm": -1})"), "m.json");
+    ASSERT_FALSE(negative.has_value());
+    EXPECT_NE(negative.error().toString().find("blend_tolerance_mm"), std::string::npos);
+}
+
+} // namespace
+} // namespace bladeaxis::kinematics

@@ -1,0 +1,170 @@
+#include "core/analysis/block_planner.h"
+
+#include "core/base/units.h"
+#include "core/geometry/vec.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace bladeaxis::analysis {
+
+namespace {
+
+using kinematics::AxisId;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// LinuxCNC drops an axis's displacement below this (mm or degrees) when it plans a move.
+constexpr double kTinyDisplacement = 1e-7;
+// The share of a block's acceleration its planner uses while it may blend with a neighbour.
+constexpr double kParabolicBlendShare = 0.5;
+// Below this cosine of the corner's half angle the tolerance does not cap the blend (LinuxCNC's
+// TP_MIN_ARC_ANGLE: the two moves are as good as tangent).
+const double kMinCornerCosine = std::cos(units::kPi / 2.0 - 1e-3);
+
+bool limited(double limit) {
+    return std::isfinite(limit) && limit > 0.0;
+}
+
+// One planned move: its length, speed and acceleration limits and its XYZ direction.
+struct PlannedBlock {
+    double length = 0.0;       // mm (degrees for a purely rotary move)
+    double velocity = 0.0;     // the most the block may reach
+    double acceleration = 0.0; // the planner's share of the block's acceleration limit
+    Vec3 direction = Vec3::Zero();
+    bool rotary = false;
+
+    double peakVelocity() const { return std::min(velocity, std::sqrt(acceleration * length)); }
+    // From rest to rest: a trapezoid, or a triangle when the block is too short for v.
+    double duration() const {
+        const double peak = peakVelocity();
+        if (peak < velocity) {
+            return 2.0 * peak / acceleration;
+        }
+        return length / velocity + velocity / acceleration;
+    }
+};
+
+// An axis's displacement in LinuxCNC's units (mm, degrees) and its limits in the same units.
+struct AxisMove {
+    double displacement = 0.0, velocity = kInfinity, acceleration = kInfinity;
+};
+
+std::array<AxisMove, 5> axisMoves(const kinematics::MachineAxes& from,
+                                  const kinematics::MachineAxes& to,
+                                  const kinematics::MachineModel& machine) {
+    std::array<AxisMove, 5> moves{};
+    for (const AxisId axis : kinematics::kAllAxes) {
+        const double scale = kinematics::isRotary(axis) ? units::radToDeg(1.0) : 1.0;
+        const auto& limits = machine.limit(axis);
+        AxisMove& move = moves[static_cast<int>(axis)];
+        move.displacement = std::abs(to[axis] - from[axis]) * scale;
+        if (move.displacement < kTinyDisplacement) {
+            move.displacement = 0.0;
+        }
+        move.velocity = limited(limits.velocity) ? limits.velocity * scale : kInfinity;
+        move.acceleration = limited(limits.acceleration) ? limits.acceleration * scale : kInfinity;
+    }
+    return moves;
+}
+
+// LinuxCNC's canonical layer: the move's length is its XYZ length (the rotary length when no
+// linear axis moves), and each limit is the length over the longest time any axis needs.
+PlannedBlock planBlock(const kinematics::MachineAxes& from, const kinematics::MachineAxes& to,
+                       double feed, const kinematics::MachineModel& machine) {
+    const auto moves = axisMoves(from, to, machine);
+    PlannedBlock block;
+    const Vec3 linear(moves[0].displacement, moves[1].displacement, moves[2].displacement);
+    const double rotary = std::hypot(moves[3].displacement, moves[4].displacement);
+    block.rotary = rotary > 0.0;
+    block.length = linear.norm() > 0.0 ? linear.norm() : rotary;
+    if (linear.norm() > 0.0) {
+        block.direction = Vec3(to.x - from.x, to.y - from.y, to.z - from.z).normalized();
+    }
+    double velocityTime = 0.0, accelerationTime = 0.0;
+    for (const AxisMove& move : moves) {
+        velocityTime = std::max(velocityTime, move.displacement / move.velocity);
+        accelerationTime = std::max(accelerationTime, move.displacement / move.acceleration);
+    }
+    block.velocity = feed > 0.0 ? feed : kInfinity;
+    if (velocityTime > 0.0) {
+        block.velocity = std::min(block.velocity, block.length / velocityTime);
+    }
+    const double acceleration =
+        accelerationTime > 0.0 ? block.length / accelerationTime : kInfinity;
+    block.acceleration = kParabolicBlendShare * acceleration;
+    return block;
+}
+
+// The velocity below which the planner starts the next block while this one decelerates
+// (LinuxCNC's tpComputeBlendVelocity): the blend may take at most half of either block.
+double blendVelocity(const PlannedBlock& current, const PlannedBlock& next, double tolerance) {
+    const double reachable = current.peakVelocity(), reachableNext = next.peakVelocity();
+    const double longestBlend = std::min(current.length / reachable, next.length / reachableNext);
+    const double blendAtFullAcceleration =
+        std::max(reachable / current.acceleration, reachableNext / next.acceleration);
+    double velocity =
+        std::min(reachable, std::min(longestBlend, blendAtFullAcceleration) * current.acceleration);
+    if (tolerance > 0.0 && current.direction.norm() > 0.0 && next.direction.norm() > 0.0) {
+        const double dot = std::clamp(current.direction.dot(next.direction), -1.0, 1.0);
+        const double cornerCosine = std::cos(std::acos(-dot) / 2.0);
+        if (cornerCosine > kMinCornerCosine) {
+            velocity = std::min(velocity,
+                                2.0 * std::sqrt(current.acceleration * tolerance / cornerCosine));
+        }
+    }
+    return velocity;
+}
+
+bool plannable(const PlannedBlock& block) {
+    return block.length > 0.0 && std::isfinite(block.velocity) && block.velocity > 0.0 &&
+           block.acceleration > 0.0;
+}
+
+} // namespace
+
+BlockPlannerTime blockByBlockTime(std::span<const kinematics::MachineAxes> axes,
+                                  std::span<const double> feeds,
+                                  const kinematics::MachineModel& machine,
+                                  const BlockPlannerOptions& options) {
+    BlockPlannerTime result;
+    if (axes.size() < 2 || feeds.size() != axes.size()) {
+        return result;
+    }
+    std::vector<PlannedBlock> blocks;
+    blocks.reserve(axes.size() - 1);
+    for (std::size_t i = 1; i < axes.size(); ++i) {
+        PlannedBlock block = planBlock(axes[i - 1], axes[i], feeds[i], machine);
+        if (!std::isfinite(block.acceleration)) {
+            // No axis limits the move: it runs at F, as a planner without acceleration limits.
+            block.acceleration = kInfinity;
+        }
+        if (plannable(block)) {
+            blocks.push_back(block);
+        }
+    }
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        const PlannedBlock& block = blocks[i];
+        if (!std::isfinite(block.acceleration)) {
+            result.time += block.length / block.velocity;
+        } else {
+            result.time += block.duration();
+            if (i + 1 < blocks.size() && std::isfinite(blocks[i + 1].acceleration)) {
+                const double overlap =
+                    std::min(blendVelocity(block, blocks[i + 1], options.blendTolerance),
+                             block.peakVelocity()) /
+                    block.acceleration;
+                result.time -= overlap;
+            }
+        }
+        result.rotaryBlocks += block.rotary ? 1 : 0;
+    }
+    result.blocks = blocks.size();
+    result.meanBlockSeconds =
+        result.blocks > 0 ? result.time / static_cast<double>(result.blocks) : 0.0;
+    return result;
+}
+
+} // namespace bladeaxis::analysis

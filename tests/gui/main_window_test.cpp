@@ -591,21 +591,19 @@ class MainWindowTest final : public QObject {
             }
         });
         timer->start(50);
-        m_window->toolRadiusBox()->setValue(0.0); // "from file": the program states none
-        m_window->setBladeCad(QString());         // the blade CAD of an earlier job
         QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
-        m_window->runProgram(QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/programs/naca_weak_3rev.nc"));
+        m_window->runProgram(
+            QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/programs/naca_weak_3rev_no_radius.nc"));
         QTRY_VERIFY_WITH_TIMEOUT(finished.size() >= 2, kJobTimeoutMs);
         timer->deleteLater();
         QCOMPARE(finished.at(0).front().toBool(), false); // the run that found no radius
         QCOMPARE(finished.at(1).front().toBool(), true);  // and the run with the one given
         QVERIFY(m_window->result()->toolRadius.has_value());
         QCOMPARE(*m_window->result()->toolRadius, 8.0);
-        QVERIFY(m_window->windowTitle().startsWith("naca_weak_3rev.nc"));
+        QVERIFY(m_window->windowTitle().startsWith("naca_weak_3rev_no_radius.nc"));
     }
 
     void aHeidenhainProgramIsExportedAsAHeidenhainProgram() {
-        m_window->toolRadiusBox()->setValue(0.0); // from the program's TOOL DEF
         QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
         m_window->runProgram(QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/dialects/naca_weak_3rev.h"));
         QVERIFY(finished.wait(kJobTimeoutMs));

@@ -7,6 +7,7 @@
 #include "core/kinematics/machine_file.h"
 #include "ui/blade_placement_dialog.h"
 #include "ui/comparison_table.h"
+#include "ui/job_thread.h"
 #include "ui/main_window.h"
 #include "ui/profile_plots.h"
 #include "ui/s_theta_editor.h"

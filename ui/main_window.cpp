@@ -155,9 +155,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // the program sent to the machine depends on it.
     m_radiusBanner = new QFrame(this);
     m_radiusBanner->setObjectName(QStringLiteral("radiusConflictBanner"));
-    m_radiusBanner->setStyleSheet(QStringLiteral(
-        "#radiusConflictBanner { background: #fbd3d3; border: 1px solid #c62828; }"
-        "#radiusConflictBanner QLabel { color: #8e0000; font-weight: bold; }"));
+    m_radiusBanner->setStyleSheet(
+        QStringLiteral("#radiusConflictBanner { background: #fbd3d3; border: 1px solid #c62828; }"
+                       "#radiusConflictBanner QLabel { color: #8e0000; font-weight: bold; }"));
     auto* bannerRow = new QHBoxLayout(m_radiusBanner);
     m_radiusBannerText = new QLabel(m_radiusBanner);
     m_radiusBannerText->setWordWrap(true);
@@ -359,10 +359,10 @@ bool MainWindow::needsToolRadius(const Error& error) {
 void MainWindow::askToolRadiusAndRetry(job::JobSpec spec, const QString& program) {
     QInputDialog dialog(this);
     dialog.setWindowTitle(tr("Ball radius"));
-    dialog.setLabelText(tr("%1 does not state the ball radius of its cutter.\nBall radius R [mm] "
-                           "for this program:")
-                            .arg(QFileInfo(QString::fromStdString(spec.program.string()))
-                                     .fileName()));
+    dialog.setLabelText(
+        tr("%1 does not state the ball radius of its cutter.\nBall radius R [mm] "
+           "for this program:")
+            .arg(QFileInfo(QString::fromStdString(spec.program.string())).fileName()));
     dialog.setInputMode(QInputDialog::DoubleInput);
     dialog.setDoubleRange(0.0, 500.0);
     dialog.setDoubleDecimals(3);

@@ -232,7 +232,6 @@ class MainWindow final : public QMainWindow {
     // Whether to write although the tool gouges or collides: nullopt = cancelled.
     std::optional<bool> confirmClearance();
 
-
     job::JobSpec m_spec;
     job::JobSpec m_specBeforeJob; // restored when a new job fails or is cancelled
     RadiusChoice m_radius;

@@ -351,8 +351,8 @@ Status MainWindow::setMachineFile(const QString& machinePath) {
 
 void MainWindow::setBladeCad(const QString& cadPath, const cad::AxisRotationPlacement& placement) {
     if (m_thread != nullptr) {
-        statusBar()->showMessage(tr("A job is running: load or clear the blade CAD when it is done"),
-                                 5000);
+        statusBar()->showMessage(
+            tr("A job is running: load or clear the blade CAD when it is done"), 5000);
         return;
     }
     const bool changed = cadPath != m_cadPath ||
@@ -487,7 +487,8 @@ bool MainWindow::readyForNewJob() {
     }
     QMessageBox box(QMessageBox::Question, tr("BladeAxis"),
                     tr("A job is running. Cancel it and go on?"), QMessageBox::NoButton, this);
-    QPushButton* cancelJobButton = box.addButton(tr("Cancel the running job"), QMessageBox::AcceptRole);
+    QPushButton* cancelJobButton =
+        box.addButton(tr("Cancel the running job"), QMessageBox::AcceptRole);
     QPushButton* keep = box.addButton(tr("Keep it running"), QMessageBox::RejectRole);
     box.setDefaultButton(keep);
     box.exec();
@@ -660,11 +661,10 @@ void MainWindow::showToolRadius() {
         const QString radii = tr("%1 mm %2, but the program states %3 mm (%4)")
                                   .arg(QLocale().toString(*m_spec.toolRadius, 'g', 6), source,
                                        QLocale().toString(*stated, 'g', 6), statement);
-        source = m_radius.conflictConfirmed
-                     ? tr("%1, kept over the program's %2 mm")
-                           .arg(source, QLocale().toString(*stated, 'g', 6))
-                     : tr("%1: conflicts with the program's %2 mm")
-                           .arg(source, QLocale().toString(*stated, 'g', 6));
+        source = m_radius.conflictConfirmed ? tr("%1, kept over the program's %2 mm")
+                                                  .arg(source, QLocale().toString(*stated, 'g', 6))
+                                            : tr("%1: conflicts with the program's %2 mm")
+                                                  .arg(source, QLocale().toString(*stated, 'g', 6));
         style = m_radius.conflictConfirmed ? QStringLiteral("color: #b35c00; font-weight: bold;")
                                            : QStringLiteral("color: #c62828; font-weight: bold;");
         m_radiusBannerText->setText(tr("Tool radius conflict: %1. Export is blocked until you "
@@ -702,9 +702,9 @@ bool MainWindow::resolveRadiusConflictForExport() {
                            "tip points are computed with the radius the job used (%1 mm).")
                             .arg(QLocale().toString(*m_spec.toolRadius, 'g', 6)),
                     QMessageBox::NoButton, this);
-    QPushButton* useProgram = box.addButton(
-        tr("Use the program's %1 mm").arg(QLocale().toString(stated, 'g', 6)),
-        QMessageBox::AcceptRole);
+    QPushButton* useProgram =
+        box.addButton(tr("Use the program's %1 mm").arg(QLocale().toString(stated, 'g', 6)),
+                      QMessageBox::AcceptRole);
     QPushButton* keep =
         box.addButton(tr("Export with %1 mm").arg(QLocale().toString(*m_spec.toolRadius, 'g', 6)),
                       QMessageBox::DestructiveRole);

@@ -639,8 +639,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .warnings = {},
                      .seconds = 0.0};
     result.warnings = result.program.path().warnings;
-    result.toolRadius =
-        jobToolRadius(spec, generatedRadius, result.program, result.warnings);
+    result.toolRadius = jobToolRadius(spec, generatedRadius, result.program, result.warnings);
     if (auto status = checkToolRadius(result.toolRadius, result.program.path()); !status) {
         return std::unexpected(status.error());
     }

@@ -189,7 +189,8 @@ class ProgramSettingsTest final : public QObject {
         {
             DialogAnswerer cancel([](QWidget* modal) {
                 auto* box = qobject_cast<QMessageBox*>(modal);
-                if (box == nullptr || box->windowTitle() != QStringLiteral("Tool radius conflict")) {
+                if (box == nullptr ||
+                    box->windowTitle() != QStringLiteral("Tool radius conflict")) {
                     return false;
                 }
                 box->button(QMessageBox::Cancel)->click();
@@ -203,9 +204,8 @@ class ProgramSettingsTest final : public QObject {
 
         // "Export with 4 mm" keeps the typed radius for this program, as --tool-radius does.
         {
-            DialogAnswerer keep([](QWidget* modal) {
-                return clickButton(modal, QStringLiteral("Export with 4"));
-            });
+            DialogAnswerer keep(
+                [](QWidget* modal) { return clickButton(modal, QStringLiteral("Export with 4")); });
             m_window->exportProgramTo(output);
             QCOMPARE(keep.answered(), 1);
         }
@@ -277,7 +277,7 @@ class ProgramSettingsTest final : public QObject {
         QVERIFY(QSettings().value(QStringLiteral("job/machine")).toString() != bad);
         QVERIFY(runAndWait([&] { m_window->runProgram(kHeaderR8); }));
         QVERIFY(m_window->spec().machineFile.empty()); // the built-in machine, not the bad file
-        bladeaxis::ui::MainWindow fresh;                // nor in the next session
+        bladeaxis::ui::MainWindow fresh;               // nor in the next session
         QVERIFY(fresh.spec().machineFile.empty());
     }
 

@@ -121,8 +121,8 @@ TEST(BatchCli, AGeneratedProgramIsRescheduledWithTheRadiusItsHeaderStates) {
     const auto folder = std::filesystem::temp_directory_path() / "bladeaxis_cli_generated_radius";
     std::filesystem::create_directories(folder);
     const auto program = folder / "blade.nc";
-    ASSERT_EQ(run({"--batch", "--generate", program.string(), "--revolutions", "2",
-                   "--tool-radius", "3", "-q"})
+    ASSERT_EQ(run({"--batch", "--generate", program.string(), "--revolutions", "2", "--tool-radius",
+                   "3", "-q"})
                   .code,
               kExitOk);
     ASSERT_NE(readTextFile(program).value_or("").find("(ball end R=3 mm"), std::string::npos);
@@ -136,7 +136,8 @@ TEST(BatchCli, AGeneratedProgramIsRescheduledWithTheRadiusItsHeaderStates) {
 }
 
 TEST(BatchCli, AToolRadiusThatDisagreesWithTheGeneratorsHeaderIsReportedWithBothRadii) {
-    const std::string program = std::string(BLADEAXIS_TEST_DATA_DIR) + "/programs/naca_weak_3rev.nc";
+    const std::string program =
+        std::string(BLADEAXIS_TEST_DATA_DIR) + "/programs/naca_weak_3rev.nc";
     const CliRun result = run({"--batch", program, "--analyse-only", "--tool-radius", "4"});
     EXPECT_EQ(result.code, kExitOk) << result.err;
     EXPECT_NE(result.err.find("the ball radius 4 mm given replaces the file's 8 mm (header "

@@ -128,7 +128,7 @@ TEST(BatchCli, AGeneratedProgramIsRescheduledWithTheRadiusItsHeaderStates) {
     ASSERT_NE(readTextFile(program).value_or("").find("(ball end R=3 mm"), std::string::npos);
     const auto output = folder / "blade_rescheduled.nc";
     std::filesystem::remove(output);
-    const CliRun result = run({"reschedule", program.string(), "-o", output.string(), "--json"});
+    const CliRun result = run({"--batch", program.string(), "-o", output.string(), "--json"});
     ASSERT_EQ(result.code, kExitOk) << result.err;
     EXPECT_NE(result.out.find("\"tool_radius_mm\": 3"), std::string::npos);
     EXPECT_EQ(result.err.find("replaces the file's"), std::string::npos) << result.err;

@@ -2,6 +2,7 @@
 
 #include "core/base/units.h"
 #include "core/job/demo_program.h"
+#include "core/job/tool_radius.h"
 #include "ui/comparison_table.h"
 #include "ui/job_thread.h"
 #include "ui/layer_settings_panel.h"
@@ -14,6 +15,7 @@
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QFont>
+#include <QFrame>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
@@ -149,7 +151,32 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     splitter->addWidget(tabs);
     splitter->setStretchFactor(1, 2);
     splitter->setSizes({420, 780});
-    setCentralWidget(splitter);
+    // A given radius that contradicts the program is said above everything, not in a tooltip:
+    // the program sent to the machine depends on it.
+    m_radiusBanner = new QFrame(this);
+    m_radiusBanner->setObjectName(QStringLiteral("radiusConflictBanner"));
+    m_radiusBanner->setStyleSheet(
+        QStringLiteral("#radiusConflictBanner { background: #fbd3d3; border: 1px solid #c62828; }"
+                       "#radiusConflictBanner QLabel { color: #8e0000; font-weight: bold; }"));
+    auto* bannerRow = new QHBoxLayout(m_radiusBanner);
+    m_radiusBannerText = new QLabel(m_radiusBanner);
+    m_radiusBannerText->setWordWrap(true);
+    auto* useProgram = new QPushButton(tr("Use the program's radius"), m_radiusBanner);
+    useProgram->setObjectName(QStringLiteral("useProgramRadius"));
+    connect(useProgram, &QPushButton::clicked, this, &MainWindow::useProgramToolRadius);
+    auto* keepGiven = new QPushButton(tr("Keep the given radius"), m_radiusBanner);
+    keepGiven->setObjectName(QStringLiteral("keepGivenRadius"));
+    connect(keepGiven, &QPushButton::clicked, this, &MainWindow::confirmGivenToolRadius);
+    bannerRow->addWidget(m_radiusBannerText, 1);
+    bannerRow->addWidget(useProgram);
+    bannerRow->addWidget(keepGiven);
+    m_radiusBanner->setVisible(false);
+    auto* central = new QWidget(this);
+    auto* centralLayout = new QVBoxLayout(central);
+    centralLayout->setContentsMargins(0, 0, 0, 0);
+    centralLayout->addWidget(m_radiusBanner);
+    centralLayout->addWidget(splitter, 1);
+    setCentralWidget(central);
 
     m_undo.setUndoLimit(500);
     buildFileMenu();
@@ -285,18 +312,28 @@ void MainWindow::buildStatusBar() {
 }
 
 void MainWindow::runDemo() {
+    if (m_thread != nullptr) { // refused before anything of the job on screen changes
+        statusBar()->showMessage(tr("A job is already running"), 3000);
+        return;
+    }
     job::JobSpec spec;
     spec.demo = true;
     m_undo.clear();
-    startJob(std::move(spec), false);
+    detachBladeCad();
+    startJob(std::move(spec), false, RadiusChoice{});
 }
 
 void MainWindow::runProgram(const QString& programPath) {
+    if (m_thread != nullptr) {
+        statusBar()->showMessage(tr("A job is already running"), 3000);
+        return;
+    }
     job::JobSpec spec;
     spec.program = programPath.toStdString();
     m_pendingRecent = programPath; // a file that does not read is not worth recalling
     m_undo.clear();
-    startJob(std::move(spec), false);
+    detachBladeCad();
+    startJob(std::move(spec), false, RadiusChoice{});
 }
 
 void MainWindow::updateTitle() {
@@ -317,21 +354,36 @@ bool MainWindow::needsToolRadius(const Error& error) {
            error.message.find("--tool-radius") != std::string::npos;
 }
 
+// Pre-filled with the radius this program states (none when it is asked for) and never with a
+// value typed for another program: 0 until the engineer types one.
 void MainWindow::askToolRadiusAndRetry(job::JobSpec spec, const QString& program) {
-    bool ok = false;
-    const double radius = QInputDialog::getDouble(
-        this, tr("Ball radius"),
-        tr("%1 does not state the ball radius of its cutter.\nBall radius R [mm]:")
-            .arg(QFileInfo(QString::fromStdString(spec.program.string())).fileName()),
-        m_toolRadius->value() > 0.0 ? m_toolRadius->value() : 4.0, 0.001, 500.0, 3, &ok);
-    if (!ok) {
+    QInputDialog dialog(this);
+    dialog.setWindowTitle(tr("Ball radius"));
+    dialog.setLabelText(
+        tr("%1 does not state the ball radius of its cutter.\nBall radius R [mm] "
+           "for this program:")
+            .arg(QFileInfo(QString::fromStdString(spec.program.string())).fileName()));
+    dialog.setInputMode(QInputDialog::DoubleInput);
+    dialog.setDoubleRange(0.0, 500.0);
+    dialog.setDoubleDecimals(3);
+    dialog.setDoubleValue(spec.toolRadius.value_or(0.0));
+    if (dialog.exec() != QDialog::Accepted || !(dialog.doubleValue() > 0.0)) {
         statusBar()->showMessage(tr("No ball radius given: the program was not run"));
         return;
     }
-    m_toolRadius->setValue(radius); // the next programs of this session use it too
-    spec.toolRadius = radius;
+    spec.toolRadius = dialog.doubleValue();
     m_pendingRecent = program;
-    startJob(std::move(spec), false);
+    startJob(std::move(spec), false, RadiusChoice{RadiusOrigin::Asked, false});
+}
+
+void MainWindow::detachBladeCad() {
+    if (m_result && !m_cadPath.isEmpty()) {
+        statusBar()->showMessage(
+            tr("Blade CAD %1 detached: it belonged to the previous program").arg(m_cadPath), 8000);
+        m_cadPath.clear();
+        m_cadPlacement = {};
+        showBladeCad();
+    }
 }
 
 void MainWindow::cancelJob() {
@@ -340,7 +392,7 @@ void MainWindow::cancelJob() {
     }
 }
 
-void MainWindow::startJob(job::JobSpec spec, bool reapply) {
+void MainWindow::startJob(job::JobSpec spec, bool reapply, std::optional<RadiusChoice> radius) {
     if (m_thread != nullptr) {
         statusBar()->showMessage(tr("A job is already running"), 3000);
         return;
@@ -349,16 +401,21 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply) {
         if (!m_machinePath.isEmpty() && spec.machineFile.empty()) {
             spec.machineFile = m_machinePath.toStdString();
         }
-        if (m_toolRadius->value() > 0.0 && !spec.toolRadius) {
-            spec.toolRadius = m_toolRadius->value();
-        }
-        if (!m_cadPath.isEmpty() && spec.cad.file.empty() && !spec.demo) {
+        // The radius is the spec's alone: a value typed for the program on screen is not
+        // carried to another one (rerunWithToolRadius puts it in the spec of the same program).
+        // CAD loaded before any program was shown is the first program's.
+        if (!m_result && !m_cadPath.isEmpty() && spec.cad.file.empty() && !spec.demo) {
             spec.cad.file = m_cadPath.toStdString();
             spec.cad.placement = m_cadPlacement;
         }
         spec.compare = m_compareAction->isChecked();
         spec.compareOptimum = m_optimumAction->isChecked();
         m_specBeforeJob = std::exchange(m_spec, spec);
+        m_radiusBeforeJob = m_radius;
+        if (radius) {
+            m_radius = *radius;
+        }
+        showBladeCad();
     }
     // Edits do not change the comparison (its methods schedule the preset's own layers): a
     // re-run for an edit keeps the comparison it has and skips that work.
@@ -368,6 +425,7 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply) {
     m_keepSelection = selectedLayer();
     m_threadIsReapply = reapply;
     m_thread = new JobThread(std::move(spec), this);
+    const quint64 generation = ++m_jobGeneration;
     connect(m_thread, &JobThread::progressed, this,
             [this, reapply](double fraction, const QString& stage) {
                 m_progress->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
@@ -376,7 +434,12 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply) {
                 statusBar()->showMessage(reapply ? tr("Applying the layer edits: %1").arg(stage)
                                                  : tr("Running: %1").arg(stage));
             });
-    connect(m_thread, &QThread::finished, this, &MainWindow::onJobFinished);
+    // A job stopped by stopRunningJob was handled already: its late signal is not the next job's.
+    connect(m_thread, &QThread::finished, this, [this, generation] {
+        if (generation == m_jobGeneration && m_thread != nullptr) {
+            onJobFinished();
+        }
+    });
     if (!reapply) { // a new program is shown in 3D as soon as it is read
         connect(m_thread, &JobThread::originalReady, this, [this] {
             if (m_thread != nullptr) {
@@ -410,9 +473,22 @@ void MainWindow::onJobFinished() {
             // holds the previous result, so the view and the job settings go back to it (an
             // export after this writes the result shown).
             m_spec = m_specBeforeJob;
+            m_radius = m_radiusBeforeJob;
             if (m_result) {
                 m_view3d->showScene(m_scene);
+                m_cadPath = QString::fromStdString(m_spec.cad.file.string());
+                m_cadPlacement = m_spec.cad.placement;
             }
+            // A machine file that does not load is not kept for the next program.
+            if (outcome.error().code == ErrorCode::MachineFile && !m_machinePath.isEmpty() &&
+                failed.machineFile == m_machinePath.toStdString()) {
+                const QString restored = QString::fromStdString(m_spec.machineFile.string());
+                if (!setMachineFile(restored == m_machinePath ? QString() : restored)) {
+                    static_cast<void>(setMachineFile(QString()));
+                }
+            }
+            showToolRadius();
+            showBladeCad();
         }
         if (!cancelled && !askRadius) {
             QMessageBox::warning(this, tr("BladeAxis"),
@@ -438,6 +514,12 @@ void MainWindow::onJobFinished() {
     }
     m_result = std::move(*outcome);
     showResult(std::move(scene));
+    if (!reapply) {
+        m_cadPath = QString::fromStdString(m_spec.cad.file.string());
+        m_cadPlacement = m_spec.cad.placement;
+    }
+    showToolRadius();
+    showBladeCad();
     updateExportActions();
     updateTitle();
     statusBar()->showMessage(

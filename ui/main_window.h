@@ -47,6 +47,8 @@ class MainWindow final : public QMainWindow {
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
+    // Start a new job; refused (nothing changes, the undo history included) while a job runs.
+    // A new program starts without the previous program's typed radius and blade CAD.
     void runDemo();
     void runProgram(const QString& programPath);
     // Stops the running job; the window keeps (and shows again) the previous result.
@@ -55,16 +57,31 @@ class MainWindow final : public QMainWindow {
     // (Save / Discard / Cancel); true when the caller may go on. The menu, drop and close paths
     // ask; the programmatic runProgram/runDemo/openJob do not.
     bool confirmDiscardEdits();
+    // Before the menu, drop and recent-file paths replace the job: confirmDiscardEdits, then,
+    // while a job runs, offers to cancel it (and waits for it to stop); true when the caller may
+    // start the new job.
+    bool readyForNewJob();
     // Reads a job file (docs/job-file.md), edits included, and runs it.
     Status openJob(const QString& jobPath);
     // The status line after opening a job: the outputs it names, written only on export.
     QString jobOpenedMessage(const QString& jobPath) const;
-    // Saves the current job, with the layer edits, as a job file.
+    // Saves the current job, with the layer edits, as a job file: `jobPath` with the suffix
+    // ".bladeaxis.json" (jobFilePath). Refused with nothing loaded.
     Status saveJob(const QString& jobPath);
-    void setMachineFile(const QString& machinePath);
-    // Blade CAD (STEP/IGES) for the next job: clearance check, sections and the 3D surface;
-    // empty clears it. The placement puts the blade relative to the rotary axis.
+    // `path` ending in ".bladeaxis.json": "blade" and "blade.json" become "blade.bladeaxis.json".
+    static QString jobFilePath(const QString& path);
+    QAction* saveJobAction() const { return m_saveJob; }
+    // The machine for this and the next jobs; empty is the built-in one. A file that does not
+    // load is refused (its error returned) and the machine in use is kept.
+    Status setMachineFile(const QString& machinePath);
+    // Blade CAD (STEP/IGES) of the program on screen: the job re-runs with it at once (clearance
+    // check, sections, 3D surface). With no program shown it waits for the next program opened.
+    // It belongs to that program: opening another program detaches it. Empty clears it.
+    // Refused while a job runs.
     void setBladeCad(const QString& cadPath, const cad::AxisRotationPlacement& placement = {});
+    void clearBladeCad() { setBladeCad(QString()); }
+    QString bladeCadPath() const { return m_cadPath; }
+    QAction* clearCadAction() const { return m_clearCad; }
     bool isRunning() const { return m_thread != nullptr; }
     // True while the job re-runs (or will re-run) with edits the last result does not have.
     bool editsPending() const { return m_thread != nullptr || m_reapplyQueued; }
@@ -80,8 +97,24 @@ class MainWindow final : public QMainWindow {
     ComparisonTable* comparisonTable() const { return m_comparison; }
     ToolpathView* view3d() const { return m_view3d; }
     QSlider* toolSlider() const { return m_toolSlider; }
-    // The tool bar's ball radius: 0 ("from file") uses the radius the program states.
+    // The tool bar's ball radius of the program on screen: 0 ("from file") uses the radius the
+    // program states. A value typed there is this program's only: a new program starts from
+    // file again, and nothing of it is remembered across sessions.
     QDoubleSpinBox* toolRadiusBox() const { return m_toolRadius; }
+    // Beside the radius: where the radius of the job on screen comes from ("from the program
+    // (CUTTER/TLDATA)", "typed", "from the job file", ...), and the conflict when a given
+    // radius disagrees with the program's.
+    QLabel* toolRadiusSourceLabel() const { return m_radiusSource; }
+    // The strip above the views that shows an unresolved radius conflict (hidden otherwise).
+    QWidget* radiusConflictBanner() const { return m_radiusBanner; }
+    // A given radius (typed, asked, job file) disagrees with the one the program states
+    // (job::toolRadiusDisagrees, the batch's rule) and the engineer has not confirmed it: the
+    // program and CL exports are refused until it is resolved.
+    bool radiusConflictUnresolved() const;
+    // The two ways to resolve it: re-run with the program's radius, or keep the given one for
+    // this program (as the batch's --tool-radius does, with its warning).
+    void useProgramToolRadius();
+    void confirmGivenToolRadius();
     void setDarkPalette(bool dark);
     int selectedLayer() const;
     void selectLayer(int layer);
@@ -92,8 +125,9 @@ class MainWindow final : public QMainWindow {
     Status exportProgram(const QString& path, bool force = false);
     Status exportClData(const QString& path, bool force = false);
     Status exportReport(const QString& folder);
-    // File > Export program / CL data after the file dialog: when the clearance check refuses
-    // the output, shows where and offers "Export anyway" (the batch's --force).
+    // File > Export program / CL data after the file dialog: with an unresolved radius conflict,
+    // asks which radius (the program's re-runs the job, export again after it); when the
+    // clearance check refuses the output, shows where and offers "Export anyway" (--force).
     void exportProgramTo(const QString& path);
     // "<input>_rescheduled.<ext>" beside the input (the demo's in the working folder), and the
     // file-dialog filter of the input's format; empty before the first result.
@@ -119,6 +153,13 @@ class MainWindow final : public QMainWindow {
     void closeEvent(QCloseEvent* event) override;
 
   private:
+    // Where the spec's tool radius came from, with the spec it belongs to.
+    enum class RadiusOrigin { Program, Typed, Asked, JobFile };
+    struct RadiusChoice {
+        RadiusOrigin origin = RadiusOrigin::Program;
+        bool conflictConfirmed = false; // the engineer keeps a given radius the program contradicts
+    };
+
     QWidget* buildEditorPage();
     QWidget* build3dPage();
     void buildFileMenu();
@@ -128,7 +169,10 @@ class MainWindow final : public QMainWindow {
     void buildToolBar();
     void buildStatusBar();
     void restoreSettings();
-    void startJob(job::JobSpec spec, bool reapply);
+    // `radius`: where the new spec's radius comes from (kept when not given: a re-run).
+    void startJob(job::JobSpec spec, bool reapply, std::optional<RadiusChoice> radius = {});
+    // Opening another program: the CAD attached to the one on screen is not its CAD.
+    void detachBladeCad();
     void onJobFinished();
     void showResult(job::DisplayScene scene);
     void showLayers();
@@ -137,9 +181,18 @@ class MainWindow final : public QMainWindow {
     void showAxisLetters(const kinematics::MachineModel& machine);
     void setLayerHeaders(QChar table);
     void showLayerRow(int row, const report::LayerMotion& motion);
-    void rerunWith(job::JobSpec spec, const QString& message);
+    void rerunWith(job::JobSpec spec, const QString& message,
+                   std::optional<RadiusChoice> radius = {});
     void rerunWithToolRadius();
     void rerunWithMachine();
+    // The tool bar's radius box and the label beside it, the conflict strip, and the CAD label,
+    // from the job on screen.
+    void showToolRadius();
+    void showBladeCad();
+    // Asks about an unresolved radius conflict before an export: true to go on.
+    bool resolveRadiusConflictForExport();
+    // Cancels the running job and waits for it; its outcome is handled at once.
+    void stopRunningJob();
     void fillMachineMenu();
     // After a re-run for an edit: marks the peak-A cell of a layer whose figure moved, saying
     // why (its own edit, or a neighbour's edit moving the junction they share).
@@ -181,6 +234,9 @@ class MainWindow final : public QMainWindow {
 
     job::JobSpec m_spec;
     job::JobSpec m_specBeforeJob; // restored when a new job fails or is cancelled
+    RadiusChoice m_radius;
+    RadiusChoice m_radiusBeforeJob;
+    quint64 m_jobGeneration = 0; // a job's finished signal is handled only while it is current
     std::optional<job::JobResult> m_result;
     job::DisplayScene m_scene;
     QString m_machinePath;
@@ -188,6 +244,8 @@ class MainWindow final : public QMainWindow {
     QAction* m_exportProgram = nullptr;
     QAction* m_exportCl = nullptr;
     QAction* m_exportReport = nullptr;
+    QAction* m_saveJob = nullptr;
+    QAction* m_clearCad = nullptr;
     QString m_cadPath;
     cad::AxisRotationPlacement m_cadPlacement;
     QUndoStack m_undo;
@@ -206,6 +264,9 @@ class MainWindow final : public QMainWindow {
     QSlider* m_toolSlider = nullptr;
     QToolBar* m_view3dBar = nullptr; // the View menu's 3D actions, above the 3D view
     QDoubleSpinBox* m_toolRadius = nullptr;
+    QLabel* m_radiusSource = nullptr;
+    QWidget* m_radiusBanner = nullptr;
+    QLabel* m_radiusBannerText = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;
     QLabel* m_machineLabel = nullptr;

@@ -3,9 +3,11 @@
 #include "core/base/version.h"
 #include "core/job/demo_program.h"
 #include "core/job/job_file.h"
+#include "core/job/tool_radius.h"
 #include "core/kinematics/machine_file.h"
 #include "ui/blade_placement_dialog.h"
 #include "ui/comparison_table.h"
+#include "ui/job_thread.h"
 #include "ui/main_window.h"
 #include "ui/profile_plots.h"
 #include "ui/s_theta_editor.h"
@@ -23,6 +25,7 @@
 #include <QFileInfo>
 #include <QKeySequence>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -44,7 +47,9 @@ const char* const kDarkKey = "view/dark";
 const char* const kCompareKey = "job/compare";
 const char* const kOptimumKey = "job/optimum";
 const char* const kMachineKey = "job/machine";
-const char* const kToolRadiusKey = "job/toolRadius";
+// Earlier versions remembered the tool bar's radius across programs and sessions; it is removed.
+const char* const kObsoleteToolRadiusKey = "job/toolRadius";
+constexpr const char* kJobSuffix = ".bladeaxis.json";
 
 QAction* menuAction(QMenu* menu, const QString& text, const QKeySequence& shortcut,
                     const QString& tip) {
@@ -71,10 +76,15 @@ void MainWindow::buildFileMenu() {
                        tr("Blade CAD (STEP/IGES) for the clearance check, the sections and the "
                           "3D surface of the next program")),
             &QAction::triggered, this, &MainWindow::openCadDialog);
+    m_clearCad = menuAction(file, tr("C&lear blade CAD"), QKeySequence(),
+                            tr("Detach the blade CAD from the program on screen and re-run it "
+                               "without"));
+    m_clearCad->setEnabled(false);
+    connect(m_clearCad, &QAction::triggered, this, &MainWindow::clearBladeCad);
     connect(menuAction(file, tr("Run &demo"), QKeySequence(tr("Ctrl+D")),
                        tr("Re-schedule the built-in demo blade program")),
             &QAction::triggered, this, [this] {
-                if (confirmDiscardEdits()) {
+                if (readyForNewJob()) {
                     runDemo();
                 }
             });
@@ -83,10 +93,11 @@ void MainWindow::buildFileMenu() {
     connect(menuAction(file, tr("Open &job…"), QKeySequence(tr("Ctrl+J")),
                        tr("Open a saved job (program, machine, parameters and layer edits)")),
             &QAction::triggered, this, &MainWindow::openJobDialog);
-    connect(
+    m_saveJob =
         menuAction(file, tr("&Save job…"), QKeySequence::Save,
-                   tr("Save the job with its layer edits; `bladeaxis --batch --job` reruns it")),
-        &QAction::triggered, this, &MainWindow::saveJobDialog);
+                   tr("Save the job with its layer edits as *.bladeaxis.json; `bladeaxis --batch "
+                      "--job` reruns it"));
+    connect(m_saveJob, &QAction::triggered, this, &MainWindow::saveJobDialog);
     file->addSeparator();
     m_exportProgram = menuAction(file, tr("&Export program…"), QKeySequence(tr("Ctrl+E")),
                                  tr("Write the re-scheduled program (refused if a check failed)"));
@@ -227,18 +238,22 @@ void MainWindow::buildToolBar() {
     m_toolRadius->setDecimals(3);
     m_toolRadius->setSuffix(tr(" mm"));
     m_toolRadius->setSpecialValueText(tr("from file"));
-    m_toolRadius->setToolTip(tr("Ball radius R; 'from file' uses the radius the CL file states"));
-    connect(m_toolRadius, &QDoubleSpinBox::valueChanged, this,
-            [](double value) { QSettings().setValue(kToolRadiusKey, value); });
+    m_toolRadius->setToolTip(tr("Ball radius R of the program on screen; 'from file' uses the "
+                                "radius the program states. Not carried to the next program."));
+    m_toolRadius->setEnabled(false); // a radius belongs to a program: none before one is shown
     // Once typed (not at every keystroke), a new radius re-runs the job on screen.
     connect(m_toolRadius, &QDoubleSpinBox::editingFinished, this, [this] {
         const std::optional<double> shown =
             m_toolRadius->value() > 0.0 ? std::optional(m_toolRadius->value()) : std::nullopt;
-        if (m_result && shown != m_spec.toolRadius) {
+        if (m_result && m_thread == nullptr && shown != m_spec.toolRadius) {
             rerunWithToolRadius();
         }
     });
     bar->addWidget(m_toolRadius);
+    m_radiusSource = new QLabel(bar);
+    m_radiusSource->setObjectName(QStringLiteral("toolRadiusSource"));
+    m_radiusSource->setToolTip(tr("Where the ball radius of the job on screen comes from"));
+    bar->addWidget(m_radiusSource);
     m_machineLabel = new QLabel(tr(" Machine: built-in"), bar);
     bar->addWidget(m_machineLabel);
     m_cadLabel = new QLabel(tr("  Blade CAD: none"), bar);
@@ -258,10 +273,10 @@ void MainWindow::restoreSettings() {
     m_optimumAction->setChecked(settings.value(kOptimumKey, true).toBool());
     connect(m_optimumAction, &QAction::toggled, this,
             [](bool on) { QSettings().setValue(kOptimumKey, on); });
-    m_toolRadius->setValue(settings.value(kToolRadiusKey, 0.0).toDouble());
+    settings.remove(kObsoleteToolRadiusKey);
     const QString machine = settings.value(kMachineKey).toString();
-    if (!machine.isEmpty() && QFileInfo::exists(machine)) {
-        setMachineFile(machine);
+    if (!machine.isEmpty() && !setMachineFile(machine)) {
+        settings.remove(kMachineKey); // a machine file that no longer loads is not used
     }
     m_darkAction->setChecked(settings.value(kDarkKey, false).toBool());
 }
@@ -298,7 +313,10 @@ void MainWindow::fillMachineMenu() {
         action->setToolTip(path.isEmpty() ? tr("The built-in blade machine") : path);
         group->addAction(action);
         connect(action, &QAction::triggered, this, [this, path] {
-            setMachineFile(path);
+            if (const Status set = setMachineFile(path); !set) {
+                reportOutcome(set, QString(), tr("Machine file not loaded"));
+                return;
+            }
             rerunWithMachine();
         });
     };
@@ -317,23 +335,58 @@ void MainWindow::fillMachineMenu() {
     m_machineMenu->addAction(tr("Other file…"), this, &MainWindow::openMachineDialog);
 }
 
-void MainWindow::setMachineFile(const QString& machinePath) {
+Status MainWindow::setMachineFile(const QString& machinePath) {
+    if (!machinePath.isEmpty()) {
+        if (auto machine = kinematics::loadMachineFile(machinePath.toStdString()); !machine) {
+            return std::unexpected(machine.error());
+        }
+    }
     m_machinePath = machinePath;
     m_machineLabel->setText(machinePath.isEmpty()
                                 ? tr(" Machine: built-in")
                                 : tr(" Machine: %1").arg(QFileInfo(machinePath).fileName()));
     QSettings().setValue(kMachineKey, machinePath);
+    return {};
 }
 
 void MainWindow::setBladeCad(const QString& cadPath, const cad::AxisRotationPlacement& placement) {
+    if (m_thread != nullptr) {
+        statusBar()->showMessage(
+            tr("A job is running: load or clear the blade CAD when it is done"), 5000);
+        return;
+    }
+    const bool changed = cadPath != m_cadPath ||
+                         placement.rotationXyz != m_cadPlacement.rotationXyz ||
+                         placement.translation != m_cadPlacement.translation;
     m_cadPath = cadPath;
-    m_cadPlacement = placement;
-    m_cadLabel->setText(cadPath.isEmpty()
+    m_cadPlacement = cadPath.isEmpty() ? cad::AxisRotationPlacement{} : placement;
+    showBladeCad();
+    if (!m_result || !changed) {
+        return; // no program on screen: the next program opened uses it
+    }
+    // The program on screen is checked against it (or without it) at once.
+    job::JobSpec spec = m_spec;
+    spec.cad.file = m_cadPath.toStdString();
+    spec.cad.placement = m_cadPlacement;
+    rerunWith(std::move(spec), cadPath.isEmpty()
+                                   ? tr("Blade CAD cleared: re-running without it…")
+                                   : tr("Checking the program against %1…").arg(cadPath));
+}
+
+void MainWindow::showBladeCad() {
+    m_cadLabel->setText(m_cadPath.isEmpty()
                             ? tr("  Blade CAD: none")
-                            : tr("  Blade CAD: %1").arg(QFileInfo(cadPath).fileName()));
+                            : tr("  Blade CAD: %1").arg(QFileInfo(m_cadPath).fileName()));
+    if (m_clearCad != nullptr) {
+        m_clearCad->setEnabled(!m_cadPath.isEmpty());
+    }
 }
 
 void MainWindow::openCadDialog() {
+    if (m_thread != nullptr) {
+        statusBar()->showMessage(tr("A job is running: load the blade CAD when it is done"), 5000);
+        return;
+    }
     const QString path =
         QFileDialog::getOpenFileName(this, tr("Open blade CAD"), QString(),
                                      tr("CAD (*.step *.stp *.iges *.igs);;All files (*)"));
@@ -345,18 +398,27 @@ void MainWindow::openCadDialog() {
         return;
     }
     setBladeCad(path, dialog.placement());
-    statusBar()->showMessage(tr("Blade CAD %1 is used by the next program you open").arg(path),
-                             8000);
+    if (!m_result) {
+        statusBar()->showMessage(tr("Blade CAD %1 is used by the next program you open").arg(path),
+                                 8000);
+    }
 }
 
 Status MainWindow::openJob(const QString& jobPath) {
+    if (m_thread != nullptr) {
+        return makeError(ErrorCode::InvalidArgument, "a job is already running");
+    }
     job::JobSpec spec;
     if (Status read = job::readJobFile(jobPath.toStdString(), spec); !read) {
         return read;
     }
     m_undo.clear();
-    setBladeCad(QString::fromStdString(spec.cad.file.string()), spec.cad.placement);
-    startJob(std::move(spec), false);
+    if (!spec.cad.file.empty()) { // the job's own CAD
+        m_cadPath.clear();
+    }
+    detachBladeCad();
+    const RadiusOrigin origin = spec.toolRadius ? RadiusOrigin::JobFile : RadiusOrigin::Program;
+    startJob(std::move(spec), false, RadiusChoice{origin, false});
     return {};
 }
 
@@ -377,8 +439,22 @@ QString MainWindow::jobOpenedMessage(const QString& jobPath) const {
         .arg(jobPath, outputs.join(QStringLiteral(", ")));
 }
 
+QString MainWindow::jobFilePath(const QString& path) {
+    if (path.endsWith(QLatin1String(kJobSuffix), Qt::CaseInsensitive)) {
+        return path;
+    }
+    QString base = path;
+    if (base.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
+        base.chop(5);
+    }
+    return base + QLatin1String(kJobSuffix);
+}
+
 Status MainWindow::saveJob(const QString& jobPath) {
-    const std::filesystem::path path = jobPath.toStdString();
+    if (!m_result) {
+        return makeError(ErrorCode::InvalidArgument, "no job to save: open a program first");
+    }
+    const std::filesystem::path path = jobFilePath(jobPath).toStdString();
     const std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
     Status written = writeFileAtomically(path, job::jobJsonText(m_spec, folder));
     if (written) {
@@ -402,9 +478,45 @@ bool MainWindow::confirmDiscardEdits() {
     return answer == QMessageBox::Discard;
 }
 
+bool MainWindow::readyForNewJob() {
+    if (!confirmDiscardEdits()) {
+        return false;
+    }
+    if (m_thread == nullptr) {
+        return true;
+    }
+    QMessageBox box(QMessageBox::Question, tr("BladeAxis"),
+                    tr("A job is running. Cancel it and go on?"), QMessageBox::NoButton, this);
+    QPushButton* cancelJobButton =
+        box.addButton(tr("Cancel the running job"), QMessageBox::AcceptRole);
+    QPushButton* keep = box.addButton(tr("Keep it running"), QMessageBox::RejectRole);
+    box.setDefaultButton(keep);
+    box.exec();
+    if (box.clickedButton() != cancelJobButton) {
+        statusBar()->showMessage(tr("The running job goes on; nothing was changed"), 5000);
+        return false;
+    }
+    stopRunningJob();
+    return m_thread == nullptr;
+}
+
+void MainWindow::stopRunningJob() {
+    if (m_thread == nullptr) {
+        return;
+    }
+    m_thread->requestCancel();
+    m_thread->wait();
+    onJobFinished(); // now, not when the signal arrives: the caller starts the next job
+}
+
 Status MainWindow::exportProgram(const QString& path, bool force) {
     if (Status pending = refuseWhilePending(); !pending) {
         return pending;
+    }
+    if (radiusConflictUnresolved()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         m_radiusBannerText->text().toStdString() +
+                             ": use the program's radius or keep the given one first");
     }
     job::JobSpec spec = m_spec;
     spec.cad.force = force;
@@ -417,6 +529,11 @@ Status MainWindow::exportProgram(const QString& path, bool force) {
 Status MainWindow::exportClData(const QString& path, bool force) {
     if (Status pending = refuseWhilePending(); !pending) {
         return pending;
+    }
+    if (radiusConflictUnresolved()) {
+        return makeError(ErrorCode::InvalidArgument,
+                         m_radiusBannerText->text().toStdString() +
+                             ": use the program's radius or keep the given one first");
     }
     job::JobSpec spec = m_spec;
     spec.cad.force = force;
@@ -470,6 +587,9 @@ std::optional<bool> MainWindow::confirmClearance() {
 }
 
 void MainWindow::exportProgramTo(const QString& path) {
+    if (!resolveRadiusConflictForExport()) {
+        return;
+    }
     if (const std::optional<bool> force = confirmClearance()) {
         reportOutcome(exportProgram(path, *force), tr("Exported %1").arg(path),
                       tr("Export refused"));
@@ -477,6 +597,9 @@ void MainWindow::exportProgramTo(const QString& path) {
 }
 
 void MainWindow::exportClDataTo(const QString& path) {
+    if (!resolveRadiusConflictForExport()) {
+        return;
+    }
     if (const std::optional<bool> force = confirmClearance()) {
         reportOutcome(exportClData(path, *force), tr("Exported %1").arg(path),
                       tr("Export refused"));
@@ -493,6 +616,112 @@ void MainWindow::updateExportActions() {
     if (m_exportReport != nullptr) {
         m_exportReport->setEnabled(m_result.has_value());
     }
+    if (m_saveJob != nullptr) {
+        m_saveJob->setEnabled(m_result.has_value());
+    }
+}
+
+bool MainWindow::radiusConflictUnresolved() const {
+    return m_result && !m_radius.conflictConfirmed &&
+           job::toolRadiusDisagrees(m_spec.toolRadius, m_result->program.path().toolRadius);
+}
+
+void MainWindow::showToolRadius() {
+    {
+        const QSignalBlocker block(m_toolRadius);
+        m_toolRadius->setValue(m_spec.toolRadius.value_or(0.0));
+    }
+    m_toolRadius->setEnabled(m_result.has_value());
+    QString source;
+    QString style;
+    const std::optional<double> stated =
+        m_result ? m_result->program.path().toolRadius : std::nullopt;
+    const QString statement =
+        m_result ? QString::fromStdString(job::statedRadiusSource(m_result->program)) : QString();
+    if (m_spec.toolRadius) {
+        switch (m_radius.origin) {
+        case RadiusOrigin::Typed:
+        case RadiusOrigin::Program:
+            source = tr("typed");
+            break;
+        case RadiusOrigin::Asked:
+            source = tr("typed when asked");
+            break;
+        case RadiusOrigin::JobFile:
+            source = tr("from the job file");
+            break;
+        }
+    } else if (m_result && m_spec.demo) {
+        source = tr("from the demo's generator");
+    } else if (m_result && stated) {
+        source = tr("from the program (%1)").arg(statement);
+    }
+    const bool conflict = m_result && job::toolRadiusDisagrees(m_spec.toolRadius, stated);
+    if (conflict) {
+        const QString radii = tr("%1 mm %2, but the program states %3 mm (%4)")
+                                  .arg(QLocale().toString(*m_spec.toolRadius, 'g', 6), source,
+                                       QLocale().toString(*stated, 'g', 6), statement);
+        source = m_radius.conflictConfirmed ? tr("%1, kept over the program's %2 mm")
+                                                  .arg(source, QLocale().toString(*stated, 'g', 6))
+                                            : tr("%1: conflicts with the program's %2 mm")
+                                                  .arg(source, QLocale().toString(*stated, 'g', 6));
+        style = m_radius.conflictConfirmed ? QStringLiteral("color: #b35c00; font-weight: bold;")
+                                           : QStringLiteral("color: #c62828; font-weight: bold;");
+        m_radiusBannerText->setText(tr("Tool radius conflict: %1. Export is blocked until you "
+                                       "choose.")
+                                        .arg(radii));
+    }
+    m_radiusSource->setText(source.isEmpty() ? QString() : QStringLiteral(" ") + source + " ");
+    m_radiusSource->setStyleSheet(style);
+    m_radiusBanner->setVisible(conflict && !m_radius.conflictConfirmed);
+}
+
+void MainWindow::useProgramToolRadius() {
+    if (!m_result || m_thread != nullptr) {
+        return;
+    }
+    job::JobSpec spec = m_spec;
+    spec.toolRadius.reset();
+    rerunWith(std::move(spec), tr("Re-running with the program's tool radius…"),
+              RadiusChoice{RadiusOrigin::Program, false});
+}
+
+void MainWindow::confirmGivenToolRadius() {
+    m_radius.conflictConfirmed = true;
+    showToolRadius();
+}
+
+bool MainWindow::resolveRadiusConflictForExport() {
+    if (!radiusConflictUnresolved() || !refuseWhilePending()) {
+        return true; // the export itself says why it is refused, if it is
+    }
+    const double stated = *m_result->program.path().toolRadius;
+    QMessageBox box(QMessageBox::Warning, tr("Tool radius conflict"),
+                    m_radiusBannerText->text() + "\n\n" +
+                        tr("The exported program keeps the program's own tool statement; its "
+                           "tip points are computed with the radius the job used (%1 mm).")
+                            .arg(QLocale().toString(*m_spec.toolRadius, 'g', 6)),
+                    QMessageBox::NoButton, this);
+    QPushButton* useProgram =
+        box.addButton(tr("Use the program's %1 mm").arg(QLocale().toString(stated, 'g', 6)),
+                      QMessageBox::AcceptRole);
+    QPushButton* keep =
+        box.addButton(tr("Export with %1 mm").arg(QLocale().toString(*m_spec.toolRadius, 'g', 6)),
+                      QMessageBox::DestructiveRole);
+    box.setDefaultButton(box.addButton(QMessageBox::Cancel));
+    box.exec();
+    if (box.clickedButton() == keep) {
+        confirmGivenToolRadius();
+        return true;
+    }
+    if (box.clickedButton() == useProgram) {
+        useProgramToolRadius();
+        statusBar()->showMessage(
+            tr("Re-running with the program's tool radius: export again when it is done"));
+        return false;
+    }
+    statusBar()->showMessage(tr("Export cancelled"), 5000);
+    return false;
 }
 
 QString MainWindow::suggestedExportPath() const {
@@ -559,7 +788,7 @@ void MainWindow::exportReportDialog() {
 }
 
 void MainWindow::openJobDialog() {
-    if (!confirmDiscardEdits()) {
+    if (!readyForNewJob()) {
         return;
     }
     const QString path =
@@ -570,15 +799,18 @@ void MainWindow::openJobDialog() {
 }
 
 void MainWindow::saveJobDialog() {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save job"), QString(), tr("Job files (*.json)"));
+    if (!m_result) {
+        return;
+    }
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save job"), QString(),
+                                                      tr("Job files (*.bladeaxis.json)"));
     if (!path.isEmpty()) {
-        reportOutcome(saveJob(path), tr("Saved %1").arg(path), tr("Job not saved"));
+        reportOutcome(saveJob(path), tr("Saved %1").arg(jobFilePath(path)), tr("Job not saved"));
     }
 }
 
 void MainWindow::openProgramDialog() {
-    if (!confirmDiscardEdits()) {
+    if (!readyForNewJob()) {
         return;
     }
     const QString path = QFileDialog::getOpenFileName(
@@ -593,27 +825,34 @@ void MainWindow::openProgramDialog() {
 void MainWindow::openMachineDialog() {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open machine"), QString(),
                                                       tr("Machine files (*.json)"));
-    if (!path.isEmpty()) {
-        setMachineFile(path);
-        rerunWithMachine();
+    if (path.isEmpty()) {
+        return;
     }
+    if (const Status set = setMachineFile(path); !set) {
+        reportOutcome(set, QString(), tr("Machine file not loaded"));
+        return;
+    }
+    rerunWithMachine();
 }
 
 // The job on screen again with one input changed, so the change is seen at once rather than
 // with the next program. Layer edits are kept.
-void MainWindow::rerunWith(job::JobSpec spec, const QString& message) {
+void MainWindow::rerunWith(job::JobSpec spec, const QString& message,
+                           std::optional<RadiusChoice> radius) {
     if (!m_result || m_thread != nullptr) {
         return;
     }
     statusBar()->showMessage(message);
-    startJob(std::move(spec), false);
+    startJob(std::move(spec), false, radius);
 }
 
+// The radius typed is this program's: it goes into the spec of the program on screen only.
 void MainWindow::rerunWithToolRadius() {
     job::JobSpec spec = m_spec;
     spec.toolRadius =
         m_toolRadius->value() > 0.0 ? std::optional(m_toolRadius->value()) : std::nullopt;
-    rerunWith(std::move(spec), tr("Re-running with the new tool radius…"));
+    rerunWith(std::move(spec), tr("Re-running with the new tool radius…"),
+              RadiusChoice{spec.toolRadius ? RadiusOrigin::Typed : RadiusOrigin::Program, false});
 }
 
 void MainWindow::rerunWithMachine() {
@@ -636,7 +875,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
     }
     const QString path = urls.front().toLocalFile();
     if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
-        if (confirmDiscardEdits()) {
+        if (readyForNewJob()) {
             runProgram(path);
         }
         return;
@@ -644,9 +883,11 @@ void MainWindow::dropEvent(QDropEvent* event) {
     QFile file(path);
     const bool isJob = file.open(QIODevice::ReadOnly) && file.read(4096).contains("bladeaxis-job");
     if (isJob) {
-        reportOutcome(openJob(path), jobOpenedMessage(path), tr("Job not opened"));
-    } else {
-        setMachineFile(path);
+        if (readyForNewJob()) {
+            reportOutcome(openJob(path), jobOpenedMessage(path), tr("Job not opened"));
+        }
+    } else if (const Status set = setMachineFile(path); !set) {
+        reportOutcome(set, QString(), tr("Machine file not loaded"));
     }
 }
 
@@ -688,7 +929,7 @@ void MainWindow::rebuildRecentMenu() {
     const QStringList recent = QSettings().value(kRecentKey).toStringList();
     for (const QString& path : recent) {
         m_recentMenu->addAction(path, this, [this, path] {
-            if (confirmDiscardEdits()) {
+            if (readyForNewJob()) {
                 runProgram(path);
             }
         });

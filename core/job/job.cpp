@@ -12,6 +12,7 @@
 #include "core/cad/blade_surface.h"
 #include "core/geometry/angles.h"
 #include "core/job/demo_program.h"
+#include "core/job/tool_radius.h"
 #include "core/kinematics/kinematics.h"
 #include "core/kinematics/machine_file.h"
 #include "core/kinematics/travel_limits.h"
@@ -248,24 +249,21 @@ Result<cad::CadShape> bladeShape(const JobSpec& spec, const kinematics::MachineM
 // Why the file gave no radius, in the words of its format.
 std::string radiusSourceHint(io::ProgramFormat format) {
     return format == io::ProgramFormat::Gcode
-               ? "the G-code states no ball end in a header comment such as (T1 D=8. CR=4.)"
+               ? "the G-code states no ball end in a header comment such as (T1 D=8. CR=4.) or "
+                 "(ball end R=4 mm)"
                : "the CL data has no CUTTER or TLDATA statement";
 }
 
 // The radius the job uses: the command line's (or job file's) over the file's, with a warning
-// when they differ, since the channel and every ball centre depend on it.
+// when they differ (toolRadiusConflict, the rule the window applies too), since the channel and
+// every ball centre depend on it.
 std::optional<double> jobToolRadius(const JobSpec& spec, std::optional<double> generated,
-                                    const toolpath::Toolpath& path,
+                                    const io::LoadedProgram& program,
                                     std::vector<std::string>& warnings) {
-    if (spec.toolRadius && path.toolRadius &&
-        std::abs(*spec.toolRadius - *path.toolRadius) > 1e-9 * std::max(1.0, *path.toolRadius)) {
-        warnings.push_back(path.sourceFile + ": the ball radius " +
-                           formatShortest(*spec.toolRadius) + " mm given replaces the file's " +
-                           formatShortest(*path.toolRadius) +
-                           " mm (CUTTER/TLDATA): every ball centre is computed with " +
-                           formatShortest(*spec.toolRadius) + " mm");
+    if (std::string conflict = toolRadiusConflict(spec.toolRadius, program); !conflict.empty()) {
+        warnings.push_back(std::move(conflict));
     }
-    return spec.toolRadius ? spec.toolRadius : generated ? generated : path.toolRadius;
+    return spec.toolRadius ? spec.toolRadius : generated ? generated : program.path().toolRadius;
 }
 
 // The largest ball a blade finishing job plausibly uses, with a wide margin: a radius beyond it
@@ -658,8 +656,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .warnings = {},
                      .seconds = 0.0};
     result.warnings = result.program.path().warnings;
-    result.toolRadius =
-        jobToolRadius(spec, generatedRadius, result.program.path(), result.warnings);
+    result.toolRadius = jobToolRadius(spec, generatedRadius, result.program, result.warnings);
     if (auto status = checkToolRadius(result.toolRadius, result.program.path()); !status) {
         return std::unexpected(status.error());
     }

@@ -215,7 +215,8 @@ class MainWindowTest final : public QObject {
         QCOMPARE(m_window->selectedLayer(), target);
         const std::string gui = BLADEAXIS_GUI_OUTPUT_DIR "/gui_edited.nc";
         const std::string batch = BLADEAXIS_GUI_OUTPUT_DIR "/batch_edited.nc";
-        const QString jobFile = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/edited_job.json");
+        const QString jobFile =
+            QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/edited_job.bladeaxis.json");
         std::remove(batch.c_str());
         QVERIFY(m_window->exportProgram(QString::fromStdString(gui)).has_value());
         QVERIFY(m_window->saveJob(jobFile).has_value());
@@ -555,7 +556,15 @@ class MainWindowTest final : public QObject {
         const auto shownBefore = m_window->view3d()->scene().passRecords;
         const std::filesystem::path programBefore = m_window->spec().program;
         QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
-        m_window->runProgram(QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/programs/turbine_2rev.cls"));
+        // A long program, so that the job still runs when it is cancelled.
+        const std::string longProgram = BLADEAXIS_GUI_OUTPUT_DIR "/long_for_cancel.nc";
+        std::ostringstream out, err;
+        QCOMPARE(
+            bladeaxis::app::runBatchCommandLine({"bladeaxis", "--batch", "--generate", longProgram,
+                                                 "--revolutions", "30", "--pitch", "0.5", "-q"},
+                                                out, err),
+            0);
+        m_window->runProgram(QString::fromStdString(longProgram));
         // Cancel once the new program is on screen (the 3D view shows it as soon as it reads).
         QTRY_VERIFY_WITH_TIMEOUT(m_window->view3d()->scene().passRecords != shownBefore ||
                                      !m_window->isRunning(),
@@ -591,21 +600,19 @@ class MainWindowTest final : public QObject {
             }
         });
         timer->start(50);
-        m_window->toolRadiusBox()->setValue(0.0); // "from file": the program states none
-        m_window->setBladeCad(QString());         // the blade CAD of an earlier job
         QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
-        m_window->runProgram(QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/programs/naca_weak_3rev.nc"));
+        m_window->runProgram(
+            QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/programs/naca_weak_3rev_no_radius.nc"));
         QTRY_VERIFY_WITH_TIMEOUT(finished.size() >= 2, kJobTimeoutMs);
         timer->deleteLater();
         QCOMPARE(finished.at(0).front().toBool(), false); // the run that found no radius
         QCOMPARE(finished.at(1).front().toBool(), true);  // and the run with the one given
         QVERIFY(m_window->result()->toolRadius.has_value());
         QCOMPARE(*m_window->result()->toolRadius, 8.0);
-        QVERIFY(m_window->windowTitle().startsWith("naca_weak_3rev.nc"));
+        QVERIFY(m_window->windowTitle().startsWith("naca_weak_3rev_no_radius.nc"));
     }
 
     void aHeidenhainProgramIsExportedAsAHeidenhainProgram() {
-        m_window->toolRadiusBox()->setValue(0.0); // from the program's TOOL DEF
         QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
         m_window->runProgram(QStringLiteral(BLADEAXIS_TEST_DATA_DIR "/dialects/naca_weak_3rev.h"));
         QVERIFY(finished.wait(kJobTimeoutMs));

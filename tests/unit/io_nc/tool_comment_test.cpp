@@ -21,6 +21,18 @@ TEST(ToolComment, ReadsDiameterAndCornerRadiusOfTheAutodeskPostConvention) {
     EXPECT_TRUE(toolInComment("; t2 d = 6 cr = 3").has_value()) << "spaces and case";
 }
 
+TEST(ToolComment, ReadsTheBallRadiusOfBladeAxisGeneratorsHeader) {
+    const auto tool = toolInComment("(ball end R=8 mm, B=5 deg, lead 15 deg, 3 revolutions)");
+    ASSERT_TRUE(tool.has_value());
+    EXPECT_DOUBLE_EQ(tool->cornerRadius, 8.0);
+    EXPECT_DOUBLE_EQ(tool->diameter, 16.0);
+    EXPECT_TRUE(tool->isBallEnd());
+    const auto sinumerik = toolInComment("; ball end R=2.5 mm, B=5 deg");
+    ASSERT_TRUE(sinumerik.has_value());
+    EXPECT_DOUBLE_EQ(sinumerik->cornerRadius, 2.5);
+    EXPECT_FALSE(toolInComment("(ball end R=0 mm)").has_value());
+}
+
 TEST(ToolComment, ABullNoseIsNotABallEnd) {
     const auto tool = toolInComment("(T3 D=10. CR=1. - bull nose end mill)");
     ASSERT_TRUE(tool.has_value());
@@ -29,7 +41,8 @@ TEST(ToolComment, ABullNoseIsNotABallEnd) {
 
 TEST(ToolComment, OffsetNumbersLoneRadiiAndOtherKeysAreNotATool) {
     EXPECT_FALSE(toolInComment("(T1 | 8MM BALL | H1 | D1 | TOOL DIA. - 8.)").has_value());
-    EXPECT_FALSE(toolInComment("(ball end R=8 mm, B=5 deg)").has_value());
+    EXPECT_FALSE(toolInComment("(fillet R=8 mm, B=5 deg)").has_value()) << "R= without a ball";
+    EXPECT_FALSE(toolInComment("(ball end R8 mm)").has_value()) << "a lone R8";
     EXPECT_FALSE(toolInComment("(ID=8. CR=4.)").has_value()) << "ID is not D";
     EXPECT_FALSE(toolInComment("G1 X1 D=8 CR=4").has_value()) << "not in a comment";
     EXPECT_FALSE(toolInComment("(D=abc CR=4.)").has_value());
@@ -49,6 +62,22 @@ TEST(ToolComment, TheHeadersBallRadiusBecomesTheProgramsToolRadius) {
         parseText("(T1 D=8. CR=4. - ball end mill)\nG21 G90 G94\n" + kMoves);
     ASSERT_TRUE(program.path.toolRadius.has_value());
     EXPECT_DOUBLE_EQ(*program.path.toolRadius, 4.0);
+}
+
+TEST(ToolComment, TheGeneratorsHeaderRadiusBecomesTheProgramsToolRadius) {
+    const GcodeProgram program = parseText(
+        "(BladeAxis synthetic blade program [naca-weak, seed 3])\n(ball end R=8 mm, B=5 deg, "
+        "lead 15 deg, 3 revolutions)\nG21 G90 G94\n" +
+        kMoves);
+    ASSERT_TRUE(program.path.toolRadius.has_value());
+    EXPECT_DOUBLE_EQ(*program.path.toolRadius, 8.0);
+    const GcodeProgram agreeing =
+        parseText("(T1 D=16. CR=8.)\n(ball end R=8 mm)\nG21 G90 G94\n" + kMoves);
+    ASSERT_TRUE(agreeing.path.toolRadius.has_value());
+    EXPECT_DOUBLE_EQ(*agreeing.path.toolRadius, 8.0);
+    const GcodeProgram disagreeing =
+        parseText("(T1 D=8. CR=4.)\n(ball end R=8 mm)\nG21 G90 G94\n" + kMoves);
+    EXPECT_FALSE(disagreeing.path.toolRadius.has_value()) << "two radii: neither is used";
 }
 
 TEST(ToolComment, AnInchProgramsRadiusIsConvertedToMillimetres) {

@@ -117,6 +117,36 @@ TEST(BatchCli, AToolRadiusThatReplacesTheFilesCutterIsReported) {
         << result.err;
 }
 
+TEST(BatchCli, AGeneratedProgramIsRescheduledWithTheRadiusItsHeaderStates) {
+    const auto folder = std::filesystem::temp_directory_path() / "bladeaxis_cli_generated_radius";
+    std::filesystem::create_directories(folder);
+    const auto program = folder / "blade.nc";
+    ASSERT_EQ(run({"--batch", "--generate", program.string(), "--revolutions", "2", "--tool-radius",
+                   "3", "-q"})
+                  .code,
+              kExitOk);
+    ASSERT_NE(readTextFile(program).value_or("").find("(ball end R=3 mm"), std::string::npos);
+    const auto output = folder / "blade_rescheduled.nc";
+    std::filesystem::remove(output);
+    const CliRun result = run({"--batch", program.string(), "-o", output.string(), "--json"});
+    ASSERT_EQ(result.code, kExitOk) << result.err;
+    EXPECT_NE(result.out.find("\"tool_radius_mm\": 3"), std::string::npos);
+    EXPECT_EQ(result.err.find("replaces the file's"), std::string::npos) << result.err;
+    EXPECT_TRUE(std::filesystem::exists(output));
+}
+
+TEST(BatchCli, AToolRadiusThatDisagreesWithTheGeneratorsHeaderIsReportedWithBothRadii) {
+    const std::string program =
+        std::string(BLADEAXIS_TEST_DATA_DIR) + "/programs/naca_weak_3rev.nc";
+    const CliRun result = run({"--batch", program, "--analyse-only", "--tool-radius", "4"});
+    EXPECT_EQ(result.code, kExitOk) << result.err;
+    EXPECT_NE(result.err.find("the ball radius 4 mm given replaces the file's 8 mm (header "
+                              "comment)"),
+              std::string::npos)
+        << result.err;
+    EXPECT_NE(result.err.find("still states 8 mm"), std::string::npos) << result.err;
+}
+
 TEST(BatchCli, AnOutputNamingTheMachineFileIsRefusedAndTheFileKept) {
     const auto folder = std::filesystem::temp_directory_path() / "bladeaxis_cli_machine_output";
     std::filesystem::create_directories(folder);

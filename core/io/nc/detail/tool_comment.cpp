@@ -56,10 +56,22 @@ std::optional<ToolComment> toolInComment(std::string_view line) {
     }
     const auto diameter = valueOf(upper, "D");
     const auto cornerRadius = valueOf(upper, "CR");
-    if (!diameter || !cornerRadius || !(*diameter > 0.0) || *cornerRadius < 0.0) {
+    if (diameter && cornerRadius) {
+        if (!(*diameter > 0.0) || *cornerRadius < 0.0) {
+            return std::nullopt;
+        }
+        return ToolComment{*diameter, *cornerRadius};
+    }
+    // BladeAxis's generator: "(ball end R=8 mm, ...)". "R=" alone is too common a key (a
+    // Sinumerik R parameter, a fillet in a note) to be read without the word "ball".
+    if (upper.find("BALL") == std::string::npos) {
         return std::nullopt;
     }
-    return ToolComment{*diameter, *cornerRadius};
+    const auto radius = valueOf(upper, "R");
+    if (!radius || !(*radius > 0.0)) {
+        return std::nullopt;
+    }
+    return ToolComment{2.0 * *radius, *radius};
 }
 
 } // namespace bladeaxis::io::nc::detail

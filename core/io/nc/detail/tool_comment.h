@@ -2,8 +2,10 @@
 // The tool a post-processor states in a comment, so that a program that says which cutter it was
 // posted for needs no --tool-radius. Read: the Autodesk post convention (Fusion, HSM, Inventor
 // CAM, used by many Fanuc, Haas and Heidenhain posts): "(T1 D=8. CR=4. TAPER=0deg - ball end
-// mill)", D the diameter and CR the corner radius, in the program's linear unit. Only both
-// together count; "D1" (an offset number) or a lone "R4" are never read as a tool.
+// mill)", D the diameter and CR the corner radius, in the program's linear unit; and the header
+// BladeAxis's own generator writes, "(ball end R=8 mm, B=5 deg, ...)": R= in a comment that says
+// "ball". D and CR only count together; "D1" (an offset number), a lone "R4" or an "R=" in a
+// comment that does not name a ball are never read as a tool.
 
 #include <optional>
 #include <string_view>

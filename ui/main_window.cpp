@@ -522,9 +522,11 @@ void MainWindow::onJobFinished() {
     showBladeCad();
     updateExportActions();
     updateTitle();
+    const QString cycleTimes = QString::fromStdString(job::cycleTimeStatus(*m_result));
     statusBar()->showMessage(
-        reapply ? tr("Layer edits applied in %1 s").arg(m_result->seconds, 0, 'f', 2)
-                : tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2));
+        (reapply ? tr("Layer edits applied in %1 s").arg(m_result->seconds, 0, 'f', 2)
+                 : tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2)) +
+        tr("; cycle time: %1").arg(cycleTimes));
     for (const std::string& warning : m_result->warnings) {
         statusBar()->setToolTip(QString::fromStdString(warning));
     }

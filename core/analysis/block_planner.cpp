@@ -20,9 +20,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kTinyDisplacement = 1e-7;
 // The share of a block's acceleration its planner uses while it may blend with a neighbour.
 constexpr double kParabolicBlendShare = 0.5;
-// Below this cosine of the corner's half angle the tolerance does not cap the blend (LinuxCNC's
-// TP_MIN_ARC_ANGLE: the two moves are as good as tangent).
-const double kMinCornerCosine = std::cos(units::kPi / 2.0 - 1e-3);
 
 bool limited(double limit) {
     return std::isfinite(limit) && limit > 0.0;
@@ -33,7 +30,6 @@ struct PlannedBlock {
     double length = 0.0;       // mm (degrees for a purely rotary move)
     double velocity = 0.0;     // the most the block may reach
     double acceleration = 0.0; // the planner's share of the block's acceleration limit
-    Vec3 direction = Vec3::Zero();
     bool rotary = false;
 
     double peakVelocity() const { return std::min(velocity, std::sqrt(acceleration * length)); }
@@ -80,9 +76,6 @@ PlannedBlock planBlock(const kinematics::MachineAxes& from, const kinematics::Ma
     const double rotary = std::hypot(moves[3].displacement, moves[4].displacement);
     block.rotary = rotary > 0.0;
     block.length = linear.norm() > 0.0 ? linear.norm() : rotary;
-    if (linear.norm() > 0.0) {
-        block.direction = Vec3(to.x - from.x, to.y - from.y, to.z - from.z).normalized();
-    }
     double velocityTime = 0.0, accelerationTime = 0.0;
     for (const AxisMove& move : moves) {
         velocityTime = std::max(velocityTime, move.displacement / move.velocity);
@@ -100,22 +93,13 @@ PlannedBlock planBlock(const kinematics::MachineAxes& from, const kinematics::Ma
 
 // The velocity below which the planner starts the next block while this one decelerates
 // (LinuxCNC's tpComputeBlendVelocity): the blend may take at most half of either block.
-double blendVelocity(const PlannedBlock& current, const PlannedBlock& next, double tolerance) {
+double blendVelocity(const PlannedBlock& current, const PlannedBlock& next) {
     const double reachable = current.peakVelocity(), reachableNext = next.peakVelocity();
     const double longestBlend = std::min(current.length / reachable, next.length / reachableNext);
     const double blendAtFullAcceleration =
         std::max(reachable / current.acceleration, reachableNext / next.acceleration);
-    double velocity =
-        std::min(reachable, std::min(longestBlend, blendAtFullAcceleration) * current.acceleration);
-    if (tolerance > 0.0 && current.direction.norm() > 0.0 && next.direction.norm() > 0.0) {
-        const double dot = std::clamp(current.direction.dot(next.direction), -1.0, 1.0);
-        const double cornerCosine = std::cos(std::acos(-dot) / 2.0);
-        if (cornerCosine > kMinCornerCosine) {
-            velocity = std::min(velocity,
-                                2.0 * std::sqrt(current.acceleration * tolerance / cornerCosine));
-        }
-    }
-    return velocity;
+    return std::min(reachable,
+                    std::min(longestBlend, blendAtFullAcceleration) * current.acceleration);
 }
 
 bool plannable(const PlannedBlock& block) {
@@ -127,8 +111,7 @@ bool plannable(const PlannedBlock& block) {
 
 BlockPlannerTime blockByBlockTime(std::span<const kinematics::MachineAxes> axes,
                                   std::span<const double> feeds,
-                                  const kinematics::MachineModel& machine,
-                                  const BlockPlannerOptions& options) {
+                                  const kinematics::MachineModel& machine) {
     BlockPlannerTime result;
     if (axes.size() < 2 || feeds.size() != axes.size()) {
         return result;
@@ -153,8 +136,7 @@ BlockPlannerTime blockByBlockTime(std::span<const kinematics::MachineAxes> axes,
             result.time += block.duration();
             if (i + 1 < blocks.size() && std::isfinite(blocks[i + 1].acceleration)) {
                 const double overlap =
-                    std::min(blendVelocity(block, blocks[i + 1], options.blendTolerance),
-                             block.peakVelocity()) /
+                    std::min(blendVelocity(block, blocks[i + 1]), block.peakVelocity()) /
                     block.acceleration;
                 result.time -= overlap;
             }

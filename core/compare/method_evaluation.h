@@ -4,6 +4,7 @@
 // axis analysis at the same constant feed, the same machine limits.
 
 #include "core/analysis/axis_profile.h"
+#include "core/analysis/block_planner.h"
 #include "core/analysis/constant_feed.h"
 #include "core/base/error.h"
 #include "core/compare/channel_metrics.h"
@@ -45,6 +46,8 @@ struct MethodResult {
     std::optional<double> t2;     // s, time-optimal under the machine limits, when computed
     std::string t2Failure;        // why t2 is missing, when it is
     std::optional<double> t2Jerk; // s, T2 with the jerk heuristic (spec §8.3 "T2+J")
+    // The block-by-block controller model (LinuxCNC 2.9's planner on rotary blocks).
+    analysis::BlockPlannerTime blockByBlock;
     ChannelMetrics channel;
     std::vector<LimitSweepPoint> sweep; // empty unless requested
     double computeSeconds = 0.0;        // wall time of the method itself (not of its evaluation)

@@ -173,8 +173,7 @@ analysis::BlockPlannerTime blockByBlockOf(std::span<const kinematics::MachineAxe
     for (std::size_t i = 0; i < pass.size(); ++i) {
         feeds[i] = pass[i].feed;
     }
-    return analysis::blockByBlockTime(axes, feeds, machine,
-                                      {.blendTolerance = machine.controller.blendTolerance});
+    return analysis::blockByBlockTime(axes, feeds, machine);
 }
 
 Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
@@ -222,6 +221,10 @@ Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel
     result.original = std::move(*profile);
     result.constantFeed = analysis::constantFeedTime(result.original, result.machine, false);
     result.blockByBlock = blockByBlockOf(*result.axes, pass, result.machine);
+    if (result.toolRadius) {
+        result.originalInterpolation = kinematics::interpolationDeviation(
+            *result.axes, result.machine.chain, *result.toolRadius);
+    }
     result.originalLostMotion = analysis::lostMotion(result.original, result.machine);
     return {};
 }
@@ -648,6 +651,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .constantFeed = {},
                      .timeOptimal = std::nullopt,
                      .blockByBlock = {},
+                     .originalInterpolation = std::nullopt,
                      .layerMotionBefore = {},
                      .originalLostMotion = {},
                      .rescheduled = std::nullopt,

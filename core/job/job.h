@@ -11,6 +11,7 @@
 #include "core/job/cad_check.h"
 #include "core/job/program_check.h"
 #include "core/job/reschedule.h"
+#include "core/kinematics/interpolation_deviation.h"
 #include "core/kinematics/machine_model.h"
 #include "core/report/schedule_report.h"
 #include "core/scheduling/schedule_parameters.h"
@@ -93,6 +94,9 @@ struct JobResult {
     std::optional<analysis::ConvergedTime> timeOptimal;
     // The block-by-block controller model (LinuxCNC 2.9's planner on rotary blocks).
     analysis::BlockPlannerTime blockByBlock;
+    // How far the ball centre strays from the chord between the input's points as its axes
+    // interpolate (none without a tool radius).
+    std::optional<kinematics::InterpolationDeviation> originalInterpolation;
     // Per layer of the re-scheduled pass, the input's motion (report::layerAxisMotion), taken as
     // soon as the layers were known; empty without a re-scheduling.
     std::vector<report::LayerAxisMotion> layerMotionBefore;
@@ -157,5 +161,9 @@ std::string reportJsonText(const JobResult& result, const JobSpec* spec = nullpt
 
 // The readable summary the batch front end prints.
 std::string formatSummary(const JobResult& result);
+
+// One line for a status bar: the machine's cycle-time model first, each time with its model's
+// name ("block-by-block 108.2 -> 95.0 s (this machine), look-ahead T2 40.0 -> 27.2 s").
+std::string cycleTimeStatus(const JobResult& result);
 
 } // namespace bladeaxis::job

@@ -155,8 +155,7 @@ nlohmann::json cycleTimesJson(const analysis::ConstantFeedTime& constantFeed,
         {"time_s", blockByBlock.time},
         {"model", "each block planned alone from rest to rest, parabolic blends, no blending "
                   "across rotary blocks, F read as the XYZ speed (LinuxCNC 2.9's planner)"},
-        {"blocks", blockByBlock.blocks},
-        {"blend_tolerance_mm", machine.controller.blendTolerance}};
+        {"blocks", blockByBlock.blocks}};
     return json;
 }
 
@@ -195,6 +194,7 @@ nlohmann::json rescheduledJson(const JobResult& result, const JobSpec* spec) {
     }
     json["checks"] = {
         {"max_centre_deviation_mm", outcome.maxCentreDeviationMm},
+        {"max_interpolation_deviation_mm", outcome.interpolation.maxMm},
         {"max_reconstruction_error_mm", outcome.schedule.check.maxCentreErrorMm},
         {"min_channel_clearance_deg", units::radToDeg(outcome.minChannelClearanceRad)},
         {"layers_kept_original", outcome.layersKeptOriginal},
@@ -316,6 +316,9 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
     }
     json["original"]["cycle_times"] = cycleTimesJson(result.constantFeed, result.timeOptimal,
                                                      result.blockByBlock, result.machine);
+    if (result.originalInterpolation) {
+        json["original"]["max_interpolation_deviation_mm"] = result.originalInterpolation->maxMm;
+    }
     if (result.rescheduled) {
         json["rescheduled"] = rescheduledJson(result, spec);
     }
@@ -596,6 +599,28 @@ std::string cycleTimeSummary(const JobResult& result, const RescheduleOutcome& o
     return text;
 }
 
+std::string cycleTimeStatus(const JobResult& result) {
+    const RescheduleOutcome* outcome = result.rescheduled ? &*result.rescheduled : nullptr;
+    const auto times = [](double before, std::optional<double> after) {
+        return formatFixed(before, 1) + (after ? " -> " + formatFixed(*after, 1) : "") + " s";
+    };
+    std::string blocks =
+        "block-by-block " +
+        times(result.blockByBlock.time,
+              outcome ? std::optional<double>(outcome->blockByBlock.time) : std::nullopt);
+    std::string lookAhead;
+    if (result.timeOptimal) {
+        lookAhead = "look-ahead T2 " + times(result.timeOptimal->time,
+                                             outcome && outcome->timeOptimal
+                                                 ? std::optional<double>(outcome->timeOptimal->time)
+                                                 : std::nullopt);
+    }
+    if (result.machine.controller.planner == kinematics::Planner::BlockByBlock) {
+        return blocks + " (this machine)" + (lookAhead.empty() ? "" : ", " + lookAhead);
+    }
+    return lookAhead.empty() ? blocks : lookAhead + " (this machine), " + blocks;
+}
+
 std::string rescheduledSummary(const JobResult& result) {
     using kinematics::AxisId;
     const RescheduleOutcome& outcome = *result.rescheduled;
@@ -623,6 +648,13 @@ std::string rescheduledSummary(const JobResult& result) {
     text += "checks       ball centres kept within " +
             formatFixed(outcome.maxCentreDeviationMm * 1000.0, 2) + " um after re-reading; " +
             clearanceText(outcome) + "\n";
+    text += "between      ball centres within " +
+            formatFixed(outcome.interpolation.maxMm * 1000.0, 1) + " um of the chords";
+    if (result.originalInterpolation) {
+        text +=
+            " (original " + formatFixed(result.originalInterpolation->maxMm * 1000.0, 1) + " um)";
+    }
+    text += " as a control without tool-centre-point interpolation moves the axes\n";
     return text;
 }
 

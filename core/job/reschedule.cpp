@@ -229,6 +229,7 @@ struct NewMotion {
     analysis::ConstantFeedTime constantFeed;
     std::optional<analysis::ConvergedTime> timeOptimal;
     analysis::BlockPlannerTime blockByBlock;
+    kinematics::InterpolationDeviation interpolation;
 };
 
 // The block-by-block model's time of the new program: its machine axes and the feed of each
@@ -240,8 +241,7 @@ analysis::BlockPlannerTime blockByBlockOf(std::span<const kinematics::MachineAxe
     for (std::size_t i = 0; i < feeds.size(); ++i) {
         feeds[i] = samples.feed(i);
     }
-    return analysis::blockByBlockTime(axes, feeds, machine,
-                                      {.blendTolerance = machine.controller.blendTolerance});
+    return analysis::blockByBlockTime(axes, feeds, machine);
 }
 
 // With input.releaseNewToolAxes the schedule's new tool axes are freed once the analysis has
@@ -263,12 +263,14 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutco
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
-    NewMotion motion{std::move(*profile), {}, std::nullopt, {}};
+    NewMotion motion{std::move(*profile), {}, std::nullopt, {}, {}};
     motion.constantFeed = analysis::constantFeedTime(motion.profile, *input.machine, false);
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
     motion.blockByBlock = blockByBlockOf(*outcome.axes, samples, *input.machine);
+    motion.interpolation =
+        kinematics::interpolationDeviation(*outcome.axes, input.machine->chain, outcome.toolRadius);
     motion.timeOptimal =
         analysis::convergedTimeOptimalOrNone(motion.profile, *input.machine, &cancel);
     if (auto status = checkCancelled(cancel); !status) { // T2 cut short: none, not a figure
@@ -528,6 +530,7 @@ Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelT
         outcome.constantFeed = motion->constantFeed;
         outcome.timeOptimal = motion->timeOptimal;
         outcome.blockByBlock = motion->blockByBlock;
+        outcome.interpolation = motion->interpolation;
     }
     outcome.stageSeconds.analysis = clock.lap(); // what the analysis added after the check
     return outcome;

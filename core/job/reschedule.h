@@ -12,6 +12,7 @@
 #include "core/base/progress.h"
 #include "core/io/nc/gcode_writer.h"
 #include "core/io/program.h"
+#include "core/kinematics/interpolation_deviation.h"
 #include "core/scheduling/schedule.h"
 
 #include <functional>
@@ -43,6 +44,7 @@ struct RescheduleOutcome {
     analysis::ConstantFeedTime constantFeed;
     std::optional<analysis::ConvergedTime> timeOptimal; // T2 of the new motion, grid-converged
     analysis::BlockPlannerTime blockByBlock;            // the block-by-block model's time
+    kinematics::InterpolationDeviation interpolation;   // between the new program's points
     // The whole rewritten program; empty when it was staged (stagedProgram).
     std::string programText;
     // The rewritten program written to its output file while the job ran, not yet in place

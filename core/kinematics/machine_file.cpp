@@ -280,8 +280,8 @@ Status MachineReader::numberRules(const Json& root, NumberRules& rules) const {
     return {};
 }
 
-// "controller": {"planner": "look-ahead" | "block-by-block", "blend_tolerance_mm": 0.01}: which
-// cycle-time model the report leads with, and the G64 P tolerance of the block-by-block one.
+// "controller": {"planner": "look-ahead" | "block-by-block"}: which cycle-time model the report
+// marks as the machine's.
 Status MachineReader::controller(const Json& root, ControllerModel& controller) const {
     if (!root.contains("controller")) {
         return {};
@@ -293,9 +293,8 @@ Status MachineReader::controller(const Json& root, ControllerModel& controller) 
                         value.dump());
     }
     for (const auto& [key, unused] : value.items()) {
-        if (key != "planner" && key != "blend_tolerance_mm") {
-            return fail("controller." + key, key,
-                        "unknown key: expected \"planner\" or \"blend_tolerance_mm\"");
+        if (key != "planner") {
+            return fail("controller." + key, key, "unknown key: expected \"planner\"");
         }
     }
     if (value.contains("planner")) {
@@ -307,16 +306,6 @@ Status MachineReader::controller(const Json& root, ControllerModel& controller) 
                         "expected \"look-ahead\" or \"block-by-block\", got " + planner.dump());
         }
         controller.planner = *named;
-    }
-    if (value.contains("blend_tolerance_mm")) {
-        const Json& tolerance = value.at("blend_tolerance_mm");
-        if (!tolerance.is_number() || !(tolerance.get<double>() >= 0.0) ||
-            !std::isfinite(tolerance.get<double>())) {
-            return fail("controller.blend_tolerance_mm", "blend_tolerance_mm",
-                        "expected a finite number of mm >= 0 (0: plain G64), got " +
-                            tolerance.dump());
-        }
-        controller.blendTolerance = tolerance.get<double>();
     }
     return {};
 }

@@ -126,7 +126,6 @@ std::optional<Planner> plannerNamed(std::string_view name);
 
 struct ControllerModel {
     Planner planner = Planner::LookAhead;
-    double blendTolerance = 0.01; // mm, the control's G64 P for the block-by-block model
 };
 
 // Which rotary axis the table turns about, and whether the head tilts.

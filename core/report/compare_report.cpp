@@ -294,7 +294,9 @@ void addTimeColumns(const compare::Comparison& comparison, std::vector<ColumnDef
                            return numberCell(static_cast<double>(count), std::to_string(count));
                        }});
     columns.push_back(
-        {{"t1_s", "T1 (s)", "constant-feed machining time under the machine limits", Better::Lower},
+        {{"t1_s", "T1 constant feed (s)",
+          "the whole pass at the one feed its slowest point allows (a bound, not a controller)",
+          Better::Lower},
          [](const MethodResult& method) {
              return numberCell(method.t1.time, formatFixed(method.t1.time, 2));
          }});
@@ -305,7 +307,10 @@ void addTimeColumns(const compare::Comparison& comparison, std::vector<ColumnDef
                            return numberCell(gain, percent(gain));
                        }});
     columns.push_back(
-        {{"t2_s", "T2 (s)", "time-optimal machining time under the machine limits", Better::Lower},
+        {{"t2_s", "T2 look-ahead (s)",
+          "a look-ahead control, time-optimal under the axes' velocity and acceleration limits "
+          "(TOPP-RA, grid-converged)",
+          Better::Lower},
          [](const MethodResult& method) {
              return method.t2 ? numberCell(*method.t2, formatFixed(*method.t2, 2)) : emptyCell();
          }});
@@ -318,6 +323,14 @@ void addTimeColumns(const compare::Comparison& comparison, std::vector<ColumnDef
                            const double gain = compare::reduction(*original.t2, *method.t2);
                            return numberCell(gain, percent(gain));
                        }});
+    columns.push_back(
+        {{"block_by_block_s", "Block-by-block (s)",
+          "each block planned alone, no blending across rotary blocks (LinuxCNC 2.9's planner)",
+          Better::Lower},
+         [](const MethodResult& method) {
+             const double time = method.blockByBlock.time;
+             return time > 0.0 ? numberCell(time, formatFixed(time, 2)) : emptyCell();
+         }});
     columns.push_back(
         {{"t2_speedup_vs_original", "T2 efficiency vs original",
           "original / T2 - 1, the other reading of the paper's efficiency gain", Better::Higher},

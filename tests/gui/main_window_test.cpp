@@ -82,6 +82,16 @@ class MainWindowTest final : public QObject {
         QCOMPARE(static_cast<std::size_t>(m_window->layerTable()->rowCount()), layerCount);
     }
 
+    void theStatusBarNamesTheControllerModelOfEachCycleTime() {
+        const QString message = m_window->statusBar()->currentMessage();
+        QVERIFY2(message.contains(QStringLiteral("block-by-block")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("look-ahead T2")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("(this machine)")), qPrintable(message));
+        const auto& result = *m_window->result();
+        const QString before = QString::number(result.blockByBlock.time, 'f', 1);
+        QVERIFY2(message.contains(before), qPrintable(message));
+    }
+
     void aboutBoxShowsTheVersionAndRevisionOfVersionOutput() {
         auto* about = m_window->findChild<QAction*>(QStringLiteral("aboutAction"));
         QVERIFY(about != nullptr);

@@ -56,7 +56,7 @@ TEST(BlockPlanner, ShortEqualBlocksTakeSqrtTwoLOverAEach) {
     const double step = 0.2;
     const auto axes = straightRun(n, step);
     const std::vector<double> feeds(axes.size(), 50.0);
-    const BlockPlannerTime result = blockByBlockTime(axes, feeds, machine, {.blendTolerance = 0.0});
+    const BlockPlannerTime result = blockByBlockTime(axes, feeds, machine);
     const double perBlock = std::sqrt(2.0 * step / 3000.0);
     EXPECT_NEAR(result.time, static_cast<double>(n + 1) * perBlock, 1e-9);
 }
@@ -68,7 +68,7 @@ TEST(BlockPlanner, TheRotaryStepSetsTheTimeWhenItNeedsLongerThanTheLinearMove) {
     const std::size_t n = 100;
     const auto axes = straightRun(n, 0.2, 1.0);
     const std::vector<double> feeds(axes.size(), 50.0);
-    const BlockPlannerTime result = blockByBlockTime(axes, feeds, machine, {.blendTolerance = 0.0});
+    const BlockPlannerTime result = blockByBlockTime(axes, feeds, machine);
     EXPECT_NEAR(result.time, static_cast<double>(n + 1) * std::sqrt(2.0 / 1800.0), 1e-9);
     EXPECT_EQ(result.rotaryBlocks, n);
 }

@@ -238,20 +238,17 @@ TEST(MachineFileController, WithoutTheKeyTheControlIsALookAheadOne) {
     const auto machine = parseMachineJson(machineWithController(""), "m.json");
     ASSERT_TRUE(machine.has_value()) << machine.error().toString();
     EXPECT_EQ(machine->controller.planner, Planner::LookAhead);
-    EXPECT_DOUBLE_EQ(machine->controller.blendTolerance, 0.01);
 }
 
-TEST(MachineFileController, NamesTheBlockByBlockPlannerAndItsBlendTolerance) {
-    const auto machine = parseMachineJson(
-        machineWithController(R"({"planner": "block-by-block", "blend_tolerance_mm": 0})"),
-        "m.json");
+TEST(MachineFileController, NamesTheBlockByBlockPlanner) {
+    const auto machine =
+        parseMachineJson(machineWithController(R"({"planner": "block-by-block"})"), "m.json");
     ASSERT_TRUE(machine.has_value()) << machine.error().toString();
     EXPECT_EQ(machine->controller.planner, Planner::BlockByBlock);
-    EXPECT_DOUBLE_EQ(machine->controller.blendTolerance, 0.0);
     EXPECT_STREQ(plannerName(machine->controller.planner), "block-by-block");
 }
 
-TEST(MachineFileController, RefusesAnUnknownPlannerATypoAndANegativeTolerance) {
+TEST(MachineFileController, RefusesAnUnknownPlannerAndATypo) {
     const auto unknown =
         parseMachineJson(machineWithController(R"({"planner": "magic"})"), "m.json");
     ASSERT_FALSE(unknown.has_value());
@@ -260,10 +257,6 @@ TEST(MachineFileController, RefusesAnUnknownPlannerATypoAndANegativeTolerance) {
         parseMachineJson(machineWithController(R"({"planer": "look-ahead"})"), "m.json");
     ASSERT_FALSE(typo.has_value());
     EXPECT_NE(typo.error().toString().find("unknown key"), std::string::npos);
-    const auto negative =
-        parseMachineJson(machineWithController(R"({"blend_tolerance_mm": -1})"), "m.json");
-    ASSERT_FALSE(negative.has_value());
-    EXPECT_NE(negative.error().toString().find("blend_tolerance_mm"), std::string::npos);
 }
 
 } // namespace

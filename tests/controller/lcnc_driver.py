@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The headless DISPLAY program of the controller check (run by the `linuxcnc` script).
 
 LinuxCNC starts it as `lcnc_driver.py -ini INI` once HAL, motion, task and io are up. It takes
@@ -87,7 +87,8 @@ def run():
     send(command.mode, linuxcnc.MODE_AUTO)
     send(command.program_open, PROGRAM)
     started = time.monotonic()
-    send(command.auto, linuxcnc.AUTO_RUN, 0)
+    # Not send(): task acknowledges AUTO_RUN only when the program has ended.
+    command.auto(linuxcnc.AUTO_RUN, 0)
     # Done when the interpreter is idle again with nothing queued; an error also ends the run
     # (task aborts). A short program can be over before the first poll, so the start is not
     # awaited; the first half second only lets task take the run command.

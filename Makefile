@@ -4,7 +4,7 @@
 BUILD_DIR := build/dev
 JOBS ?= $(shell nproc)
 
-.PHONY: deps configure build demo test test-asan bench fuzz package format format-check clean
+.PHONY: deps configure build demo test test-asan bench fuzz package format format-check clean controller-check
 
 deps:
 	bash packaging/install-deps.sh
@@ -27,6 +27,14 @@ test-asan: deps
 	cmake --preset asan >/dev/null
 	cmake --build --preset asan -j $(JOBS)
 	ctest --preset asan -j $(JOBS)
+
+# The demo and a generated family (original and re-scheduled) through LinuxCNC's real-time
+# trajectory planner, headless: out/controller/summary.csv and one JSON of block times per
+# program (tests/controller/controller_check.sh). Real time: several minutes.
+controller-check: build
+	mkdir -p out/controller
+	bash tests/controller/make_programs.sh $(BUILD_DIR)/app/bladeaxis out/controller > out/controller/programs.txt
+	bash tests/controller/controller_check.sh resources/machines/blade_ab.json out/controller $$(cat out/controller/programs.txt)
 
 bench: build
 	bash tests/bench/run_benchmarks.sh $(BUILD_DIR)

@@ -15,6 +15,8 @@ packages=(
     dpkg-dev desktop-file-utils groff-base man-db
     # the Python module and the report.json schema check
     pybind11-dev python3-dev python3-numpy python3-pytest python3-jsonschema
+    # LinuxCNC as a client of the written programs: rs274 in make test, the planner in make controller-check
+    linuxcnc-uspace
 )
 
 missing=()

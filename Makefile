@@ -35,6 +35,7 @@ controller-check: build
 	mkdir -p out/controller
 	bash tests/controller/make_programs.sh $(BUILD_DIR)/app/bladeaxis out/controller > out/controller/programs.txt
 	bash tests/controller/controller_check.sh resources/machines/blade_ab.json out/controller $$(cat out/controller/programs.txt)
+	python3 tests/controller/results_table.py out/controller
 
 bench: build
 	bash tests/bench/run_benchmarks.sh $(BUILD_DIR)

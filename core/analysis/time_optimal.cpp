@@ -1,6 +1,7 @@
 #include "core/analysis/time_optimal.h"
 
 #include "core/analysis/constant_feed.h"
+#include "core/analysis/detail/path_grid.h"
 
 #include <algorithm>
 #include <array>
@@ -40,12 +41,11 @@ class Problem {
   public:
     // Stages are computed when needed, not stored: a million-sample path would otherwise hold
     // ~90 MB of derivatives that the profile already has.
-    // Each interval of the profile's samples is cut into `subdivisions` equal steps: the grid
-    // on which the constraints hold (a grid point per sample misses a spike one block wide).
+    // The constraints hold at the points of `grid` (a grid point per sample misses a spike one
+    // block wide).
     Problem(const AxisProfile& profile, const kinematics::MachineModel& machine,
-            std::size_t subdivisions)
-        : m_profile(profile), m_s(profile.pathParameter),
-          m_subdivisions(std::max<std::size_t>(subdivisions, 1)) {
+            const detail::PathGrid& grid)
+        : m_profile(profile), m_s(profile.pathParameter), m_grid(grid) {
         for (std::size_t j = 0; j < kAxes; ++j) {
             const auto& limits = machine.limit(kinematics::kAllAxes[j]);
             m_velocity[j] = limits.velocity;
@@ -68,9 +68,8 @@ class Problem {
     Stage stage(std::size_t i) const {
         Stage stage;
         const double feed = m_profile.feed;
-        const std::size_t sample = i / m_subdivisions;
-        const double fraction =
-            static_cast<double>(i % m_subdivisions) / static_cast<double>(m_subdivisions);
+        const std::size_t sample = m_grid.interval(i);
+        const double fraction = m_grid.fraction(i);
         for (std::size_t j = 0; j < kAxes; ++j) {
             const AxisSeries& series = m_profile.axes[j];
             const auto [first, second] = derivativesWithin(series, sample, fraction);
@@ -91,16 +90,10 @@ class Problem {
         return stage;
     }
 
-    std::size_t size() const { return (m_s.size() - 1) * m_subdivisions + 1; }
-    double step(std::size_t i) const {
-        const std::size_t sample = i / m_subdivisions;
-        return (m_s[sample + 1] - m_s[sample]) / static_cast<double>(m_subdivisions);
-    }
+    std::size_t size() const { return m_grid.size(); }
+    double step(std::size_t i) const { return m_grid.step(i); }
     // The path parameter of grid point i, mm.
-    double pathAt(std::size_t i) const {
-        const std::size_t sample = std::min(i / m_subdivisions, m_s.size() - 1);
-        return m_s[sample] + static_cast<double>(i - sample * m_subdivisions) * step(i);
-    }
+    double pathAt(std::size_t i) const { return m_grid.pathAt(i); }
 
     // The lines bounding u at stage i for a state x, with x_{i+1} in [0, next].
     Bounds bounds(std::size_t i, const Stage& stage, double next) const {
@@ -190,7 +183,7 @@ class Problem {
 
     const AxisProfile& m_profile;
     const std::vector<double>& m_s;
-    std::size_t m_subdivisions = 1;
+    const detail::PathGrid& m_grid;
     std::vector<double> m_stateScale;
     std::array<double, kAxes> m_velocity{}, m_acceleration{}, m_jerk{};
 };
@@ -322,6 +315,30 @@ bool lowerWhereJerky(Problem& problem, const TimeOptimalTime& result) {
     return lowered;
 }
 
+// Each interval's share of T2 on a solved grid, for the refinement's choice of blocks. An
+// interval crossed from rest to rest (both speeds 0) counts as 0: it has no share to compare.
+std::vector<double> intervalTimes(const TimeOptimalTime& solved, const std::vector<double>& s,
+                                  std::span<const std::uint32_t> steps) {
+    const detail::PathGrid grid(s, steps);
+    std::vector<double> times(steps.size(), 0.0);
+    for (std::size_t g = 0; g + 1 < grid.size(); ++g) {
+        const double speeds = solved.pathSpeed[g] + solved.pathSpeed[g + 1];
+        if (speeds > 0.0) {
+            times[grid.interval(g)] += 2.0 * grid.step(g) / speeds;
+        }
+    }
+    return times;
+}
+
+Status validateSteps(const AxisProfile& profile, std::span<const std::uint32_t> steps) {
+    if (!steps.empty() && (steps.size() + 1 != profile.pathParameter.size() ||
+                           std::ranges::any_of(steps, [](std::uint32_t k) { return k == 0; }))) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "the time-optimal grid needs one step count >= 1 per interval");
+    }
+    return {};
+}
+
 } // namespace
 
 Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
@@ -330,7 +347,15 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
     if (auto status = validate(profile); !status) {
         return std::unexpected(status.error());
     }
-    Problem problem(profile, machine, options.subdivisions);
+    if (auto status = validateSteps(profile, options.stepsPerInterval); !status) {
+        return std::unexpected(status.error());
+    }
+    const detail::PathGrid grid =
+        options.stepsPerInterval.empty()
+            ? detail::PathGrid(profile.pathParameter,
+                               std::max<std::size_t>(options.subdivisions, 1))
+            : detail::PathGrid(profile.pathParameter, options.stepsPerInterval);
+    Problem problem(profile, machine, grid);
     auto result = parameterise(problem, options.cancel);
     if (!result) {
         return result;
@@ -365,18 +390,38 @@ Result<ConvergedTime> convergedTimeOptimal(const AxisProfile& profile,
     if (!first) {
         return std::unexpected(first.error());
     }
+    const std::size_t intervals = profile.pathParameter.size() - 1;
+    std::vector<std::uint32_t> steps(intervals, 1);
+    std::vector<double> before = intervalTimes(*first, profile.pathParameter, steps);
+    std::vector<std::uint8_t> refining(intervals, 1);
     ConvergedTime result{.time = first->time};
-    while (!result.converged && result.subdivisions * 2 <= options.maxSubdivisions) {
-        const std::size_t subdivisions = result.subdivisions * 2;
+    while (result.subdivisions * 2 <= options.maxSubdivisions) {
+        for (std::size_t i = 0; i < intervals; ++i) {
+            steps[i] *= refining[i] ? 2 : 1;
+        }
         auto finer = timeOptimalTime(profile, machine,
-                                     {.cancel = options.cancel, .subdivisions = subdivisions});
+                                     {.cancel = options.cancel, .stepsPerInterval = steps});
         if (!finer) {
             return std::unexpected(finer.error());
         }
         result.lastChange = std::abs(finer->time - result.time) / std::max(finer->time, 1e-300);
-        result.converged = result.lastChange < options.tolerance;
         result.time = finer->time;
-        result.subdivisions = subdivisions;
+        result.subdivisions = *std::max_element(steps.begin(), steps.end());
+        result.converged = result.lastChange < options.tolerance;
+        if (result.converged) {
+            break;
+        }
+        const std::vector<double> after = intervalTimes(*finer, profile.pathParameter, steps);
+        bool any = false;
+        for (std::size_t i = 0; i < intervals; ++i) {
+            refining[i] =
+                refining[i] && std::abs(after[i] - before[i]) > options.tolerance * after[i];
+            any = any || refining[i];
+        }
+        if (!any) {
+            break;
+        }
+        before = after;
     }
     return result;
 }

@@ -599,28 +599,6 @@ std::string cycleTimeSummary(const JobResult& result, const RescheduleOutcome& o
     return text;
 }
 
-std::string cycleTimeStatus(const JobResult& result) {
-    const RescheduleOutcome* outcome = result.rescheduled ? &*result.rescheduled : nullptr;
-    const auto times = [](double before, std::optional<double> after) {
-        return formatFixed(before, 1) + (after ? " -> " + formatFixed(*after, 1) : "") + " s";
-    };
-    std::string blocks =
-        "block-by-block " +
-        times(result.blockByBlock.time,
-              outcome ? std::optional<double>(outcome->blockByBlock.time) : std::nullopt);
-    std::string lookAhead;
-    if (result.timeOptimal) {
-        lookAhead = "look-ahead T2 " + times(result.timeOptimal->time,
-                                             outcome && outcome->timeOptimal
-                                                 ? std::optional<double>(outcome->timeOptimal->time)
-                                                 : std::nullopt);
-    }
-    if (result.machine.controller.planner == kinematics::Planner::BlockByBlock) {
-        return blocks + " (this machine)" + (lookAhead.empty() ? "" : ", " + lookAhead);
-    }
-    return lookAhead.empty() ? blocks : lookAhead + " (this machine), " + blocks;
-}
-
 std::string rescheduledSummary(const JobResult& result) {
     using kinematics::AxisId;
     const RescheduleOutcome& outcome = *result.rescheduled;
@@ -697,6 +675,28 @@ std::string comparisonSummary(const compare::Comparison& comparison,
 }
 
 } // namespace
+
+std::string cycleTimeStatus(const JobResult& result) {
+    const RescheduleOutcome* outcome = result.rescheduled ? &*result.rescheduled : nullptr;
+    const auto times = [](double before, std::optional<double> after) {
+        return formatFixed(before, 1) + (after ? " -> " + formatFixed(*after, 1) : "") + " s";
+    };
+    std::string blocks =
+        "block-by-block " +
+        times(result.blockByBlock.time,
+              outcome ? std::optional<double>(outcome->blockByBlock.time) : std::nullopt);
+    std::string lookAhead;
+    if (result.timeOptimal) {
+        lookAhead = "look-ahead T2 " + times(result.timeOptimal->time,
+                                             outcome && outcome->timeOptimal
+                                                 ? std::optional<double>(outcome->timeOptimal->time)
+                                                 : std::nullopt);
+    }
+    if (result.machine.controller.planner == kinematics::Planner::BlockByBlock) {
+        return blocks + " (this machine)" + (lookAhead.empty() ? "" : ", " + lookAhead);
+    }
+    return lookAhead.empty() ? blocks : lookAhead + " (this machine), " + blocks;
+}
 
 std::string formatSummary(const JobResult& result) {
     const analysis::AxisProfile& profile = result.original;

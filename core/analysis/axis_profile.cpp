@@ -305,7 +305,7 @@ const char* nameOf(DerivativeMethod method) {
             return name;
         }
     }
-    return "spline";
+    return "filter";
 }
 
 std::optional<DerivativeMethod> derivativeMethodNamed(std::string_view name) {

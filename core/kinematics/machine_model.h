@@ -10,6 +10,7 @@
 #include "core/geometry/vec.h"
 
 #include <array>
+#include <optional>
 #include <string>
 
 namespace bladeaxis::kinematics {

@@ -130,6 +130,7 @@ struct AxisProfile {
     std::size_t mergedShortChords = 0; // samples off the spline's knots (DerivativeMethod::Spline)
     FeedReference feedReference = FeedReference::Tip; // which arc length s is (report it)
     DerivativeMethod method = DerivativeMethod::Filtered;
+    double filterSeconds = 0.008; // the smoothing time of DerivativeMethod::Filtered, s
 
     const AxisSeries& axis(kinematics::AxisId id) const { return axes[static_cast<int>(id)]; }
 

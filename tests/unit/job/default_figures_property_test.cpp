@@ -77,8 +77,8 @@ const std::vector<Program>& programs() {
     static const std::vector<Program> all = [] {
         std::vector<Program> out;
         const auto count = static_cast<int>(environmentNumber("BLADEAXIS_FIGURES_FAMILY", 6));
-        auto family = blade::syntheticFamily(environmentNumber("BLADEAXIS_PROPERTY_SEED", 2022),
-                                             count);
+        auto family =
+            blade::syntheticFamily(environmentNumber("BLADEAXIS_PROPERTY_SEED", 2022), count);
         if (!family) {
             ADD_FAILURE() << family.error().message;
             return out;
@@ -294,17 +294,17 @@ TEST(DefaultFiguresHold, MicroChordsMoveNoFigureAndTheFiguresAgreeWithAnIndepend
         for (const Split& split : kSplits) {
             const std::string tag = "_" + std::to_string(static_cast<int>(split.chordMm * 1e3)) +
                                     "um_every_" + std::to_string(split.every);
-            auto chorded = runOn(program,
-                                 withMicroChords(program.path, program.toolRadius, split.chordMm,
-                                                 split.every),
-                                 tag);
+            auto chorded = runOn(
+                program,
+                withMicroChords(program.path, program.toolRadius, split.chordMm, split.every), tag);
             ASSERT_TRUE(chorded) << tag << ": " << chorded.error().toString();
             ASSERT_TRUE(chorded->rescheduled.has_value());
             ASSERT_GT(chorded->pass.count, clean->pass.count + clean->pass.count / 6) << tag;
             expectHold(program.name + tag + " original", originalFigures,
                        figuresOf(chorded->original, chorded->constantFeed));
-            expectHold(program.name + tag + " re-scheduled", newFigures,
-                       figuresOf(chorded->rescheduled->profile, chorded->rescheduled->constantFeed));
+            expectHold(
+                program.name + tag + " re-scheduled", newFigures,
+                figuresOf(chorded->rescheduled->profile, chorded->rescheduled->constantFeed));
         }
     }
 }

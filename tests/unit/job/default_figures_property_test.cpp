@@ -300,6 +300,12 @@ TEST(DefaultFiguresHold, MicroChordsMoveNoFigureAndTheFiguresAgreeWithAnIndepend
             ASSERT_TRUE(chorded) << tag << ": " << chorded.error().toString();
             ASSERT_TRUE(chorded->rescheduled.has_value());
             ASSERT_GT(chorded->pass.count, clean->pass.count + clean->pass.count / 6) << tag;
+            std::printf(
+                "[ measure  ] %s%s: A peak acc. %.0f -> %.0f deg/s^2, T1 %.1f -> %.1f s\n",
+                program.name.c_str(), tag.c_str(),
+                units::radToDeg(chorded->original.axis(AxisId::A).peakAcceleration),
+                units::radToDeg(chorded->rescheduled->profile.axis(AxisId::A).peakAcceleration),
+                chorded->constantFeed.time, chorded->rescheduled->constantFeed.time);
             expectHold(program.name + tag + " original", originalFigures,
                        figuresOf(chorded->original, chorded->constantFeed));
             expectHold(

@@ -70,8 +70,8 @@ void addLayer(const scheduling::LayerResult& layer, const std::vector<double>& t
     }
     // theta'' on the samples the optimum is solved on (optimal::problemSamples): without a
     // post's micrometre chords, whose second differences (1/h^2) would measure the split, and
-    // where the optimum interpolates linearly (kinks at its kept samples). Measured on every
-    // sample, the optimal-lp schedule read 1.6 times the engine's peak on its own objective.
+    // where the optimum interpolates linearly (kinks at its kept samples), so that no feasible
+    // schedule can measure better than the optimum on the optimum's own objective.
     std::vector<double> s, thetaOnGrid;
     for (std::size_t j : optimal::problemSamples(layer.s)) {
         s.push_back(layer.s[j]);

@@ -96,56 +96,15 @@ struct MergeRange {
     std::size_t kept = 0;       // distinct samples in the range
     std::size_t lastKept = 0;   // the last kept input up to the range's end
     std::size_t firstFault = 0; // the first faulty input (faultOf) in the range, or end
-    std::size_t splits = 0;     // short chords' split points merged (not duplicates)
 };
-
-// Spec §1.2 [A]: a post that splits a move writes a chord of a few micrometres on the straight
-// line between two CL points. Kept as a sample, it changes what the scheduling sees of the path
-// where nothing about the path changed: the layer bounds (the curvature states' sample
-// positions), the samples the leads snap to (§3.4) and the key points, so that the re-scheduled
-// program moved its axis peaks by up to 20 % when 1 um chords were inserted every third point
-// (DefaultFiguresHold). A centre closer than a tenth of the input's median chord to the last kept
-// one (analysis::MotionKnotTolerances::shortChordFraction) and within 5 um of the straight move
-// from it to the next centre is therefore merged like a duplicate; its new angle is interpolated
-// between the samples around it (schedule.cpp). A short chord off the straight move (a corner)
-// stays a sample.
-constexpr double kShortChordFraction = 0.1;
-constexpr double kSplitOffLineMm = 5e-3;
-
-bool onStraightMove(const Vec3& from, const Vec3& point, const Vec3& to) {
-    const Vec3 move = to - from;
-    const double length = move.norm();
-    if (!(length > 0.0)) {
-        return false;
-    }
-    return (point - from).cross(move).norm() / length <= kSplitOffLineMm &&
-           (point - from).dot(move) >= 0.0 && (to - point).dot(move) >= 0.0;
-}
-
-// kShortChordFraction of the median chord between consecutive inputs (0 for fewer than 3).
-template <class Centres>
-double shortChordOf(const Centres& centres, unsigned threads) {
-    const std::size_t n = centres.size();
-    if (n < 3) {
-        return 0.0;
-    }
-    const std::size_t chords = n - 1;
-    return kShortChordFraction * std::sqrt(nthSmallest(chords, chords / 2, threads,
-                                                       [&centres](std::size_t i) {
-                                                           const Vec3& a = centres[i];
-                                                           const Vec3& b = centres[i + 1];
-                                                           return (b - a).squaredNorm();
-                                                       }));
-}
 
 // Merges the inputs of [begin, end); `lastKept` is the last kept input before `begin` (unused
 // for begin = 0: the first input is always kept). arcLength holds the steps until summed. The
 // inputs are validated in the same pass (a faulty input fails the whole path, whatever it merged).
 template <class Centres, class Axes>
 MergeRange mergeRange(Centres centres, Axes axes, PlanePath& path, std::size_t begin,
-                      std::size_t end, std::size_t lastKept, double shortChordMm) {
-    MergeRange range{begin, end, 0, lastKept, end, 0};
-    const std::size_t n = centres.size();
+                      std::size_t end, std::size_t lastKept) {
+    MergeRange range{begin, end, 0, lastKept, end};
     for (std::size_t i = begin; i < end; ++i) {
         // References into an array (a copy here went through the stack and cost a third of
         // the plane path's time); a centre read through a function is a temporary kept alive.
@@ -156,11 +115,6 @@ MergeRange mergeRange(Centres centres, Axes axes, PlanePath& path, std::size_t b
         const double step = i == 0 ? 0.0 : (centre - centres[range.lastKept]).norm();
         if (i > 0 && step < tol::kDuplicatePointMm) {
             continue; // merged into the last kept sample
-        }
-        if (i > 0 && step < shortChordMm && i + 1 < n &&
-            onStraightMove(centres[range.lastKept], centre, centres[i + 1])) {
-            ++range.splits;
-            continue; // a split point: merged into the last kept sample
         }
         const std::size_t sample = begin + range.kept;
         path.firstInput[sample] = static_cast<std::uint32_t>(i);
@@ -174,18 +128,15 @@ MergeRange mergeRange(Centres centres, Axes axes, PlanePath& path, std::size_t b
 template <class Centres, class Axes>
 std::vector<MergeRange> mergeRanges(const Centres& centres, const Axes& axes, PlanePath& path,
                                     unsigned threads) {
-    const double shortChord = shortChordOf(centres, threads);
     std::vector<MergeRange> ranges(rangeCount(centres.size(), threads));
     forEachRangeOf(centres.size(), ranges.size(),
                    [&](std::size_t r, std::size_t begin, std::size_t end) {
-                       ranges[r] =
-                           mergeRange(centres, axes, path, begin, end, begin - 1, shortChord);
+                       ranges[r] = mergeRange(centres, axes, path, begin, end, begin - 1);
                    });
     for (std::size_t r = 1; r < ranges.size(); ++r) {
         const std::size_t lastKept = ranges[r - 1].lastKept;
         if (lastKept != ranges[r].begin - 1) {
-            ranges[r] = mergeRange(centres, axes, path, ranges[r].begin, ranges[r].end, lastKept,
-                                   shortChord);
+            ranges[r] = mergeRange(centres, axes, path, ranges[r].begin, ranges[r].end, lastKept);
         }
     }
     return ranges;
@@ -225,10 +176,6 @@ std::size_t mergeDuplicates(const Centres& centres, const Axes& axes, PlanePath&
         }
     }
     const std::size_t distinct = compactRanges(ranges, path);
-    path.splitPointsMerged = 0;
-    for (const MergeRange& range : ranges) {
-        path.splitPointsMerged += range.splits;
-    }
     path.firstInput.resize(distinct);
     path.arcLength.resize(distinct);
     double s = 0.0;
@@ -345,10 +292,9 @@ Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, u
                          "the toolpath needs at least 3 distinct centres, it has " +
                              std::to_string(path.firstInput.size()));
     }
-    if (path.firstInput.size() + path.splitPointsMerged < centres.size()) {
-        path.warnings.push_back(
-            std::to_string(centres.size() - path.firstInput.size() - path.splitPointsMerged) +
-            " duplicate centre(s) merged");
+    if (path.firstInput.size() < centres.size()) {
+        path.warnings.push_back(std::to_string(centres.size() - path.firstInput.size()) +
+                                " duplicate centre(s) merged");
     }
     addSignAndTilt(path, centres, axes, threads);
     if (std::cos(path.tiltB0) < 1e-6) {

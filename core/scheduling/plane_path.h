@@ -25,8 +25,6 @@ struct PlanePath {
     DefaultInitVector<std::uint32_t> firstInput;
     double tiltB0 = 0.0;   // asin(V . a), rad
     int traversalSign = 1; // w . a (+1: feed turns about +x), spec §1.3
-    // Inputs merged as a short chord's split point on the straight move (not duplicates).
-    std::size_t splitPointsMerged = 0;
     std::vector<std::string> warnings;
 };
 

@@ -297,46 +297,6 @@ ReconstructionCheck checkReconstructionOf(const InputAccess& access,
                                threads);
 }
 
-// A merged input (a duplicate, or a short chord's split point on the straight move, spec §1.2)
-// has no layer sample: absoluteAngles gives it the angle of the sample it is merged into. Its
-// new angle is instead interpolated linearly in its centre's distance between the layer samples
-// around it, so that the schedule turns through a split point as through the move it splits: a
-// copied angle would step the rotary axis by theta' times the chord there, which an axis
-// resampled every millisecond catches or misses depending on where its grid falls.
-void interpolateMergedAngles(std::span<const LayerResult> layers, const InputAccess& access,
-                             std::vector<double>& angles, unsigned threads) {
-    const auto centre = [&](std::size_t i) {
-        return access.readAgain ? access.input.centreAgain(i) : access.input.centres[i];
-    };
-    forEachItem(layers.size(), angles.size(), threads, [&](std::size_t k) {
-        const std::vector<std::size_t>& inputs = layers[k].inputIndex;
-        for (std::size_t j = 0; j + 1 < inputs.size(); ++j) {
-            const std::size_t from = inputs[j], to = inputs[j + 1];
-            if (to - from < 2) {
-                continue;
-            }
-            const Vec3 first = centre(from), last = centre(to);
-            double along = 0.0;
-            Vec3 previous = first;
-            std::vector<double> distance;
-            for (std::size_t i = from + 1; i < to; ++i) {
-                const Vec3 here = centre(i);
-                along += (here - previous).norm();
-                distance.push_back(along);
-                previous = here;
-            }
-            const double total = along + (last - previous).norm();
-            if (!(total > 0.0)) {
-                continue;
-            }
-            const double a = angles[from], b = angles[to];
-            for (std::size_t i = from + 1; i < to; ++i) {
-                angles[i] = a + distance[i - from - 1] / total * (b - a);
-            }
-        }
-    });
-}
-
 // result.tiltB0 and result.traversalSign are the plane path's.
 void assemble(ScheduleResult& result, const InputAccess& input, std::vector<LayerOutcome>& outcomes,
               unsigned threads) {
@@ -354,9 +314,8 @@ void assemble(ScheduleResult& result, const InputAccess& input, std::vector<Laye
     result.originalReversals =
         countReversals(absoluteAngles(result.layers, n, Orientation::Original, threads),
                        tol::kReversalStepRad, threads);
-    std::vector<double> thetaAbsolute =
+    const std::vector<double> thetaAbsolute =
         absoluteAngles(result.layers, n, Orientation::Rescheduled, threads);
-    interpolateMergedAngles(result.layers, input, thetaAbsolute, threads);
     ReconstructedPath rebuilt =
         reconstructAxes(thetaAbsolute, result.tiltB0, result.traversalSign, threads);
     for (const KeptAxis& original : kept) {

@@ -54,7 +54,7 @@ Result<std::optional<double>> readNumber(const NumberOption& option) {
 }
 
 struct RawOptions {
-    std::string program, machine, out, generate, feedReference = "tip", derivatives = "spline";
+    std::string program, machine, out, generate, feedReference = "tip", derivatives = "filter";
     std::string profile = "naca-high-camber", format = "gcode";
     std::string angleUnit, columns, dialect;
     NumberOption toolRadius{"", "--tool-radius", true};
@@ -196,11 +196,13 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
         ->check(CLI::IsMember({"tip", "centre"}));
     cli.add_option(
            "--derivatives", raw.derivatives,
-           "spline (default: micrometre chords merged, docs/figures.md), raw-spline (through "
-           "every point), fd (finite differences) or filter (controller-like, --filter-ms)")
+           "filter (default: a controller that smooths each axis over --filter-ms at the "
+           "programmed feed, docs/figures.md), spline (through the points that carry motion), "
+           "raw-spline (through every point) or fd (finite differences)")
         ->check(CLI::IsMember({"spline", "raw-spline", "fd", "filter"}));
     cli.add_option("--filter-ms", raw.filterMs.text,
-                   "Moving-average window of --derivatives filter, ms (default 8)");
+                   "Smoothing time of --derivatives filter (the default figures' controller), ms "
+                   "(default 8)");
     cli.add_flag("--json", raw.json, "Print report.json to standard output instead of the summary");
     cli.add_flag("-q,--quiet", raw.quiet, "Print nothing but errors");
     cli.add_flag("--progress", raw.progress,
@@ -427,7 +429,7 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
                                              : analysis::FeedReference::Tip;
     // CLI11 has checked the name against the same list.
     options.job.analysis.method = analysis::derivativeMethodNamed(raw.derivatives)
-                                      .value_or(analysis::DerivativeMethod::Spline);
+                                      .value_or(analysis::DerivativeMethod::Filtered);
     if (!raw.dialect.empty()) { // CLI11 has checked the name
         options.job.read.dialect = raw.dialect == "sinumerik"    ? io::NcDialect::Sinumerik
                                    : raw.dialect == "heidenhain" ? io::NcDialect::Heidenhain

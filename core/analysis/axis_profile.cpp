@@ -194,6 +194,7 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
     profile.feed = *feed;
     profile.feedReference = options.feedReference;
     profile.method = options.method;
+    profile.filterSeconds = options.filterSeconds;
     buildPathParameter(path, options, profile);
     if (path.posesRead) {
         path.posesRead();
@@ -305,7 +306,7 @@ const char* nameOf(DerivativeMethod method) {
             return name;
         }
     }
-    return "spline";
+    return "filter";
 }
 
 std::optional<DerivativeMethod> derivativeMethodNamed(std::string_view name) {

@@ -29,12 +29,19 @@ constexpr double kMinPathStepMm = 1e-9;
 // or the cutter centre Q = O + R V (then A'' = theta''(S) F^2 exactly for re-scheduled paths).
 enum class FeedReference { Tip, Centre };
 
-// Spline (the default, docs/figures.md): not-a-knot cubic spline of each axis over s through
-// the samples that carry motion (motionKnots: micrometre chords on a straight move are merged),
-// evaluated at every sample. RawSpline: the same spline through every sample (spec §8.1's
+// Filtered (the default, docs/figures.md): the figures of a controller that runs the program at
+// the one constant feed of the analysis and smooths each axis over filterSeconds (8 ms): the
+// axis resampled every millisecond at that feed, smoothed by a centred moving average applied
+// twice (a triangular FIR, spec §8.1), differentiated by central differences; peaks and 99.9th
+// percentiles over the millisecond series. It does not depend on how the post spaced the points
+// (a micrometre chord on the straight move changes no figure) nor on block-to-block ripple
+// shorter than the window, which such a controller does not follow.
+// Spline: a not-a-knot cubic spline of each axis over s through the samples that carry motion
+// (motionKnots: micrometre chords on a straight move are merged), evaluated at every sample: the
+// motion of a controller that follows every block exactly; block-to-block ripple of the tip's
+// chords shows in it in full. RawSpline: the same spline through every sample (spec §8.1's
 // headline method; a 2 um chord moves its peaks by tens of per cent). FiniteDifference: raw
-// 3-point differences (they mostly measure the CL discretisation). Filtered: the controller-like
-// filter of spec §8.1 (1 ms resampling, moving average applied twice).
+// 3-point differences (they mostly measure the CL discretisation).
 enum class DerivativeMethod { Spline, RawSpline, FiniteDifference, Filtered };
 
 // The names of the methods on the command line (--derivatives) and in job files: "spline",
@@ -44,7 +51,7 @@ std::optional<DerivativeMethod> derivativeMethodNamed(std::string_view name);
 
 struct AxisProfileOptions {
     FeedReference feedReference = FeedReference::Tip;
-    DerivativeMethod method = DerivativeMethod::Spline;
+    DerivativeMethod method = DerivativeMethod::Filtered;
     // mm/s. 0 = the programmed feed. The analysis is always at ONE constant feed (peak ratios
     // between methods are then F-free, spec §8.1); when the programmed feeds vary, that feed is
     // the median of the positive programmed feeds (rapids and unknown feeds, stored as 0, are
@@ -58,8 +65,10 @@ struct AxisProfileOptions {
     // the same F but a new tip chord has a new tip speed). Tip feed reference only; the reported
     // path length stays the tip's.
     bool blockTimes = false;
-    double toolRadius = 0.0;      // mm, required (> 0) for FeedReference::Centre
-    double filterSeconds = 0.008; // moving-average window of DerivativeMethod::Filtered
+    double toolRadius = 0.0; // mm, required (> 0) for FeedReference::Centre
+    // Moving-average window of DerivativeMethod::Filtered, s: the smoothing time of the
+    // controller the default figures assume.
+    double filterSeconds = 0.008;
     // Threads for the axes' derivatives (0: every core). The figures are the same on any number;
     // a job gives the analysis of its input every core, the one beside its rewrite one.
     unsigned threads = 1;
@@ -120,7 +129,8 @@ struct AxisProfile {
     std::size_t mergedDuplicates = 0;  // samples dropped because ds < kMinPathStepMm
     std::size_t mergedShortChords = 0; // samples off the spline's knots (DerivativeMethod::Spline)
     FeedReference feedReference = FeedReference::Tip; // which arc length s is (report it)
-    DerivativeMethod method = DerivativeMethod::Spline;
+    DerivativeMethod method = DerivativeMethod::Filtered;
+    double filterSeconds = 0.008; // the smoothing time of DerivativeMethod::Filtered, s
 
     const AxisSeries& axis(kinematics::AxisId id) const { return axes[static_cast<int>(id)]; }
 

@@ -7,13 +7,15 @@ namespace bladeaxis::analysis {
 
 namespace {
 
-std::vector<double> resample(std::span<const double> s, std::span<const double> position,
-                             double feed, double step) {
+// The axis at every `step` seconds of the pass at constant feed, linear between the samples, into
+// `out`.
+void resample(std::span<const double> s, std::span<const double> position, double feed, double step,
+              std::vector<double>& out) {
     const double duration = (s.back() - s.front()) / feed;
     // Samples inside the path only: one past its end would repeat the end value and read as
     // the axis stopping there.
     const auto count = static_cast<std::size_t>(std::floor(duration / step)) + 1;
-    std::vector<double> out(count);
+    out.resize(count);
     std::size_t segment = 0;
     for (std::size_t k = 0; k < count; ++k) {
         const double at = std::min(s.front() + static_cast<double>(k) * step * feed, s.back());
@@ -24,7 +26,6 @@ std::vector<double> resample(std::span<const double> s, std::span<const double> 
         const double f = h > 0.0 ? std::clamp((at - s[segment]) / h, 0.0, 1.0) : 0.0;
         out[k] = position[segment] + f * (position[segment + 1] - position[segment]);
     }
-    return out;
 }
 
 // Central differences on a uniform grid; the end values repeat their neighbours.
@@ -43,13 +44,15 @@ std::vector<double> derivative(const std::vector<double>& values, double step) {
 
 } // namespace
 
-std::vector<double> movingAverage(std::span<const double> values, std::size_t width) {
+void movingAverageInto(std::span<const double> values, std::size_t width,
+                       std::vector<double>& out) {
     const std::size_t n = values.size();
+    out.resize(n);
     if (n == 0 || width <= 1) {
-        return {values.begin(), values.end()};
+        std::copy(values.begin(), values.end(), out.begin());
+        return;
     }
     const std::size_t half = width / 2;
-    std::vector<double> prefix(n + 2 * half + 1, 0.0);
     // Outside the series the axis continues its motion: the padding is the point reflection
     // of the series about its end sample (2 q_0 - q_j), which any straight motion extends
     // exactly. Holding the end value instead would stop an axis that is moving at the start of
@@ -66,15 +69,39 @@ std::vector<double> movingAverage(std::span<const double> values, std::size_t wi
         }
         return values[k - half];
     };
-    for (std::size_t k = 0; k < n + 2 * half; ++k) {
-        prefix[k + 1] = prefix[k] + padded(k);
+    const std::size_t span = 2 * half + 1;
+    const auto windowSum = [&](std::size_t first) {
+        double sum = 0.0;
+        for (std::size_t j = first; j < first + span; ++j) {
+            sum += padded(j);
+        }
+        return sum;
+    };
+    // A running sum, summed afresh every kFreshSum outputs so that its rounding cannot drift:
+    // a prefix sum over a long pass reached 1e9 for a turning A and lost 1e-7 rad to rounding,
+    // about 1 deg/s^2 once differentiated twice at 1 ms.
+    constexpr std::size_t kFreshSum = 256;
+    double sum = windowSum(0);
+    out[0] = sum / static_cast<double>(span);
+    for (std::size_t k = 1; k < n; ++k) {
+        sum = k % kFreshSum == 0 ? windowSum(k) : sum + (padded(k + span - 1) - padded(k - 1));
+        out[k] = sum / static_cast<double>(span);
     }
-    std::vector<double> out(n);
-    const double span = static_cast<double>(2 * half + 1);
-    for (std::size_t k = 0; k < n; ++k) {
-        out[k] = (prefix[k + 2 * half + 1] - prefix[k]) / span;
-    }
+}
+
+std::vector<double> movingAverage(std::span<const double> values, std::size_t width) {
+    std::vector<double> out;
+    movingAverageInto(values, width, out);
     return out;
+}
+
+void smoothedPositions(std::span<const double> s, std::span<const double> position, double feed,
+                       double windowSeconds, double step, std::vector<double>& out,
+                       std::vector<double>& scratch) {
+    const auto width = static_cast<std::size_t>(std::lround(std::max(windowSeconds, 0.0) / step));
+    resample(s, position, feed, step, out);
+    movingAverageInto(out, width, scratch);
+    movingAverageInto(scratch, width, out);
 }
 
 double sampleAt(const std::vector<double>& series, double step, double t) {
@@ -101,9 +128,8 @@ FilteredAxis filterAxis(std::span<const double> s, std::span<const double> posit
         axis.jerk.assign(position.size(), 0.0);
         return axis;
     }
-    const auto width = static_cast<std::size_t>(std::lround(std::max(windowSeconds, 0.0) / step));
-    const std::vector<double> raw = resample(s, position, feed, step);
-    axis.position = movingAverage(movingAverage(raw, width), width);
+    std::vector<double> scratch;
+    smoothedPositions(s, position, feed, windowSeconds, step, axis.position, scratch);
     axis.velocity = derivative(axis.position, step);
     axis.acceleration = derivative(axis.velocity, step);
     axis.jerk = derivative(axis.acceleration, step);

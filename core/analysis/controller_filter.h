@@ -24,6 +24,15 @@ FilteredAxis filterAxis(std::span<const double> s, std::span<const double> posit
 // Centred moving average over `width` samples (odd; even widths grow by one), edges padded by
 // point reflection about the end samples, so a straight run stays exactly straight.
 std::vector<double> movingAverage(std::span<const double> values, std::size_t width);
+// The same into `out` (resized; not `values`' own storage).
+void movingAverageInto(std::span<const double> values, std::size_t width, std::vector<double>& out);
+
+// filterAxis's smoothed positions alone, into `out`, with `scratch` for the first pass: what
+// the derivatives are taken from without keeping velocity, acceleration and jerk series (24
+// bytes per millisecond of the pass and axis).
+void smoothedPositions(std::span<const double> s, std::span<const double> position, double feed,
+                       double windowSeconds, double step, std::vector<double>& out,
+                       std::vector<double>& scratch);
 
 // Linear interpolation of a uniformly stepped series at time t (clamped to its ends).
 double sampleAt(const std::vector<double>& series, double step, double t);

@@ -126,26 +126,75 @@ Status validateKnots(std::span<const std::size_t> knots, std::size_t n) {
     return {};
 }
 
-// The controller-like filter sampled at the samples; the peaks are also taken over its whole 1 ms
-// series.
+// The controller-like filter (the default method, docs/figures.md): the axis at constant feed
+// every millisecond, smoothed by the window twice. Velocity, acceleration and jerk are central
+// differences of the smoothed positions (an end repeats its neighbour, as filterAxis's), taken
+// where they are read rather than kept: per millisecond of the pass only the positions and one
+// scratch series are held. Peaks and 99.9th percentiles are taken over the whole millisecond
+// series, so that they weigh the pass by time and not by how densely the post placed its points;
+// the values at the samples are interpolated at their times (for T2, the layers, axes.csv).
 void filteredDerivatives(std::span<const double> s, std::span<const double> position, double feed,
                          double filterSeconds, AxisSeries& series) {
-    const FilteredAxis filtered = filterAxis(s, position, feed, filterSeconds);
-    const std::size_t n = s.size();
-    series.velocity.resize(n);
-    series.acceleration.resize(n);
-    double sampledJerkPeak = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double t = (s[i] - s.front()) / feed;
-        series.velocity[i] = sampleAt(filtered.velocity, filtered.step, t);
-        series.acceleration[i] = sampleAt(filtered.acceleration, filtered.step, t);
-        sampledJerkPeak =
-            std::max(sampledJerkPeak, std::abs(sampleAt(filtered.jerk, filtered.step, t)));
+    constexpr double kStep = 1e-3;
+    std::vector<double> p;
+    {
+        std::vector<double> scratch;
+        smoothedPositions(s, position, feed, filterSeconds, kStep, p, scratch);
     }
-    takeSampleFigures(series);
-    series.peakVelocity = std::max(series.peakVelocity, maxAbs(filtered.velocity));
-    series.peakAcceleration = std::max(series.peakAcceleration, maxAbs(filtered.acceleration));
-    series.peakJerk = std::max(sampledJerkPeak, maxAbs(filtered.jerk));
+    const std::size_t m = p.size();
+    const auto inner = [m](std::ptrdiff_t k) {
+        return static_cast<std::size_t>(
+            std::clamp<std::ptrdiff_t>(k, 1, static_cast<std::ptrdiff_t>(m) - 2));
+    };
+    const double twoSteps = 2.0 * kStep;
+    const auto velocity = [&](std::ptrdiff_t k) {
+        const std::size_t i = inner(k);
+        return (p[i + 1] - p[i - 1]) / twoSteps;
+    };
+    const auto acceleration = [&](std::ptrdiff_t k) {
+        const auto i = static_cast<std::ptrdiff_t>(inner(k));
+        return (velocity(i + 1) - velocity(i - 1)) / twoSteps;
+    };
+    const auto jerk = [&](std::ptrdiff_t k) {
+        const auto i = static_cast<std::ptrdiff_t>(inner(k));
+        return (acceleration(i + 1) - acceleration(i - 1)) / twoSteps;
+    };
+    const std::size_t n = s.size();
+    series.velocity.assign(n, 0.0);
+    series.acceleration.assign(n, 0.0);
+    if (m < 3) {
+        return; // no differences on fewer than three steps (filterAxis's zeros)
+    }
+    AbsPercentile velocityQuantile(m, kReportedQuantile);
+    AbsPercentile accelerationQuantile(m, kReportedQuantile);
+    double peakVelocity = 0.0, peakAcceleration = 0.0, peakJerk = 0.0;
+    for (std::size_t k = 0; k < m; ++k) {
+        const auto i = static_cast<std::ptrdiff_t>(k);
+        const double v = velocity(i), a = acceleration(i), j = jerk(i);
+        peakVelocity = std::max(peakVelocity, std::abs(v));
+        peakAcceleration = std::max(peakAcceleration, std::abs(a));
+        peakJerk = std::max(peakJerk, std::abs(j));
+        velocityQuantile.add(v);
+        accelerationQuantile.add(a);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const double at =
+            std::clamp((s[i] - s.front()) / feed / kStep, 0.0, static_cast<double>(m - 1));
+        const auto k = std::min(static_cast<std::size_t>(at), m - 1);
+        const auto ki = static_cast<std::ptrdiff_t>(k);
+        const double f = at - static_cast<double>(k);
+        const bool last = k + 1 >= m;
+        series.velocity[i] =
+            last ? velocity(ki) : velocity(ki) + f * (velocity(ki + 1) - velocity(ki));
+        series.acceleration[i] =
+            last ? acceleration(ki)
+                 : acceleration(ki) + f * (acceleration(ki + 1) - acceleration(ki));
+    }
+    series.peakVelocity = peakVelocity;
+    series.peakAcceleration = peakAcceleration;
+    series.peakJerk = peakJerk;
+    series.p999Velocity = velocityQuantile.value();
+    series.p999Acceleration = accelerationQuantile.value();
 }
 
 // The knots of the derivative spline: ascending sample indices, or every sample (`indices`

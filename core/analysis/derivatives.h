@@ -17,8 +17,9 @@ namespace bladeaxis::analysis {
 // feed F (mm/s) and the range of the positions.
 // Errors: InvalidArgument (sizes differ, s not strictly increasing, F not positive),
 // Geometry (a non-finite value, or derivatives that overflow).
-// filterSeconds is the window of DerivativeMethod::Filtered (ignored otherwise); its peaks are
-// taken over the whole 1 ms series, its per-sample values interpolated at the sample times.
+// filterSeconds is the window of DerivativeMethod::Filtered (ignored otherwise); its peaks and
+// percentiles are taken over the whole 1 ms series, its per-sample values interpolated at the
+// sample times.
 // knots (DerivativeMethod::Spline only): ascending sample indices with the first and the last
 // (motionKnots); the spline is fitted through them and evaluated at every sample. Empty: all.
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,

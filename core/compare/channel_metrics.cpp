@@ -1,6 +1,7 @@
 #include "core/compare/channel_metrics.h"
 
 #include "core/geometry/angles.h"
+#include "core/optimal/layer_optimum.h"
 #include "core/scheduling/plane_path.h"
 
 #include <algorithm>
@@ -67,11 +68,19 @@ void addLayer(const scheduling::LayerResult& layer, const std::vector<double>& t
         metrics.minClearance = std::min(metrics.minClearance, clearance);
         metrics.samplesOutside += clearance < -1e-9 ? 1 : 0;
     }
-    const std::vector<double> second = secondDerivative(layer.s, theta);
+    // theta'' on the samples the optimum is solved on (optimal::problemSamples): without a
+    // post's micrometre chords, whose second differences (1/h^2) would measure the split, and
+    // where the optimum interpolates linearly (kinks at its kept samples), so that no feasible
+    // schedule can measure better than the optimum on the optimum's own objective.
+    std::vector<double> s, thetaOnGrid;
+    for (std::size_t j : optimal::problemSamples(layer.s)) {
+        s.push_back(layer.s[j]);
+        thetaOnGrid.push_back(theta[j]);
+    }
+    const std::vector<double> second = secondDerivative(s, thetaOnGrid);
     for (std::size_t j = 1; j + 1 < second.size(); ++j) {
         metrics.peakSecondDerivative = std::max(metrics.peakSecondDerivative, std::abs(second[j]));
-        metrics.secondDerivativeEnergy +=
-            second[j] * second[j] * 0.5 * (layer.s[j + 1] - layer.s[j - 1]);
+        metrics.secondDerivativeEnergy += second[j] * second[j] * 0.5 * (s[j + 1] - s[j - 1]);
     }
     int direction = 0;
     for (std::size_t j = 1; j < theta.size(); ++j) {

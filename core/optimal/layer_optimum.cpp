@@ -381,9 +381,21 @@ std::vector<double> atEverySample(const LayerBounds& bounds, std::span<const std
 
 } // namespace
 
+std::vector<std::size_t> problemSamples(std::span<const double> s) {
+    std::vector<std::size_t> kept = samplesWithoutShortChords(s);
+    if (kept.size() < s.size() && kept.size() >= 4) {
+        return kept;
+    }
+    kept.resize(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        kept[i] = i;
+    }
+    return kept;
+}
+
 Result<std::vector<double>> optimalLayer(const LayerBounds& bounds, Objective objective) {
-    const std::vector<std::size_t> kept = samplesWithoutShortChords(bounds.s);
-    const bool thinned = kept.size() < bounds.s.size() && kept.size() >= 4;
+    const std::vector<std::size_t> kept = problemSamples(bounds.s);
+    const bool thinned = kept.size() < bounds.s.size();
     const LayerBounds problem = thinned ? keepSamples(bounds, kept) : bounds;
     auto optimum =
         objective == Objective::SmoothestQp ? smoothestLayer(problem) : minimumPeakLayer(problem);

@@ -69,6 +69,13 @@ ConvexProgram minimumPeakProgram(const LayerBounds& bounds);
 Result<LayerOptimum> smoothestLayer(const LayerBounds& bounds);
 Result<LayerOptimum> minimumPeakLayer(const LayerBounds& bounds);
 
+// The samples of a layer (its S) the optimum is solved on: every sample, or, when that leaves at
+// least 4, those not a short chord (under a tenth of the median) from the previous kept one.
+// The channel metrics measure every method's theta'' on the same samples
+// (compare::measureInChannel), so that the optimum is never worse than a feasible schedule on
+// its own objective.
+std::vector<std::size_t> problemSamples(std::span<const double> s);
+
 // theta at every sample of `bounds` as optimalPath computes it: the layer solved without the
 // samples a short chord (under a tenth of the median) from the previous one, which are then
 // interpolated linearly within their own bounds (see docs/figures.md).

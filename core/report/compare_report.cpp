@@ -33,6 +33,52 @@ const char* accelerationUnit(AxisId axis) {
     return axis == AxisId::A ? "deg/s^2" : "mm/s^2";
 }
 
+// The units as compare.json and compare.csv name them in their keys (docs/report-format.md).
+const char* velocityKeyUnit(AxisId axis) {
+    return axis == AxisId::A ? "deg_s" : "mm_s";
+}
+const char* accelerationKeyUnit(AxisId axis) {
+    return axis == AxisId::A ? "deg_s2" : "mm_s2";
+}
+
+// theta'' energy (the integral of theta''^2 dS) in deg^2/mm^3, beside the other S-theta figures
+// in degrees: it is held in rad^2/mm^3 inside.
+double energyDegrees(double radians) {
+    const double degreesPerRad = units::radToDeg(1.0);
+    return radians * degreesPerRad * degreesPerRad;
+}
+
+// What every reduction against the quaternion baseline is measured against: for each metric,
+// its best setting (fairness rule, spec 7.2), which need not be the setting of its row.
+constexpr const char* kBestQuaternion = "best quaternion setting";
+constexpr const char* kBestQuaternionKey = "best_quaternion_setting";
+
+// A display unit as a key suffix: "deg/s^2" -> "deg_s2", "s" -> "s".
+std::string keyUnit(std::string_view unit) {
+    std::string key;
+    for (char c : unit) {
+        if (c == '/') {
+            key += '_';
+        } else if (c != '^') {
+            key += c;
+        }
+    }
+    return key;
+}
+
+// The model the axis figures assume, as the report's text names it.
+std::string derivativeModel(const analysis::AxisProfile& profile) {
+    const std::string feed = formatFixed(units::perSecondToPerMinute(profile.feed), 0) + " mm/min";
+    if (profile.method == analysis::DerivativeMethod::Filtered) {
+        return "each axis as a controller that smooths it over " +
+               formatShortest(1e3 * profile.filterSeconds) +
+               " ms (two moving averages, docs/figures.md) runs it at the programmed feed of " +
+               feed;
+    }
+    return std::string("derivatives by the method '") + analysis::nameOf(profile.method) +
+           "' at the programmed feed of " + feed;
+}
+
 // The program's letter of an axis role: what a reader of the table and the plots sees.
 std::string letterOf(const compare::Comparison& comparison, AxisId axis) {
     return std::string(1, comparison.letters[static_cast<std::size_t>(axis)]);
@@ -86,20 +132,23 @@ nlohmann::json methodJson(const MethodResult& method, const compare::Comparison&
         const auto& series = method.profile.axis(axis);
         const auto& before = original.profile.axis(axis);
         json["axes"][kinematics::axisName(axis)] = {
-            {"peak_velocity", display(axis, series.peakVelocity)},
-            {"peak_acceleration", display(axis, series.peakAcceleration)},
+            {std::string("peak_velocity_") + velocityKeyUnit(axis),
+             display(axis, series.peakVelocity)},
+            {std::string("peak_acceleration_") + accelerationKeyUnit(axis),
+             display(axis, series.peakAcceleration)},
             {"velocity_reduction_vs_original",
              compare::reduction(before.peakVelocity, series.peakVelocity)},
             {"acceleration_reduction_vs_original",
              compare::reduction(before.peakAcceleration, series.peakAcceleration)}};
         const std::string name = kinematics::axisName(axis);
-        // Against the quaternion baseline's best setting for this very metric (fairness rule).
+        // Against the quaternion baseline's best setting for this very metric (fairness rule),
+        // named so: the quaternion row shows one setting, which may not be that one.
         if (auto q = comparison.bestQuaternion(name + " peak velocity")) {
-            json["axes"][name]["velocity_reduction_vs_quaternion"] =
+            json["axes"][name][std::string("velocity_reduction_vs_") + kBestQuaternionKey] =
                 compare::reduction(*q, series.peakVelocity);
         }
         if (auto q = comparison.bestQuaternion(name + " peak acceleration")) {
-            json["axes"][name]["acceleration_reduction_vs_quaternion"] =
+            json["axes"][name][std::string("acceleration_reduction_vs_") + kBestQuaternionKey] =
                 compare::reduction(*q, series.peakAcceleration);
         }
     }
@@ -122,7 +171,7 @@ nlohmann::json methodJson(const MethodResult& method, const compare::Comparison&
         {"min_clearance_deg", units::radToDeg(method.channel.minClearance)},
         {"samples_outside", method.channel.samplesOutside},
         {"peak_theta_dd_deg_mm2", units::radToDeg(method.channel.peakSecondDerivative)},
-        {"theta_dd_energy", method.channel.secondDerivativeEnergy},
+        {"theta_dd_energy_deg2_mm3", energyDegrees(method.channel.secondDerivativeEnergy)},
         {"theta_reversals", method.channel.thetaReversals}};
     if (!method.sweep.empty()) {
         json["rotary_limit_sweep"] = nlohmann::json::array();
@@ -210,7 +259,8 @@ std::string peakNote(const compare::Comparison& comparison, const std::string& m
     std::string note = "reduction vs original: " +
                        percent(compare::reduction(compare::metricValue(original, metric), value));
     if (auto best = comparison.bestQuaternion(metric)) {
-        note += "\nreduction vs quaternion: " + percent(compare::reduction(*best, value));
+        note += std::string("\nreduction vs ") + kBestQuaternion + ": " +
+                percent(compare::reduction(*best, value));
     }
     return note;
 }
@@ -249,7 +299,8 @@ void addReductionColumns(const compare::Comparison& comparison,
                          std::vector<ColumnDefinition>& columns) {
     const MethodResult& reference = tableReference(comparison);
     const MethodResult& original = comparison.methods.front();
-    const std::string against = reference.method;
+    const std::string against =
+        comparison.quaternionFairness.empty() ? reference.method : kBestQuaternion;
     for (AxisId axis : printedAxes(comparison)) {
         const std::string name = kinematics::axisName(axis); // the key and the metric: the role
         const std::string shown = letterOf(comparison, axis);
@@ -259,8 +310,8 @@ void addReductionColumns(const compare::Comparison& comparison,
             columns.push_back(
                 {{name + "_" + quantity + "_reduction_vs_reference",
                   shown + " " + shortName + " reduction vs " + against,
-                  "(reference - method) / reference; the quaternion reference is its best "
-                  "setting for this metric",
+                  "(reference - method) / reference; against the quaternion baseline, its best "
+                  "setting for this metric (not necessarily its row's)",
                   Better::Higher},
                  [&comparison, &reference, metric](const MethodResult& method) {
                      const double value =
@@ -573,7 +624,9 @@ int CompareTable::columnOf(std::string_view key) const {
 
 CompareTable compareTable(const compare::Comparison& comparison) {
     CompareTable table;
-    table.reductionReference = tableReference(comparison).method;
+    table.reductionReference = comparison.quaternionFairness.empty()
+                                   ? tableReference(comparison).method
+                                   : std::string(kBestQuaternionKey);
     const std::vector<ColumnDefinition> columns = tableColumns(comparison);
     for (const ColumnDefinition& definition : columns) {
         table.columns.push_back(definition.column);
@@ -603,8 +656,8 @@ nlohmann::json compareJson(const compare::Comparison& comparison) {
     }
     for (const compare::FairnessEntry& entry : comparison.quaternionFairness) {
         const auto [value, unit] = fairnessDisplayValue(entry);
-        json["quaternion_fairness"][entry.metric] = {
-            {"setting", entry.setting}, {"value", value}, {"unit", unit}};
+        json["quaternion_fairness"][entry.metric] = {{"setting", entry.setting},
+                                                     {"value_" + keyUnit(unit), value}};
     }
     json["quaternion_failures"] = comparison.quaternionFailures;
     json["optimum_failures"] = comparison.optimumFailures;
@@ -618,8 +671,8 @@ std::string compareCsv(const compare::Comparison& comparison) {
     std::string csv = "method,setting";
     for (AxisId axis : kTableAxes) {
         const std::string name = kinematics::axisName(axis);
-        csv += "," + name + "_peak_velocity_" + velocityUnit(axis) + "," + name +
-               "_peak_acceleration_" + accelerationUnit(axis);
+        csv += "," + name + "_peak_velocity_" + velocityKeyUnit(axis) + "," + name +
+               "_peak_acceleration_" + accelerationKeyUnit(axis);
     }
     csv += ",a_reversals,t1_s,t2_s,min_clearance_deg,peak_theta_dd_deg_mm2,compute_s";
     for (std::size_t column : derived) {
@@ -655,18 +708,17 @@ std::string compareHtml(const compare::Comparison& comparison, const std::string
     const std::string table = letterOf(comparison, AxisId::A);
     page.paragraph("Every method keeps the same ball centres and is evaluated by the same "
                    "pipeline: inverse kinematics with " +
-                   table +
-                   " continuous, cubic-spline derivatives at "
-                   "the programmed feed of " +
-                   formatFixed(units::perSecondToPerMinute(original.profile.feed), 0) +
-                   " mm/min, T1 by constant-feed scaling to the machine limits. Reductions are "
+                   table + " continuous, " + derivativeModel(original.profile) +
+                   ", T1 by constant-feed scaling to the machine limits. Reductions are "
                    "(reference - method) / reference.");
     page.heading("Peaks, reversals and machining time");
     if (!comparison.quaternionFairness.empty()) {
         page.paragraph("The quaternion row is its setting with the lowest peak " + table +
                        " acceleration; "
-                       "every reduction against the quaternion baseline uses its best setting "
-                       "for that metric (fairness rule, spec 7.2), listed below the table.");
+                       "every reduction \"vs best quaternion setting\" is measured against the "
+                       "quaternion baseline's best setting for that metric (fairness rule, spec "
+                       "7.2), which may be another setting than the row's; they are listed "
+                       "below the table.");
     }
     const auto [header, rows] = printedTable(compareTable(comparison));
     page.table(header, rows);

@@ -54,6 +54,20 @@ void BM_AnalyseMillionRecords(benchmark::State& state) {
 }
 BENCHMARK(BM_AnalyseMillionRecords)->Unit(benchmark::kMillisecond);
 
+// The former default (the spline through the samples that carry motion), beside the default
+// controller filter above: what the choice of default costs.
+void BM_AnalyseMillionRecordsSpline(benchmark::State& state) {
+    const HelixProgram program(recordCount());
+    analysis::AxisProfileOptions options;
+    options.method = analysis::DerivativeMethod::Spline;
+    for (auto _ : state) {
+        auto profile = analysis::analyseAxisMotion(program.axes, program.records, options);
+        benchmark::DoNotOptimize(profile);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(recordCount()));
+}
+BENCHMARK(BM_AnalyseMillionRecordsSpline)->Unit(benchmark::kMillisecond);
+
 void BM_AnalyseMillionRecordsFiniteDifference(benchmark::State& state) {
     const HelixProgram program(recordCount());
     analysis::AxisProfileOptions options;

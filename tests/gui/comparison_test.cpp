@@ -83,9 +83,11 @@ class ComparisonTest final : public QObject {
             QCOMPARE(table.item(row, 0)->text().toStdString(), method["method"].get<std::string>());
             for (const char* axis : {"X", "Y", "Z", "A"}) {
                 const auto& figures = method["axes"][axis];
-                checkCell(table, row, QString(axis) + "_peak_velocity", figures["peak_velocity"]);
+                checkCell(table, row, QString(axis) + "_peak_velocity",
+                          figures[axis[0] == 'A' ? "peak_velocity_deg_s" : "peak_velocity_mm_s"]);
                 checkCell(table, row, QString(axis) + "_peak_acceleration",
-                          figures["peak_acceleration"]);
+                          figures[axis[0] == 'A' ? "peak_acceleration_deg_s2"
+                                                 : "peak_acceleration_mm_s2"]);
             }
             const auto& a = method["axes"]["A"];
             checkCell(table, row, "A_velocity_reduction_vs_original",
@@ -93,9 +95,9 @@ class ComparisonTest final : public QObject {
             checkCell(table, row, "A_acceleration_reduction_vs_original",
                       a["acceleration_reduction_vs_original"]);
             checkCell(table, row, "A_velocity_reduction_vs_reference",
-                      optionalField(a, "velocity_reduction_vs_quaternion"));
+                      optionalField(a, "velocity_reduction_vs_best_quaternion_setting"));
             checkCell(table, row, "A_acceleration_reduction_vs_reference",
-                      optionalField(a, "acceleration_reduction_vs_quaternion"));
+                      optionalField(a, "acceleration_reduction_vs_best_quaternion_setting"));
             checkCell(table, row, "a_reversals", method["a_reversals"]);
             checkCell(table, row, "t1_s", method["t1_s"]);
             checkCell(table, row, "t1_gain_vs_original", method["t1_gain_vs_original"]);
@@ -116,13 +118,14 @@ class ComparisonTest final : public QObject {
         double optimumEnergy = 0.0;
         for (const auto& method : methods) {
             if (method["method"] == "optimal-qp") {
-                optimumEnergy = method["channel"]["theta_dd_energy"].get<double>();
+                optimumEnergy = method["channel"]["theta_dd_energy_deg2_mm3"].get<double>();
             }
         }
         QVERIFY(optimumEnergy > 0.0);
         for (int row = 0; row < table.rowCount(); ++row) {
             const double energy =
-                methods[static_cast<std::size_t>(row)]["channel"]["theta_dd_energy"].get<double>();
+                methods[static_cast<std::size_t>(row)]["channel"]["theta_dd_energy_deg2_mm3"]
+                    .get<double>();
             checkCell(table, row, "theta_dd_energy_ratio_to_optimal_qp", energy / optimumEnergy);
         }
     }
@@ -142,7 +145,7 @@ class ComparisonTest final : public QObject {
         };
         const int lowestAcceleration = rowOfExtreme(
             [](const auto& m) {
-                return m["axes"]["A"]["peak_acceleration"].template get<double>();
+                return m["axes"]["A"]["peak_acceleration_deg_s2"].template get<double>();
             },
             true);
         const int widestClearance = rowOfExtreme(

@@ -61,8 +61,8 @@ TEST(AnalyseAxisMotion, StraightLineAtConstantFeedMovesEachAxisAtFeedTimesDirect
 
 TEST(AnalyseAxisMotion, TimeIsPathOverFeedAndPathIsTipArcLength) {
     const Program program = straightLine(Vec3::UnitY(), 20, 25.0);
-    const Result<AxisProfile> profile =
-        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    const Result<AxisProfile> profile = analyseAxisMotion(
+        program.axes, program.records, AxisProfileOptions{.method = DerivativeMethod::Spline});
     ASSERT_TRUE(profile.has_value());
     const double length = program.records.back().tip.y();
     EXPECT_NEAR(profile->pathLength, length, 1e-12);
@@ -91,8 +91,8 @@ TEST(AnalyseAxisMotion, UniformCircleWithATiedToArcLengthTurnsAAtFeedOverRadius)
         previous = tip;
         program.add(tip, s / r, feed);
     }
-    const Result<AxisProfile> profile =
-        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    const Result<AxisProfile> profile = analyseAxisMotion(
+        program.axes, program.records, AxisProfileOptions{.method = DerivativeMethod::Spline});
     ASSERT_TRUE(profile.has_value());
     const AxisSeries& a = profile->axis(AxisId::A);
     const AxisSeries& y = profile->axis(AxisId::Y);
@@ -112,8 +112,8 @@ TEST(AnalyseAxisMotion, UniformCircleWithATiedToArcLengthTurnsAAtFeedOverRadius)
 
 TEST(AnalyseAxisMotion, ReleasedSampleDataLeavesTheFiguresAndTheSampleCount) {
     const Program program = straightLine(Vec3(0.6, 0.0, 0.8), 300, 50.0, 0.01, 2e-4);
-    const Result<AxisProfile> kept =
-        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    const Result<AxisProfile> kept = analyseAxisMotion(
+        program.axes, program.records, AxisProfileOptions{.method = DerivativeMethod::Spline});
     ASSERT_TRUE(kept.has_value()) << kept.error().toString();
     AxisProfile released = *kept;
     released.releaseSampleData();
@@ -465,8 +465,8 @@ TEST(AnalyseAxisMotion, CentreReferenceMeasuresTheCutterCentrePath) {
         const double phi = step * i;
         program.add(Vec3::Zero(), phi, 20.0, Vec3(0.0, std::sin(phi), std::cos(phi)));
     }
-    const Result<AxisProfile> tip =
-        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    const Result<AxisProfile> tip = analyseAxisMotion(
+        program.axes, program.records, AxisProfileOptions{.method = DerivativeMethod::Spline});
     ASSERT_TRUE(tip.has_value());
     EXPECT_EQ(tip->mergedDuplicates, 49u);
     AxisProfileOptions centre;
@@ -486,8 +486,8 @@ TEST(AnalyseAxisMotion, AuditsAReversalsOverAllRecords) {
     for (int i = 0; i < 5; ++i) {
         program.add(Vec3(i, 0, 0), a[i], 10.0);
     }
-    const Result<AxisProfile> profile =
-        analyseAxisMotion(program.axes, program.records, AxisProfileOptions{});
+    const Result<AxisProfile> profile = analyseAxisMotion(
+        program.axes, program.records, AxisProfileOptions{.method = DerivativeMethod::Spline});
     ASSERT_TRUE(profile.has_value());
     EXPECT_EQ(profile->aReversals.count, 2);
     EXPECT_EQ(profile->aReversals.indices, (std::vector<std::size_t>{2, 3}));

@@ -44,7 +44,7 @@ TEST(CompareJob, DemoComparisonWritesJsonCsvAndHtml) {
     const report::CompareTable table = report::compareTable(*result->comparison);
     // The derived figures report.html shows are in the CSV too, every axis against both.
     for (const char* key :
-         {"X_velocity_reduction_vs_quaternion", "Z_acceleration_reduction_vs_original",
+         {"X_velocity_reduction_vs_best_quaternion_setting", "Z_acceleration_reduction_vs_original",
           "t2_gain_vs_original", "peak_theta_dd_ratio_to_optimal_lp"}) {
         EXPECT_NE(csv.find(key), std::string::npos) << key;
     }

@@ -411,11 +411,13 @@ Result<ConvergedTime> convergedTimeOptimal(const AxisProfile& profile,
         if (result.converged) {
             break;
         }
+        // A block whose time moved by less than half its even share of the tolerance stops
+        // being refined: all such blocks together can move T2 by at most half the tolerance.
         const std::vector<double> after = intervalTimes(*finer, profile.pathParameter, steps);
+        const double share = 0.5 * options.tolerance * result.time / static_cast<double>(intervals);
         bool any = false;
         for (std::size_t i = 0; i < intervals; ++i) {
-            refining[i] =
-                refining[i] && std::abs(after[i] - before[i]) > options.tolerance * after[i];
+            refining[i] = refining[i] && std::abs(after[i] - before[i]) > share;
             any = any || refining[i];
         }
         if (!any) {

@@ -62,11 +62,11 @@ Result<TimeOptimalTime> timeOptimalTime(const AxisProfile& profile,
 // reversal's acceleration spike is one block wide and on that grid it brakes the whole of both
 // neighbouring blocks, which inflated the originals' T2 by 26-71 % while the smooth
 // re-scheduled paths moved by about 1 %. Each round halves the steps of the blocks whose own
-// time still moved by more than `tolerance` in the round before (every block in the first
-// round), until T2 changes by less than `tolerance` (relative) between two rounds or a block
-// reaches `maxSubdivisions` steps. Refining only where the time moves keeps the cost near two
-// or three passes: a uniform refinement to 64 steps per block took 127 passes, 10 s on a
-// million-block program.
+// time still moved by more than half their even share of `tolerance` x T2 in the round before
+// (every block in the first round), until T2 changes by less than `tolerance` (relative) between
+// two rounds or a block reaches `maxSubdivisions` steps. Refining only where the time moves keeps
+// the cost near two or three passes: a uniform refinement to 64 steps per block took 127 passes, 10
+// s on a million-block program.
 struct ConvergedTimeOptions {
     double tolerance = 0.005;
     std::size_t maxSubdivisions = 64;

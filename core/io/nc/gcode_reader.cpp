@@ -20,6 +20,14 @@ namespace bladeaxis::io::nc {
 
 namespace {
 
+// A block that only ends the program again: a Heidenhain program's END PGM after its M30 (or M2
+// on its last L block), or a repeated M30. It adds no motion and is still the one program's end.
+bool onlyEndsTheProgram(const detail::ScannedBlock& block) {
+    constexpr std::uint32_t kBlockNumber = 1U << ('N' - 'A');
+    return block.programEnd && (block.present & ~kBlockNumber) == 0 && block.gCount == 0 &&
+           block.subprogramWord == detail::kNoOffset;
+}
+
 // Record offsets are 32-bit to keep the per-record data small.
 constexpr std::size_t kMaxTextBytes = std::numeric_limits<std::uint32_t>::max();
 
@@ -227,7 +235,7 @@ std::size_t interpretLines(GcodeProgram& program, std::string_view text,
         }
         if (auto issue = detail::scanBlock(line, block, program.dialect)) {
             errors.add(lineNumber, static_cast<int>(issue->offset) + 1, std::move(issue->message));
-        } else if (ended && block.hasWords) {
+        } else if (ended && block.hasWords && !onlyEndsTheProgram(block)) {
             // A subprogram body or a second program after M30: its moves are not this
             // program's, and reading them as motion would re-schedule them too.
             errors.add(lineNumber, 1,

@@ -151,3 +151,26 @@ TEST(NcDialectDetection, ContentFirstThenTheExtension) {
 
 } // namespace
 } // namespace bladeaxis::io::nc
+
+namespace bladeaxis::io::nc {
+namespace {
+
+TEST(HeidenhainProgramEnd, EndPgmAfterM30IsTheSameEndNotASecondProgram) {
+    const auto read = parse("0 BEGIN PGM BLADE MM\n1 TOOL DEF 1 L+0 R+4\n"
+                            "2 L X+0 Y+0 Z+50 A+350.0 B+5 R0 FMAX\n3 L X+1 A+340.0 R0 F3000\n"
+                            "4 L X+2 A+330.0 M30\n5 END PGM BLADE MM\n");
+    ASSERT_TRUE(read) << read.error().toString();
+    EXPECT_EQ(read->path.records.size(), 3U);
+}
+
+TEST(HeidenhainProgramEnd, AMoveAfterTheEndIsStillRefused) {
+    const auto read = parse("0 BEGIN PGM BLADE MM\n1 TOOL DEF 1 L+0 R+4\n"
+                            "2 L X+0 Y+0 Z+50 A+350.0 B+5 R0 FMAX\n3 L X+1 R0 F3000 M30\n"
+                            "4 L X+2\n5 END PGM BLADE MM\n");
+    ASSERT_FALSE(read);
+    EXPECT_NE(read.error().message.find("after the program end"), std::string::npos);
+    EXPECT_EQ(read.error().where.line, 5); // the file line of block 4
+}
+
+} // namespace
+} // namespace bladeaxis::io::nc

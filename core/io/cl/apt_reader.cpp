@@ -73,7 +73,7 @@ class AptReader {
     void readCutter();
     void readTldata();
     void readMultax();
-    void setTool(double diameter, std::optional<double> cornerRadius);
+    void setTool(double diameter, std::optional<double> cornerRadius, std::size_t radiusPos);
 
     std::optional<double> number(const Field& field, std::string_view what);
     void fail(std::size_t bodyPos, std::string message);
@@ -368,16 +368,23 @@ void AptReader::readUnits() {
     }
 }
 
-void AptReader::setTool(double diameter, std::optional<double> cornerRadius) {
+// A flat (corner radius 0) or bull-nose cutter is refused: re-orienting it moves its contact
+// point on the surface, so keeping the ball centre would not keep the surface.
+void AptReader::setTool(double diameter, std::optional<double> cornerRadius,
+                        std::size_t radiusPos) {
     const double half = 0.5 * diameter * lengthScale();
     const std::optional<double> radius =
         cornerRadius ? std::optional(*cornerRadius * lengthScale()) : std::nullopt;
     if (radius && std::abs(*radius - half) > kBallRadiusTolMm) {
-        warn("the cutter is not a ball end (corner radius " + formatShortest(*radius) +
-             " mm, half diameter " + formatShortest(half) + " mm); using the half diameter");
+        fail(radiusPos, "expected a ball-end cutter (corner radius = half the diameter, " +
+                            formatShortest(half) + " mm), got a corner radius of " +
+                            formatShortest(*radius) +
+                            " mm: re-orienting a flat or bull-nose cutter moves its contact "
+                            "point and changes the surface; BladeAxis re-schedules ball-end "
+                            "cutters only");
+        return;
     }
-    m_program.path.toolRadius =
-        radius && std::abs(*radius - half) <= kBallRadiusTolMm ? *radius : half;
+    m_program.path.toolRadius = radius ? *radius : half;
 }
 
 void AptReader::readCutter() {
@@ -398,7 +405,7 @@ void AptReader::readCutter() {
     if (fields.size() >= 2 && !(radius = number(fields[1], "the CUTTER/ corner radius"))) {
         return;
     }
-    setTool(*diameter, radius);
+    setTool(*diameter, radius, fields.size() >= 2 ? fields[1].pos : fields[0].pos);
 }
 
 void AptReader::readTldata() {
@@ -423,7 +430,7 @@ void AptReader::readTldata() {
     if (fields.size() >= 3 && !(radius = number(fields[2], "the TLDATA/ lower radius"))) {
         return;
     }
-    setTool(*diameter, radius);
+    setTool(*diameter, radius, fields.size() >= 3 ? fields[2].pos : fields[1].pos);
 }
 
 void AptReader::readMultax() {

@@ -98,13 +98,16 @@ TEST(ParseApt, TakesTheBallRadiusFromTldataAndCutter) {
     EXPECT_EQ(apt.path.toolRadius, 6.0);
 }
 
-TEST(ParseApt, WarnsWhenTheCutterIsNotABallEnd) {
-    const AptProgram program = parseOk("PARTNO X\nCUTTER/10,1\nRAPID\nGOTO/0,0,0\nFINI\n");
-    EXPECT_EQ(program.path.toolRadius, 5.0);
-    ASSERT_EQ(program.path.warnings.size(), 1u);
-    EXPECT_NE(program.path.warnings[0].find("test.cls:2: the cutter is not a ball end"),
-              std::string::npos)
-        << program.path.warnings[0];
+TEST(ParseApt, RefusesAFlatOrBullNoseCutterNamingItsCornerRadius) {
+    for (const char* cutter : {"CUTTER/8,0", "CUTTER/8,1", "TLDATA/MILL,8,1"}) {
+        const std::string text = std::string("PARTNO X\n") + cutter + "\nRAPID\nGOTO/0,0,0\nFINI\n";
+        const auto program = parseApt(text, "test.cls");
+        ASSERT_FALSE(program.has_value()) << cutter;
+        const std::string message = program.error().toString();
+        EXPECT_NE(message.find("test.cls:2:"), std::string::npos) << message;
+        EXPECT_NE(message.find("expected a ball-end cutter"), std::string::npos) << message;
+    }
+    EXPECT_EQ(parseOk("CUTTER/8,4\nRAPID\nGOTO/0,0,0\n").path.toolRadius, 4.0);
 }
 
 TEST(ParseApt, IgnoresOtherMajorWordsAndStopsAtFini) {

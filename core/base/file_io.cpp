@@ -89,23 +89,6 @@ bool writeAll(int fd, std::string_view content) {
     return true;
 }
 
-// The file a path finally names: a symbolic link (or a chain of them) is replaced by its target,
-// relative targets resolved against the link's folder.
-fs::path followLinks(fs::path path) {
-    for (int depth = 0; depth < 40; ++depth) {
-        std::error_code ec;
-        if (!fs::is_symlink(fs::symlink_status(path, ec))) {
-            return path;
-        }
-        const fs::path target = fs::read_symlink(path, ec);
-        if (ec) {
-            return path;
-        }
-        path = target.is_absolute() ? target : path.parent_path() / target;
-    }
-    return path; // a loop: the open below reports it
-}
-
 Status writeDirectly(const fs::path& path, std::string_view content) {
     Descriptor fd(::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC));
     if (!fd.valid()) {
@@ -213,6 +196,23 @@ Status replaceRegularFile(const fs::path& path, std::string_view content) {
 }
 
 } // namespace
+
+// The file a path finally names: a symbolic link (or a chain of them) is replaced by its target,
+// relative targets resolved against the link's folder.
+fs::path followLinks(fs::path path) {
+    for (int depth = 0; depth < 40; ++depth) {
+        std::error_code ec;
+        if (!fs::is_symlink(fs::symlink_status(path, ec))) {
+            return path;
+        }
+        const fs::path target = fs::read_symlink(path, ec);
+        if (ec) {
+            return path;
+        }
+        path = target.is_absolute() ? target : path.parent_path() / target;
+    }
+    return path; // a loop: the open below reports it
+}
 
 Status writeFileAtomically(const fs::path& path, std::string_view content,
                            std::span<const fs::path> protectedInputs) {

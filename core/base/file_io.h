@@ -58,6 +58,11 @@ class MappedText {
 // writeFileAtomically does. Dropped uncommitted, nothing of it remains, also when the process is
 // killed (an unnamed file). A job writes a large output here while it runs instead of holding
 // it in memory, and reads it back from here (mapText).
+// The file a path finally names: a symbolic link (or a chain of them, up to 40) is replaced by
+// its target, relative targets resolved against the link's folder; a dangling link names the
+// file a write through it would create.
+std::filesystem::path followLinks(std::filesystem::path path);
+
 class StagedFile {
   public:
     // Refuses (WriteFailed) what writeFileAtomically refuses, and a target that is not a regular

@@ -68,10 +68,12 @@ Result<fs::path> JobReader::pathValue(const Json& root, const char* key) const {
 namespace {
 
 // Both made absolute first: weakly_canonical keeps a trailing "." of a bare relative folder
-// (a job file named without a folder), which no output path would then be inside.
+// (a job file named without a folder), which no output path would then be inside. The path's
+// links are followed first, dangling ones too: weakly_canonical stops at a link whose target
+// does not exist yet, and the write would follow it out of the folder.
 bool isInside(const fs::path& path, const fs::path& folder) {
     std::error_code ec;
-    const fs::path resolved = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    const fs::path resolved = fs::weakly_canonical(fs::absolute(followLinks(path), ec), ec);
     const fs::path base = fs::weakly_canonical(fs::absolute(folder, ec).lexically_normal(), ec);
     const auto [end, unused] =
         std::mismatch(base.begin(), base.end(), resolved.begin(), resolved.end());

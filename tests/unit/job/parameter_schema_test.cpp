@@ -115,6 +115,24 @@ TEST(JobFile, AnOutputOutsideTheJobsFolderIsRefusedNamingTheKey) {
     }
 }
 
+TEST(JobFile, AnOutputThroughADanglingLinkOutOfTheFolderIsRefused) {
+    namespace fs = std::filesystem;
+    const auto base = fs::temp_directory_path() / "bladeaxis_job_dangling_link";
+    fs::remove_all(base);
+    fs::create_directories(base / "job");
+    fs::create_symlink("../elsewhere/.bash_login", base / "job" / "out.nc");
+    const std::string text = R"({"schema": "bladeaxis-job/1", "program": "in.nc",
+  "output_program": "out.nc"})";
+    JobSpec spec;
+    const auto status = parseJobJson(text, base / "job" / "job.json", spec);
+    ASSERT_FALSE(status.has_value());
+    EXPECT_NE(status.error().message.find("output_program: a job file writes only inside"),
+              std::string::npos)
+        << status.error().toString();
+    EXPECT_FALSE(fs::exists(base / "elsewhere"));
+    fs::remove_all(base);
+}
+
 TEST(JobFile, AJobNamedWithoutAFolderWritesInsideTheCurrentFolder) {
     const auto dir = std::filesystem::temp_directory_path() / "bladeaxis_job_bare_name";
     std::filesystem::create_directories(dir);

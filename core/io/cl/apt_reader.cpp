@@ -90,6 +90,7 @@ class AptReader {
     std::vector<Error> m_errors;
     bool m_finished = false;
     bool m_pathEnded = false;
+    bool m_lastWasEnd = false;           // the last statement so far is END (CATIA's last line)
     int m_lastStatementLine = 0;         // where a file without FINI stops
     std::optional<double> m_defaultFeed; // mm/s, for CL data without FEDRAT
     bool m_reportedMissingFeed = false;
@@ -123,6 +124,7 @@ std::optional<double> AptReader::number(const Field& field, std::string_view wha
 
 void AptReader::dispatch() {
     const std::string_view word = m_parsed.word;
+    m_lastWasEnd = equalsIgnoreCase(word, "END");
     if (equalsIgnoreCase(word, "GOTO")) {
         readGoto();
     } else if (equalsIgnoreCase(word, "FEDRAT")) {
@@ -505,10 +507,12 @@ Result<AptProgram> AptReader::run() {
         return makeError(ErrorCode::Parse, "no GOTO statement in the file",
                          SourceLocation{std::string(m_file), 1, 1});
     }
-    if (!m_finished && !m_pathEnded) { // a file cut short still parses statement by statement
+    // A file cut short still parses statement by statement. CATIA ends its files with END.
+    if (!m_finished && !m_pathEnded && !m_lastWasEnd) {
         m_program.path.warnings.push_back(
             std::string(m_file) + ":" + std::to_string(m_lastStatementLine) +
-            ": the file ends here, at its last statement, without FINI or END-OF-PATH: it may "
+            ": the file ends here, at its last statement, without FINI, END-OF-PATH or END: it "
+            "may "
             "be truncated");
     }
     return std::move(m_program);

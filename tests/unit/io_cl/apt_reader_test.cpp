@@ -110,6 +110,14 @@ TEST(ParseApt, RefusesAFlatOrBullNoseCutterNamingItsCornerRadius) {
     EXPECT_EQ(parseOk("CUTTER/8,4\nRAPID\nGOTO/0,0,0\n").path.toolRadius, 4.0);
 }
 
+TEST(ParseApt, AFileEndingWithCatiasEndIsNotTakenForTruncated) {
+    const AptProgram ended = parseOk("CUTTER/8,4\nFEDRAT/600\nGOTO/0,0,0\nGOTO/1,0,0\nEND\n");
+    EXPECT_TRUE(ended.path.warnings.empty()) << ended.path.warnings.front();
+    const AptProgram cut = parseOk("CUTTER/8,4\nFEDRAT/600\nGOTO/0,0,0\nGOTO/1,0,0\n");
+    ASSERT_EQ(cut.path.warnings.size(), 1U);
+    EXPECT_NE(cut.path.warnings[0].find("may be truncated"), std::string::npos);
+}
+
 TEST(ParseApt, IgnoresOtherMajorWordsAndStopsAtFini) {
     const AptProgram program = parseOk("PARTNO P\nTOOL PATH/OP1,TOOL,T1\nPAINT/COLOR,3\n"
                                        "LOADTL/1\nSPINDL/3000\nCOOLNT/ON\nMSYS/0,0,0,1,0,0,0,1,0\n"

@@ -128,6 +128,16 @@ int runGenerate(const BatchOptions& options, std::ostream& out, std::ostream& er
     return kExitOk;
 }
 
+// A stream that did not take the whole of what was written (a full disk, /dev/full, a reader that
+// closed the pipe): the output is cut mid-block, which must not pass for a finished job.
+Error streamFailure(const std::string& what) {
+    return Error{ErrorCode::WriteFailed,
+                 "standard output did not take all of " + what +
+                     " (the disk is full or the reader closed it): what it holds is cut short",
+                 {},
+                 {}};
+}
+
 // A program named `-` is read from standard input, and `-o -` writes the re-scheduled program
 // to standard output (the summary then goes to standard error), so BladeAxis can sit in a
 // post-processor's pipe. The program goes out only once every other output is written, so a
@@ -172,10 +182,16 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
                         err);
         }
         out << result->rescheduled->programText << std::flush;
+        if (!out) {
+            return fail(streamFailure("the re-scheduled program"), err);
+        }
     }
     if (options.printJson) {
         // The same report.json as --out writes (the spec names the preset and the edited layers).
-        summary << job::reportJsonText(*result, &options.job);
+        summary << job::reportJsonText(*result, &options.job) << std::flush;
+        if (!summary) {
+            return fail(streamFailure("the JSON report"), err);
+        }
     } else if (!options.quiet) {
         summary << job::formatSummary(*result);
         if (!options.job.outputDir.empty()) {

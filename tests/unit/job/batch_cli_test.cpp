@@ -71,6 +71,40 @@ TEST(BatchCli, ABadProgramFromAPipeIsNamedStdinAndLeavesStandardOutputEmpty) {
     EXPECT_NE(result.err.find("stdin:1:5: parse error"), std::string::npos) << result.err;
 }
 
+// A stream buffer that takes `room` characters and then refuses, as a full disk or /dev/full.
+class FullDisk : public std::streambuf {
+  public:
+    explicit FullDisk(std::size_t room) : m_room(room) {}
+
+  protected:
+    int_type overflow(int_type c) override {
+        if (m_room == 0) {
+            return traits_type::eof();
+        }
+        --m_room;
+        return traits_type::not_eof(c);
+    }
+
+  private:
+    std::size_t m_room;
+};
+
+TEST(BatchCli, AProgramOrReportCutShortOnStandardOutputIsAWriteFailure) {
+    for (const char* output : {"-o", "--json"}) {
+        std::vector<std::string> arguments{"bladeaxis", "--batch", "--demo", output};
+        if (std::string(output) == "-o") {
+            arguments.emplace_back("-");
+        }
+        FullDisk disk(1000);
+        std::ostream out(&disk);
+        std::ostringstream err;
+        std::istringstream in;
+        EXPECT_EQ(runBatchCommandLine(arguments, out, err, in), kExitWrite) << output;
+        EXPECT_NE(err.str().find("standard output did not take all of"), std::string::npos)
+            << err.str();
+    }
+}
+
 TEST(BatchCli, ProgressShowsTheRunningStageOnOneLineAndClearsIt) {
     const CliRun shown = run({"--batch", "--demo", "--analyse-only", "--progress"});
     ASSERT_EQ(shown.code, kExitOk) << shown.err;

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace bladeaxis::analysis {
@@ -109,44 +110,66 @@ bool plannable(const PlannedBlock& block) {
 
 } // namespace
 
-BlockPlannerTime blockByBlockTime(std::span<const kinematics::MachineAxes> axes,
-                                  std::span<const double> feeds,
-                                  const kinematics::MachineModel& machine) {
+namespace {
+
+// The planner's time of consecutive records, the feed of the move ending at record i being
+// feedOf(i). Only a block and the next plannable one are held: the blend reads no further.
+template <class FeedOf>
+BlockPlannerTime planAlong(std::span<const kinematics::MachineAxes> axes, const FeedOf& feedOf,
+                           const kinematics::MachineModel& machine) {
     BlockPlannerTime result;
-    if (axes.size() < 2 || feeds.size() != axes.size()) {
-        return result;
-    }
-    std::vector<PlannedBlock> blocks;
-    blocks.reserve(axes.size() - 1);
-    for (std::size_t i = 1; i < axes.size(); ++i) {
-        PlannedBlock block = planBlock(axes[i - 1], axes[i], feeds[i], machine);
-        if (!std::isfinite(block.acceleration)) {
-            // No axis limits the move: it runs at F, as a planner without acceleration limits.
-            block.acceleration = kInfinity;
-        }
-        if (plannable(block)) {
-            blocks.push_back(block);
-        }
-    }
-    for (std::size_t i = 0; i < blocks.size(); ++i) {
-        const PlannedBlock& block = blocks[i];
-        if (!std::isfinite(block.acceleration)) {
+    std::optional<PlannedBlock> previous;
+    const auto add = [&result](const PlannedBlock& block, const PlannedBlock* next) {
+        if (!std::isfinite(block.acceleration)) { // no axis limits it: it runs at F
             result.time += block.length / block.velocity;
         } else {
             result.time += block.duration();
-            if (i + 1 < blocks.size() && std::isfinite(blocks[i + 1].acceleration)) {
-                const double overlap =
-                    std::min(blendVelocity(block, blocks[i + 1]), block.peakVelocity()) /
-                    block.acceleration;
-                result.time -= overlap;
+            if (next != nullptr && std::isfinite(next->acceleration)) {
+                result.time -= std::min(blendVelocity(block, *next), block.peakVelocity()) /
+                               block.acceleration;
             }
         }
         result.rotaryBlocks += block.rotary ? 1 : 0;
+        ++result.blocks;
+    };
+    for (std::size_t i = 1; i < axes.size(); ++i) {
+        const PlannedBlock block = planBlock(axes[i - 1], axes[i], feedOf(i), machine);
+        if (!plannable(block)) {
+            continue;
+        }
+        if (previous) {
+            add(*previous, &block);
+        }
+        previous = block;
     }
-    result.blocks = blocks.size();
+    if (previous) {
+        add(*previous, nullptr);
+    }
     result.meanBlockSeconds =
         result.blocks > 0 ? result.time / static_cast<double>(result.blocks) : 0.0;
     return result;
+}
+
+} // namespace
+
+BlockPlannerTime blockByBlockTime(std::span<const kinematics::MachineAxes> axes,
+                                  std::span<const double> feeds,
+                                  const kinematics::MachineModel& machine) {
+    if (feeds.size() != axes.size()) {
+        return {};
+    }
+    return planAlong(
+        axes, [feeds](std::size_t i) { return feeds[i]; }, machine);
+}
+
+BlockPlannerTime blockByBlockTime(std::span<const kinematics::MachineAxes> axes,
+                                  const PathSamples& path,
+                                  const kinematics::MachineModel& machine) {
+    if (path.size() != axes.size()) {
+        return {};
+    }
+    return planAlong(
+        axes, [&path](std::size_t i) { return path.feed(i); }, machine);
 }
 
 } // namespace bladeaxis::analysis

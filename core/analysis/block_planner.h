@@ -20,6 +20,7 @@
 // per block, not the smoothness of A, set the time. tests/controller runs the same programs
 // through LinuxCNC's real planner; docs/results.md compares the two.
 
+#include "core/analysis/axis_profile.h"
 #include "core/kinematics/machine_model.h"
 
 #include <cstddef>
@@ -40,5 +41,10 @@ struct BlockPlannerTime {
 BlockPlannerTime blockByBlockTime(std::span<const kinematics::MachineAxes> axes,
                                   std::span<const double> feeds,
                                   const kinematics::MachineModel& machine);
+
+// The same with each block's feed as the path states it (PathSamples::feed: a program's own
+// feeds, or those a re-scheduled program writes). None when the sizes differ.
+BlockPlannerTime blockByBlockTime(std::span<const kinematics::MachineAxes> axes,
+                                  const PathSamples& path, const kinematics::MachineModel& machine);
 
 } // namespace bladeaxis::analysis

@@ -70,10 +70,8 @@ Result<MethodResult> evaluateMethod(const EvaluationContext& context, std::strin
     result.machineAxes = std::move(machineAxes);
     result.profile = std::move(*profile);
     result.t1 = analysis::constantFeedTime(result.profile, *context.machine, false);
-    std::vector<double> feeds(records.size());
-    std::ranges::transform(records, feeds.begin(),
-                           [](const toolpath::ClRecord& record) { return record.feed; });
-    result.blockByBlock = analysis::blockByBlockTime(*result.machineAxes, feeds, *context.machine);
+    result.blockByBlock =
+        analysis::blockByBlockTime(*result.machineAxes, {.records = records}, *context.machine);
     if (auto t2 = analysis::convergedTimeOptimal(result.profile, *context.machine)) {
         result.t2 = t2->time;
     } else {

@@ -165,17 +165,6 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
     return program;
 }
 
-// The block-by-block model's time of the input: its machine axes and each block's feed.
-analysis::BlockPlannerTime blockByBlockOf(std::span<const kinematics::MachineAxes> axes,
-                                          std::span<const ClRecord> pass,
-                                          const kinematics::MachineModel& machine) {
-    std::vector<double> feeds(pass.size());
-    for (std::size_t i = 0; i < pass.size(); ++i) {
-        feeds[i] = pass[i].feed;
-    }
-    return analysis::blockByBlockTime(axes, feeds, machine);
-}
-
 Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
     const auto& records = result.program.path().records;
     result.pass = longestFeedRun(records);
@@ -220,7 +209,8 @@ Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel
     }
     result.original = std::move(*profile);
     result.constantFeed = analysis::constantFeedTime(result.original, result.machine, false);
-    result.blockByBlock = blockByBlockOf(*result.axes, pass, result.machine);
+    result.blockByBlock =
+        analysis::blockByBlockTime(*result.axes, {.records = pass}, result.machine);
     if (result.toolRadius) {
         result.originalInterpolation = kinematics::interpolationDeviation(
             *result.axes, result.machine.chain, *result.toolRadius);

@@ -232,18 +232,6 @@ struct NewMotion {
     kinematics::InterpolationDeviation interpolation;
 };
 
-// The block-by-block model's time of the new program: its machine axes and the feed of each
-// block as the written program states it.
-analysis::BlockPlannerTime blockByBlockOf(std::span<const kinematics::MachineAxes> axes,
-                                          const analysis::PathSamples& samples,
-                                          const kinematics::MachineModel& machine) {
-    std::vector<double> feeds(samples.size());
-    for (std::size_t i = 0; i < feeds.size(); ++i) {
-        feeds[i] = samples.feed(i);
-    }
-    return analysis::blockByBlockTime(axes, feeds, machine);
-}
-
 // With input.releaseNewToolAxes the schedule's new tool axes are freed once the analysis has
 // made its path parameter: the re-read check beside it never reads them.
 // Runs beside the rewrite and the re-read check: a cancelled job waits for it before it ends,
@@ -268,7 +256,7 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutco
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
-    motion.blockByBlock = blockByBlockOf(*outcome.axes, samples, *input.machine);
+    motion.blockByBlock = analysis::blockByBlockTime(*outcome.axes, samples, *input.machine);
     motion.interpolation =
         kinematics::interpolationDeviation(*outcome.axes, input.machine->chain, outcome.toolRadius);
     motion.timeOptimal =

@@ -54,31 +54,26 @@ void BM_AnalyseMillionRecords(benchmark::State& state) {
 }
 BENCHMARK(BM_AnalyseMillionRecords)->Unit(benchmark::kMillisecond);
 
-// The former default (the spline through the samples that carry motion), beside the default
-// controller filter above: what the choice of default costs.
-void BM_AnalyseMillionRecordsSpline(benchmark::State& state) {
+// The million records with another derivative method than the default controller filter: the
+// former default (the spline through the samples that carry motion), what the choice of default
+// costs, and raw finite differences.
+void analyseMillionRecordsWith(benchmark::State& state, analysis::DerivativeMethod method) {
     const HelixProgram program(recordCount());
     analysis::AxisProfileOptions options;
-    options.method = analysis::DerivativeMethod::Spline;
+    options.method = method;
     for (auto _ : state) {
         auto profile = analysis::analyseAxisMotion(program.axes, program.records, options);
         benchmark::DoNotOptimize(profile);
     }
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(recordCount()));
 }
-BENCHMARK(BM_AnalyseMillionRecordsSpline)->Unit(benchmark::kMillisecond);
-
-void BM_AnalyseMillionRecordsFiniteDifference(benchmark::State& state) {
-    const HelixProgram program(recordCount());
-    analysis::AxisProfileOptions options;
-    options.method = analysis::DerivativeMethod::FiniteDifference;
-    for (auto _ : state) {
-        auto profile = analysis::analyseAxisMotion(program.axes, program.records, options);
-        benchmark::DoNotOptimize(profile);
-    }
-    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(recordCount()));
-}
-BENCHMARK(BM_AnalyseMillionRecordsFiniteDifference)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(analyseMillionRecordsWith, Spline, analysis::DerivativeMethod::Spline)
+    ->Name("BM_AnalyseMillionRecordsSpline")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(analyseMillionRecordsWith, FiniteDifference,
+                  analysis::DerivativeMethod::FiniteDifference)
+    ->Name("BM_AnalyseMillionRecordsFiniteDifference")
+    ->Unit(benchmark::kMillisecond);
 
 } // namespace
 

@@ -20,6 +20,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -31,12 +32,10 @@ SERVO_PERIOD_S = 0.001
 RT_USER = "lcnc"
 
 
-def rt_user_env(run_dir):
+def rt_user_env(fifo_dir):
     """As root, rtapi_app must drop to an unprivileged user (RTAPI_UID) and put its socket
     (RTAPI_FIFO_PATH) in a folder that user owns; the user is created once if absent."""
     env = {}
-    fifo_dir = os.path.join(run_dir, "fifo")
-    os.makedirs(fifo_dir, exist_ok=True)
     if os.geteuid() == 0:
         try:
             user = pwd.getpwnam(RT_USER)
@@ -49,13 +48,37 @@ def rt_user_env(run_dir):
     return env
 
 
+def short_fifo_dir():
+    """rtapi_app's socket is a Unix socket, whose path holds at most 107 bytes: one under a
+    deep build tree (a CI checkout, a long program name) makes linuxcnc exit 255 without a
+    word. A fresh folder directly in /tmp keeps the path short wherever the run lives."""
+    return tempfile.mkdtemp(prefix="lcnc-", dir="/tmp")
+
+
+def log_tail(path, lines=15):
+    try:
+        with open(path, errors="replace") as f:
+            tail = f.read().splitlines()[-lines:]
+    except OSError:
+        return ""
+    return "\n".join(tail) if tail else "(linuxcnc printed nothing)"
+
+
 def run_linuxcnc(ini, run_dir, program, timeout_s):
     """One start of LinuxCNC; returns the driver's result (driver.json) or a failure dict."""
     out = os.path.join(run_dir, "attempt")
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
+    fifo_dir = short_fifo_dir()
+    try:
+        return start_once(ini, run_dir, out, program, timeout_s, fifo_dir)
+    finally:
+        shutil.rmtree(fifo_dir, ignore_errors=True)
+
+
+def start_once(ini, run_dir, out, program, timeout_s, fifo_dir):
     env = dict(os.environ, LCNC_CHECK_PROGRAM=program, LCNC_CHECK_OUT=out,
-               LCNC_CHECK_TIMEOUT=str(timeout_s), **rt_user_env(run_dir))
+               LCNC_CHECK_TIMEOUT=str(timeout_s), **rt_user_env(fifo_dir))
     env.pop("DISPLAY", None)  # no X server; the linuxcnc script must not look for one
     with open(os.path.join(out, "linuxcnc.log"), "w") as log:
         # Own session: on a hang the whole tree (script, task, io, rtapi_app) is ended by its
@@ -74,7 +97,10 @@ def run_linuxcnc(ini, run_dir, program, timeout_s):
             return {"exit": 3, "failure": "linuxcnc did not finish"}
     result_path = os.path.join(out, "driver.json")
     if not os.path.exists(result_path):
-        return {"exit": 3, "failure": f"linuxcnc exited {proc.returncode} before the driver finished"}
+        log = log_tail(os.path.join(out, "linuxcnc.log"))
+        return {"exit": 3,
+                "failure": f"linuxcnc exited {proc.returncode} before the driver finished",
+                "log": log}
     with open(result_path) as f:
         return json.load(f)
 
@@ -147,6 +173,8 @@ def main():
             break
         failures.append(result.get("failure", "?"))
         print(f"lcnc_run: attempt {attempt} failed ({failures[-1]}); retrying", file=sys.stderr)
+        if result.get("log"):
+            print(f"lcnc_run: the end of linuxcnc's output:\n{result['log']}", file=sys.stderr)
     else:
         print(f"lcnc_run: {program}: LinuxCNC failed {args.retries} times: {failures}",
               file=sys.stderr)

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace bladeaxis::io::cl {
 namespace {
@@ -40,6 +41,12 @@ std::string formatAs(NumberStyle style, double value, int freeDecimals) {
     return style.fixed ? formatFixed(value, style.decimals) : formatTrimmed(value, freeDecimals);
 }
 
+// Where one piece of a number token sits in the source text.
+struct TokenPiece {
+    std::size_t textBegin;
+    std::size_t size;
+};
+
 class AptRewriter {
   public:
     AptRewriter(const AptProgram& program, std::span<const toolpath::ClRecord> records)
@@ -69,6 +76,7 @@ class AptRewriter {
     std::size_t m_cursor = 0; // source text up to here is already in m_out
     Statement m_statement;
     detail::ParsedStatement m_parsed;
+    std::vector<TokenPiece> m_pieces;     // reused by replaceToken
     Vec3 m_effectiveAxis = Vec3::UnitZ(); // the axis a reader of m_out has at this point
     std::uint32_t m_effectiveFrame = 0;   // the MSYS frame m_effectiveAxis is written in
     bool m_insertedMultax = false;
@@ -102,13 +110,17 @@ void AptRewriter::emit(std::size_t begin, std::size_t end, std::string_view text
     m_cursor = end;
 }
 
-// A token split by a `$` continuation is replaced in its first piece; the other pieces are
-// emptied so the continuation lines themselves stay.
+// A token split by a `$` continuation (CATIA breaks lines at column 72, inside numbers too)
+// keeps its split: each piece but the last takes as many characters of the new text as it had,
+// the last takes the rest and never ends up empty, because a continuation line left blank
+// would join the next statement to this one. The lines keep their lengths when the new text
+// is as long as the old.
 void AptRewriter::replaceToken(const Field& field, std::string_view text) {
     const std::size_t begin = field.pos;
     const std::size_t end = field.pos + field.text.size();
     const auto& segments = m_statement.segments;
-    bool first = true;
+    std::vector<TokenPiece>& pieces = m_pieces;
+    pieces.clear();
     for (std::size_t s = m_statement.segmentIndex(begin); s < segments.size(); ++s) {
         const std::size_t segEnd =
             s + 1 < segments.size() ? segments[s + 1].joinedBegin : m_statement.body.size();
@@ -118,10 +130,16 @@ void AptRewriter::replaceToken(const Field& field, std::string_view text) {
             break;
         }
         if (from < to) {
-            emit(m_statement.textOffset(from), m_statement.textOffset(from) + (to - from),
-                 first ? text : std::string_view{});
-            first = false;
+            pieces.push_back(TokenPiece{m_statement.textOffset(from), to - from});
         }
+    }
+    std::size_t used = 0;
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+        const bool last = p + 1 == pieces.size();
+        const std::size_t left = text.size() - used;
+        const std::size_t take = last ? left : std::min(pieces[p].size, left > 0 ? left - 1 : 0);
+        emit(pieces[p].textBegin, pieces[p].textBegin + pieces[p].size, text.substr(used, take));
+        used += take;
     }
 }
 

@@ -138,6 +138,54 @@ TEST(RewriteApt, RewritesNumbersInsideDollarContinuations) {
               "FEDRAT/60\r\nGOTO/1.000,2.000,$\r\n 4.000,$\r\n1.0,0.0,0.0");
 }
 
+// CATIA V5 breaks APT lines at column 72, inside numbers too.
+TEST(RewriteApt, KeepsTheSplitOfANumberBrokenByAContinuation) {
+    const std::string text =
+        "FEDRAT/60\nGOTO/1.000,2.000,3.12$\n345,0.000000,0.000000,1.00000$\n0\n";
+    const AptProgram program = *parseApt(text, "t.apt");
+    std::vector<toolpath::ClRecord> records = program.path.records;
+    records[0].tip.z() = 4.56789;
+    records[0].axis = Vec3(0, 0.6, 0.8);
+    EXPECT_EQ(rewriteApt(program, records).value(),
+              "FEDRAT/60\nGOTO/1.000,2.000,4.56$\n789,0.000000,0.600000,0.80000$\n0\n");
+}
+
+// A last piece of one character must not become an empty line: the continuation would then
+// join the next statement to this one.
+TEST(RewriteApt, NeverEmptiesTheLastLineOfASplitNumber) {
+    const std::string text =
+        "FEDRAT/60\nGOTO/1.0,2.0,3.0,0.000000,0.000000,1.00000$\n0\nGOTO/1.0,2.0,3.5\n";
+    const AptProgram program = *parseApt(text, "t.apt");
+    std::vector<toolpath::ClRecord> records = program.path.records;
+    records[0].axis = Vec3(0, 0.6, 0.8);
+    records[1].axis = records[0].axis;
+    Result<std::string> rewritten = rewriteApt(program, records);
+    ASSERT_TRUE(rewritten.has_value()) << rewritten.error().toString();
+    EXPECT_EQ(*rewritten,
+              "FEDRAT/60\nGOTO/1.0,2.0,3.0,0.000000,0.600000,0.80000$\n0\nGOTO/1.0,2.0,3.5\n");
+    Result<AptProgram> reread = parseApt(*rewritten, "rewritten");
+    ASSERT_TRUE(reread.has_value()) << reread.error().toString();
+    ASSERT_EQ(reread->path.records.size(), 2u);
+    EXPECT_LT((reread->path.records[0].axis - records[0].axis).norm(), 1e-9);
+}
+
+// A longer or shorter new number: the pieces before the last keep their widths as far as the
+// text allows and the last piece takes the rest (never nothing).
+TEST(RewriteApt, ASplitNumberThatChangesLengthStillReadsBack) {
+    const std::string text = "FEDRAT/60\nGOTO/1.0,2.0,-9.9$\n9,0,0,1\nGOTO/1.0,2.0,3.5,0,0,1\n";
+    const AptProgram program = *parseApt(text, "t.apt");
+    for (double z : {-10.25, 0.5, 5.0}) {
+        std::vector<toolpath::ClRecord> records = program.path.records;
+        records[0].tip.z() = z;
+        Result<std::string> rewritten = rewriteApt(program, records);
+        ASSERT_TRUE(rewritten.has_value()) << rewritten.error().toString();
+        Result<AptProgram> reread = parseApt(*rewritten, "rewritten");
+        ASSERT_TRUE(reread.has_value()) << *rewritten << reread.error().toString();
+        ASSERT_EQ(reread->path.records.size(), 2u) << *rewritten;
+        EXPECT_DOUBLE_EQ(reread->path.records[0].tip.z(), z) << *rewritten;
+    }
+}
+
 TEST(RewriteApt, AppendsTheAxisAndInsertsMultaxWhenAThreeNumberGotoTurns) {
     const AptProgram program = *parseApt("FEDRAT/60\r\nGOTO/1.000,2.000,3.000\r\nGOTO/1.000,2.000,"
                                          "4.000\r\nGOTO/1.000,2.000,5.000\r\n",

@@ -414,6 +414,27 @@ RotaryLetters rotaryLetters(const kinematics::MachineModel& machine) {
             machine.programWord(kinematics::AxisId::B).sign};
 }
 
+AngleWordsRead angleWordsRead(const io::LoadedProgram& program, const io::ReadOptions& read) {
+    if (program.format() != io::ProgramFormat::Gcode) {
+        return AngleWordsRead::NoAngleWords;
+    }
+    if (!read.angleUnit) {
+        return AngleWordsRead::Inferred;
+    }
+    return *read.angleUnit == io::AngleUnit::Radians ? AngleWordsRead::GivenRadians
+                                                     : AngleWordsRead::GivenDegrees;
+}
+
+// A refusal of the re-scheduling turned into an analysis's warning: the figures that follow
+// describe the program as read.
+std::string analysisOnlyNote(const Error& refusal) {
+    std::string note = refusal.toString();
+    if (note.ends_with(". Nothing was written")) {
+        note.resize(note.size() - std::string_view(". Nothing was written").size());
+    }
+    return note + "; the analysis's figures take the program as read";
+}
+
 // The four-axis condition on B before scheduling: a re-scheduling job refuses a varying tilt
 // (nothing would be right about the written program), an analysis only reports it. Noise within
 // the tolerance is snapped to the median after the original motion was analysed, so the
@@ -430,14 +451,24 @@ Status checkTilt(JobResult& result, const JobSpec& spec, ProgressSink& progress)
         progress.warning(result.warnings.back());
         return {};
     }
-    if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
+    const bool knownRadius = result.toolRadius && *result.toolRadius > 0.0;
+    if (!knownRadius && (spec.reschedule || spec.compare)) {
         return {}; // the re-scheduling refuses an unknown radius with its own message
     }
-    if (spec.reschedule || spec.compare) {
-        if (auto helical = checkHelical(mutablePass(result), *result.toolRadius, file, letters);
-            !helical) {
+    // An analysis alone reports figures for what it read, so it warns where a re-scheduling
+    // refuses: a pass that does not turn is most often radians read as degrees. Without a
+    // radius the tips turn as the ball centres do.
+    if (auto helical = checkHelical(mutablePass(result), result.toolRadius.value_or(0.0), file,
+                                    letters, angleWordsRead(result.program, spec.read));
+        !helical) {
+        if (spec.reschedule || spec.compare) {
             return helical;
         }
+        result.warnings.push_back(analysisOnlyNote(helical.error()));
+        progress.warning(result.warnings.back());
+    }
+    if (!knownRadius) {
+        return {};
     }
     tilt->snappedRecords = snapTilt(mutablePass(result), tilt->medianRad, *result.toolRadius);
     if (const std::string note = describeSnap(*tilt, file, letters); !note.empty()) {
@@ -650,6 +681,11 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
                      .warnings = {},
                      .seconds = 0.0};
     result.warnings = result.program.path().warnings;
+    if (auto status =
+            checkStatedCutter(result.program, spec.toolRadius, spec.reschedule, result.warnings);
+        !status) {
+        return std::unexpected(status.error());
+    }
     result.toolRadius = jobToolRadius(spec, generatedRadius, result.program, result.warnings);
     if (auto status = checkToolRadius(result.toolRadius, result.program.path()); !status) {
         return std::unexpected(status.error());

@@ -128,8 +128,33 @@ std::string describeSnap(const TiltCheck& tilt, const std::string& file, RotaryL
            " cutting record(s) was snapped to the median, every ball centre kept";
 }
 
+namespace {
+
+std::string helicalAdvice(RotaryLetters letters, AngleWordsRead angles) {
+    const std::string words =
+        "the " + std::string(1, letters.table) + " and " + std::string(1, letters.tilt) + " words";
+    const std::string machine = "check that the machine file's rotary axis is the program's";
+    switch (angles) {
+    case AngleWordsRead::NoAngleWords:
+        return "Check that the machine file's rotary axis is the program's";
+    case AngleWordsRead::Inferred:
+        return "If " + words + " are in radians, give --angle-unit rad; " + machine;
+    case AngleWordsRead::GivenDegrees:
+        return "--angle-unit deg read " + words +
+               " as degrees: if they are radians, give "
+               "--angle-unit rad; " +
+               machine;
+    case AngleWordsRead::GivenRadians:
+        return "--angle-unit rad read " + words + " as radians: check that they are, and " +
+               machine.substr(6);
+    }
+    return machine;
+}
+
+} // namespace
+
 Status checkHelical(std::span<const toolpath::ClRecord> pass, double toolRadius,
-                    const std::string& file, RotaryLetters letters) {
+                    const std::string& file, RotaryLetters letters, AngleWordsRead angles) {
     if (pass.size() < 2) {
         return {};
     }
@@ -150,13 +175,9 @@ Status checkHelical(std::span<const toolpath::ClRecord> pass, double toolRadius,
                      "not a helical blade pass: the ball centres turn only " +
                          degrees(std::abs(turned), 1) + " about the rotary axis from here to " +
                          at(file, pass.back().line) +
-                         " (a helical pass turns 360 deg per layer, "
-                         "at least " +
-                         degrees(kMinimumHelicalTurnRad, 0) + "). If the " +
-                         std::string(1, letters.table) + " and " + std::string(1, letters.tilt) +
-                         " words are in radians, give --angle-unit rad; check "
-                         "that the machine file's rotary axis is the program's. Nothing was "
-                         "written",
+                         " (a helical pass turns 360 deg per layer, at least " +
+                         degrees(kMinimumHelicalTurnRad, 0) + "). " +
+                         helicalAdvice(letters, angles) + ". Nothing was written",
                      {file, pass.front().line, 0});
 }
 

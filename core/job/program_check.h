@@ -77,10 +77,15 @@ std::string describeSnap(const TiltCheck& tilt, const std::string& file, RotaryL
 // centres by a few degrees at most.
 inline constexpr double kMinimumHelicalTurnRad = units::kPi;
 
+// How the program's rotary words were read, for the advice of a refusal: CL data and point
+// tables have none (vectors); G-code's unit comes from its header or values, or was given.
+enum class AngleWordsRead { NoAngleWords, Inferred, GivenDegrees, GivenRadians };
+
 // Refuses (ErrorCode::Geometry) a pass whose ball centres turn less than kMinimumHelicalTurnRad
-// about the rotary axis (x), naming its first and last record.
+// about the rotary axis (x), naming its first and last record; the advice names radians only
+// where the unit may be the cause.
 Status checkHelical(std::span<const toolpath::ClRecord> pass, double toolRadius,
-                    const std::string& file, RotaryLetters letters);
+                    const std::string& file, RotaryLetters letters, AngleWordsRead angles);
 
 // Refuses (ErrorCode::Geometry) a schedule whose CAM orientation (the input's theta) lies more
 // than the tolerance outside the raw channel of its layer, naming the first such record.

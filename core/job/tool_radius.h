@@ -4,10 +4,12 @@
 // and a given radius that disagrees with the one the program states is a conflict the batch
 // warns about and the window shows and asks about before it exports.
 
+#include "core/base/error.h"
 #include "core/io/program.h"
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace bladeaxis::job {
 
@@ -23,5 +25,11 @@ bool toolRadiusDisagrees(std::optional<double> given, std::optional<double> stat
 // The warning of a given radius that disagrees with the stated one, naming the file, both radii
 // and the statement; empty when they agree or either is missing.
 std::string toolRadiusConflict(std::optional<double> given, const io::LoadedProgram& program);
+
+// A flat or bull-nose cutter the program states (toolpath::StatedCutter): re-scheduling it is
+// refused (Geometry, at the statement's line) unless the job gives a ball radius, in which case
+// a warning says the stated cutter is overruled; an analysis alone only warns.
+Status checkStatedCutter(const io::LoadedProgram& program, std::optional<double> given,
+                         bool reschedules, std::vector<std::string>& warnings);
 
 } // namespace bladeaxis::job

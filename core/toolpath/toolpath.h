@@ -80,12 +80,23 @@ inline Vec3 ballCentre(const ClRecord& record, double radius) {
     return record.tip + radius * record.axis.normalized();
 }
 
+// A flat or bull-nose cutter the file states (its corner radius is not half its diameter).
+// Re-orienting such a tool moves its contact point on the surface, so keeping its ball centre
+// would not keep the surface: the job refuses it unless the job itself states a ball.
+struct StatedCutter {
+    double diameter = 0.0;     // mm
+    double cornerRadius = 0.0; // mm
+    int line = 0;              // 1-based line of the statement
+    std::string statement;     // as the file writes it: "CUTTER/8,1", "(T1 D=8. CR=1.)"
+};
+
 struct Toolpath {
     std::string sourceFile; // for diagnostics ("blade.nc:120")
     SourceFormat format = SourceFormat::Gcode;
-    std::vector<ClRecord> records;     // in program order, rapids included
-    std::optional<double> toolRadius;  // mm, when the file states it (APT CUTTER/TLDATA)
-    std::vector<std::string> warnings; // non-fatal findings of the reader, with file:line
+    std::vector<ClRecord> records;             // in program order, rapids included
+    std::optional<double> toolRadius;          // mm, when the file states it (APT CUTTER/TLDATA)
+    std::optional<StatedCutter> nonBallCutter; // the first flat or bull-nose cutter stated
+    std::vector<std::string> warnings;         // non-fatal findings of the reader, with file:line
 };
 
 } // namespace bladeaxis::toolpath

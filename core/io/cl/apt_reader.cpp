@@ -370,20 +370,21 @@ void AptReader::readUnits() {
     }
 }
 
-// A flat (corner radius 0) or bull-nose cutter is refused: re-orienting it moves its contact
-// point on the surface, so keeping the ball centre would not keep the surface.
+// A flat (corner radius 0) or bull-nose cutter gives no ball radius: it is recorded with its
+// line, and the job refuses to re-orient it unless the job states a ball (see StatedCutter).
 void AptReader::setTool(double diameter, std::optional<double> cornerRadius,
                         std::size_t radiusPos) {
     const double half = 0.5 * diameter * lengthScale();
     const std::optional<double> radius =
         cornerRadius ? std::optional(*cornerRadius * lengthScale()) : std::nullopt;
     if (radius && std::abs(*radius - half) > kBallRadiusTolMm) {
-        fail(radiusPos, "expected a ball-end cutter (corner radius = half the diameter, " +
-                            formatShortest(half) + " mm), got a corner radius of " +
-                            formatShortest(*radius) +
-                            " mm: re-orienting a flat or bull-nose cutter moves its contact "
-                            "point and changes the surface; BladeAxis re-schedules ball-end "
-                            "cutters only");
+        if (!m_program.path.nonBallCutter) {
+            std::string statement(m_statement.body);
+            statement.erase(0, statement.find_first_not_of(" \t"));
+            m_program.path.nonBallCutter = toolpath::StatedCutter{
+                2.0 * half, *radius, m_statement.locate(radiusPos, m_file).line,
+                statement.substr(0, statement.find_last_not_of(" \t\r") + 1)};
+        }
         return;
     }
     m_program.path.toolRadius = radius ? *radius : half;

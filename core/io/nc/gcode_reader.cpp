@@ -102,11 +102,13 @@ std::size_t byteOrderMarkLength(std::string_view text) {
 struct StatedTool {
     detail::ToolComment tool;
     int line = 0;
+    std::string text; // the comment line, as written
 };
 
 // The ball radius the header comments state (tools stated before the first move), converted to
-// mm (`inch`: the first move is in inches); a warning instead where they state no ball end or
-// disagree, so the radius must be given.
+// mm (`inch`: the first move is in inches). A flat or bull-nose cutter gives none and is
+// recorded for the job to refuse (StatedCutter); ball radii that disagree give a warning, so
+// the radius must be given.
 void applyStatedTools(const std::vector<StatedTool>& tools, bool inch, GcodeProgram& program) {
     if (tools.empty() || program.path.toolRadius) { // a Heidenhain TOOL DEF states it exactly
         return;
@@ -115,11 +117,9 @@ void applyStatedTools(const std::vector<StatedTool>& tools, bool inch, GcodeProg
     const double toMm = inch ? 25.4 : 1.0;
     for (const StatedTool& stated : tools) {
         if (!stated.tool.isBallEnd()) {
-            program.path.warnings.push_back(
-                file + ":" + std::to_string(stated.line) +
-                ": the header names a cutter D=" + formatShortest(stated.tool.diameter) +
-                " CR=" + formatShortest(stated.tool.cornerRadius) +
-                ", not a ball end (CR is not D/2): its radius is not used");
+            program.path.nonBallCutter =
+                toolpath::StatedCutter{stated.tool.diameter * toMm, stated.tool.cornerRadius * toMm,
+                                       stated.line, stated.text};
             return;
         }
         if (stated.tool.cornerRadius != tools.front().tool.cornerRadius) {
@@ -230,7 +230,7 @@ std::size_t interpretLines(GcodeProgram& program, std::string_view text,
         }
         if (interpreter.recordCount() == 0) {
             if (const auto tool = detail::toolInComment(line)) {
-                statedTools.push_back({*tool, lineNumber});
+                statedTools.push_back({*tool, lineNumber, std::string(line)});
             }
         }
         if (auto issue = detail::scanBlock(line, block, program.dialect)) {

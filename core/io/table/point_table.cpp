@@ -102,6 +102,7 @@ class TableReader {
 
   private:
     bool readLine(const Line& line);
+    std::vector<std::string> optionColumns() const;
     bool setColumns(const std::vector<std::string>& names, const Line& line);
     void readRecord(const std::vector<Token>& tokens, const Line& line);
     void fail(const Line& line, std::size_t column, std::string message) {
@@ -192,27 +193,38 @@ void TableReader::readRecord(const std::vector<Token>& tokens, const Line& line)
     m_program.sources.push_back(source);
 }
 
+std::vector<std::string> TableReader::optionColumns() const {
+    std::vector<std::string> names;
+    for (const Token& token : split(*m_options.tableColumns)) {
+        names.push_back(lower(token.text));
+    }
+    return names;
+}
+
 bool TableReader::readLine(const Line& line) {
     if (isCommentOrBlank(line.text)) {
         return true;
     }
     const std::vector<Token> tokens = split(line.text);
     if (!m_columns) {
-        if (!allNumbers(tokens)) {
+        // --columns names the columns also where the file has a header line: it is how a
+        // header this reader does not know ("nx ny nz") is read.
+        if (m_options.tableColumns) {
+            if (!setColumns(optionColumns(), line)) {
+                return false;
+            }
+            if (!allNumbers(tokens)) {
+                m_program.path.warnings.push_back(
+                    std::string(m_file) + ":" + std::to_string(line.number) +
+                    ": the header line is replaced by --columns " + *m_options.tableColumns);
+                return true;
+            }
+        } else if (!allNumbers(tokens)) {
             std::vector<std::string> names;
             for (const Token& token : tokens) {
                 names.push_back(lower(token.text));
             }
             return setColumns(names, line);
-        }
-        if (m_options.tableColumns) {
-            std::vector<std::string> names;
-            for (const Token& token : split(*m_options.tableColumns)) {
-                names.push_back(lower(token.text));
-            }
-            if (!setColumns(names, line)) {
-                return false;
-            }
         } else if (tokens.size() == 6) {
             setColumns({"x", "y", "z", "i", "j", "k"}, line);
         } else {

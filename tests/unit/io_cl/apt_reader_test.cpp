@@ -98,24 +98,21 @@ TEST(ParseApt, TakesTheBallRadiusFromTldataAndCutter) {
     EXPECT_EQ(apt.path.toolRadius, 6.0);
 }
 
-TEST(ParseApt, RefusesAFlatOrBullNoseCutterNamingItsCornerRadius) {
+// The reader records such a cutter with its line; the job decides (it refuses to re-schedule
+// it unless the job states a ball).
+TEST(ParseApt, RecordsAFlatOrBullNoseCutterWithItsLineAndGivesNoRadius) {
     for (const char* cutter : {"CUTTER/8,0", "CUTTER/8,1", "TLDATA/MILL,8,1"}) {
         const std::string text = std::string("PARTNO X\n") + cutter + "\nRAPID\nGOTO/0,0,0\nFINI\n";
-        const auto program = parseApt(text, "test.cls");
-        ASSERT_FALSE(program.has_value()) << cutter;
-        const std::string message = program.error().toString();
-        EXPECT_NE(message.find("test.cls:2:"), std::string::npos) << message;
-        EXPECT_NE(message.find("expected a ball-end cutter"), std::string::npos) << message;
+        const AptProgram program = parseOk(text);
+        EXPECT_FALSE(program.path.toolRadius.has_value()) << cutter;
+        ASSERT_TRUE(program.path.nonBallCutter.has_value()) << cutter;
+        EXPECT_EQ(program.path.nonBallCutter->line, 2) << cutter;
+        EXPECT_EQ(program.path.nonBallCutter->statement, cutter);
+        EXPECT_EQ(program.path.nonBallCutter->diameter, 8.0) << cutter;
     }
-    EXPECT_EQ(parseOk("CUTTER/8,4\nRAPID\nGOTO/0,0,0\n").path.toolRadius, 4.0);
-}
-
-TEST(ParseApt, AFileEndingWithCatiasEndIsNotTakenForTruncated) {
-    const AptProgram ended = parseOk("CUTTER/8,4\nFEDRAT/600\nGOTO/0,0,0\nGOTO/1,0,0\nEND\n");
-    EXPECT_TRUE(ended.path.warnings.empty()) << ended.path.warnings.front();
-    const AptProgram cut = parseOk("CUTTER/8,4\nFEDRAT/600\nGOTO/0,0,0\nGOTO/1,0,0\n");
-    ASSERT_EQ(cut.path.warnings.size(), 1U);
-    EXPECT_NE(cut.path.warnings[0].find("may be truncated"), std::string::npos);
+    const AptProgram ball = parseOk("CUTTER/8,4\nRAPID\nGOTO/0,0,0\n");
+    EXPECT_EQ(ball.path.toolRadius, 4.0);
+    EXPECT_FALSE(ball.path.nonBallCutter.has_value());
 }
 
 TEST(ParseApt, IgnoresOtherMajorWordsAndStopsAtFini) {

@@ -56,7 +56,9 @@ TEST(GcodeShopPrograms, RadiansWithTheAngleUnitReadLikeTheDegreeProgram) {
 TEST(GcodeShopPrograms, RotaryWordsWithinTwoPiAreRefusedAsAmbiguousNamingTheOption) {
     const auto program = parse(kRadians);
     ASSERT_FALSE(program.has_value());
-    EXPECT_EQ(program.error().where.line, 2);
+    // Named at the largest word, A1.0471975512 on line 4: the word that could be either unit.
+    EXPECT_EQ(program.error().where.line, 4);
+    EXPECT_EQ(program.error().where.column, 6);
     EXPECT_NE(program.error().message.find("ambiguous"), std::string::npos);
     EXPECT_NE(program.error().message.find("--angle-unit"), std::string::npos);
 }

@@ -88,13 +88,13 @@ TEST(ToolComment, AnInchProgramsRadiusIsConvertedToMillimetres) {
     EXPECT_DOUBLE_EQ(*program.path.toolRadius, 6.35);
 }
 
-TEST(ToolComment, ABullNoseOrTwoDifferentBallsGiveAWarningAndNoRadius) {
+TEST(ToolComment, ABullNoseIsRecordedWithItsLineAndTwoDifferentBallsGiveAWarningAndNoRadius) {
     const GcodeProgram bull = parseText("(T3 D=10. CR=1.)\nG21 G90 G94\n" + kMoves);
     EXPECT_FALSE(bull.path.toolRadius.has_value());
-    ASSERT_FALSE(bull.path.warnings.empty());
-    EXPECT_NE(bull.path.warnings.front().find("header.nc:1: the header names a cutter D=10 CR=1"),
-              std::string::npos)
-        << bull.path.warnings.front();
+    ASSERT_TRUE(bull.path.nonBallCutter.has_value());
+    EXPECT_EQ(bull.path.nonBallCutter->line, 1);
+    EXPECT_EQ(bull.path.nonBallCutter->statement, "(T3 D=10. CR=1.)");
+    EXPECT_EQ(bull.path.nonBallCutter->cornerRadius, 1.0);
     const GcodeProgram two = parseText("(T1 D=8. CR=4.)\n(T2 D=6. CR=3.)\nG21 G90 G94\n" + kMoves);
     EXPECT_FALSE(two.path.toolRadius.has_value());
     ASSERT_FALSE(two.path.warnings.empty());

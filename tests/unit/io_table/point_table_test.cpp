@@ -58,6 +58,22 @@ TEST(PointTable, OtherColumnCountsNeedTheColumnsOption) {
     EXPECT_NEAR(read->path.records[0].feed, 15.0, kEps);
 }
 
+TEST(PointTable, TheColumnsOptionOverridesAHeaderLineItDoesNotKnowWithAWarning) {
+    const std::string text = "x y z nx ny nz\n1 2 3 0 0.6 0.8\n";
+    EXPECT_FALSE(parsePointTable(text, "t.txt", withFeed(600)).has_value());
+    ReadOptions options = withFeed(600);
+    options.tableColumns = "x,y,z,i,j,k";
+    const auto read = parsePointTable(text, "t.txt", options);
+    ASSERT_TRUE(read.has_value()) << read.error().toString();
+    ASSERT_EQ(read->path.records.size(), 1u);
+    EXPECT_NEAR((read->path.records[0].axis - Vec3(0, 0.6, 0.8)).norm(), 0.0, kEps);
+    EXPECT_EQ(read->path.records[0].line, 2);
+    ASSERT_EQ(read->path.warnings.size(), 1u);
+    EXPECT_NE(read->path.warnings[0].find("t.txt:1: the header line is replaced by --columns"),
+              std::string::npos)
+        << read->path.warnings[0];
+}
+
 TEST(PointTable, NoFeedIsOneErrorNamingTheOption) {
     const auto refused = parsePointTable("1 2 3 0 0 1\n2 2 3 0 0 1\n3 2 3 0 0 1\n", "t.txt");
     ASSERT_FALSE(refused.has_value());

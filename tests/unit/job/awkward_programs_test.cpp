@@ -229,6 +229,50 @@ TEST(AwkwardPrograms, RadiansReadAsDegreesAreRefusedAsNotHelicalAndReadWithTheAn
     EXPECT_NE(written.find(" B0.08726"), std::string::npos) << "B not written in radians";
 }
 
+// The analysis reports figures of what it read: it says the pass does not turn and why, instead
+// of reporting radians read as degrees silently.
+TEST(AwkwardPrograms, AnAnalysisOfRadiansReadAsDegreesWarnsThatThePassDoesNotTurn) {
+    const CleanPass& clean = cleanPass();
+    const auto machine = kinematics::defaultBladeMachine();
+    JobSpec spec = rescheduleJob(
+        writeProgram("radians_analysis.nc",
+                     gcodeText(clean.path, machine, clean.feedMmPerMin, RotaryUnit::Radians)));
+    spec.outputProgram.clear();
+    spec.reschedule = false;
+    const auto result = runQuietly(spec);
+    ASSERT_TRUE(result.has_value()) << result.error().toString();
+    const auto warning =
+        std::find_if(result->warnings.begin(), result->warnings.end(), [](const std::string& text) {
+            return text.find("not a helical blade pass") != std::string::npos;
+        });
+    ASSERT_NE(warning, result->warnings.end());
+    EXPECT_NE(warning->find("give --angle-unit rad"), std::string::npos) << *warning;
+    EXPECT_NE(warning->find("the analysis's figures take the program as read"), std::string::npos)
+        << *warning;
+    EXPECT_EQ(warning->find("Nothing was written"), std::string::npos) << *warning;
+}
+
+// With --angle-unit rad given, the advice is not to give it again.
+TEST(AwkwardPrograms, APassThatDoesNotTurnWithRadiansGivenIsNotToldToGiveRadians) {
+    const CleanPass& clean = cleanPass();
+    const auto machine = kinematics::defaultBladeMachine();
+    toolpath::Toolpath shortPass = clean.path;
+    shortPass.records.resize(shortPass.records.size() / 20);
+    JobSpec spec = rescheduleJob(
+        writeProgram("short_radians.nc",
+                     gcodeText(shortPass, machine, clean.feedMmPerMin, RotaryUnit::Radians)));
+    spec.read.angleUnit = io::AngleUnit::Radians;
+    const auto result = runQuietly(spec);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_NE(result.error().message.find("not a helical blade pass"), std::string::npos)
+        << result.error().message;
+    EXPECT_NE(result.error().message.find("--angle-unit rad read the A and B words as radians"),
+              std::string::npos)
+        << result.error().message;
+    EXPECT_EQ(result.error().message.find("give --angle-unit rad"), std::string::npos)
+        << result.error().message;
+}
+
 TEST(AwkwardPrograms, CrlfAndContinuationLinesRescheduleLikeTheCleanProgram) {
     const CleanPass& clean = cleanPass();
     AptStyle style;

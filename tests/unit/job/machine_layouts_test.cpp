@@ -269,5 +269,25 @@ TEST(MachineLayouts, AProgramThatTiltsBIsRefusedOnAFixedHeadMachine) {
         << result.error().message;
 }
 
+TEST(MachineLayouts, AFixedHeadRefusesTheFirstTiltWordOnlyNotEveryBlockThatRepeatsIt) {
+    JobSpec spec;
+    spec.program = "tilted.nc";
+    std::string text = "G21 G90 G94\nG1 X0. Y0. Z5. A10. B5. F3000.\n";
+    for (int i = 1; i <= 20; ++i) {
+        text += "X" + std::to_string(i) + ". A" + std::to_string(10 + i) + ". B" +
+                std::to_string(5 + i) + ".\n";
+    }
+    spec.programText = text + "M30\n";
+    spec.machineFile = tableAMachineFile();
+    spec.toolRadius = 4.0;
+    const auto result = runQuietly(spec);
+    ASSERT_FALSE(result.has_value());
+    EXPECT_EQ(result.error().where.line, 2);
+    EXPECT_TRUE(result.error().more.empty()) << result.error().toString();
+    EXPECT_NE(result.error().message.find("the first such word; later ones are not listed"),
+              std::string::npos)
+        << result.error().message;
+}
+
 } // namespace
 } // namespace bladeaxis::job::test

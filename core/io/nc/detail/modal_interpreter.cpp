@@ -305,12 +305,19 @@ inline bool ModalInterpreter::applyAxisWords(const Context& at, std::uint8_t axi
             style.hasPoint || (!word.plainStyle && hasExponent(word.text(at.line)));
         const double value = axisWordValue(at, axis, word, decimal);
         if (bit == m_tiltBit && !m_machine.hasB() && value != 0.0) {
+            // One refusal says it all: every later tilt word is the same mismatch, and listing
+            // each (with its own value) would bury the cause under twenty lines.
+            if (m_fixedHeadRefused) {
+                return false;
+            }
+            m_fixedHeadRefused = true;
             const std::string tilt(1, kAxisLetters[axis]);
             return fail(at, word.letter,
                         tilt + std::string(word.text(at.line)) + ": the machine '" +
                             m_machine.name + "' has a fixed head (no " + tilt +
                             " axis); expected no " + tilt + " word or " + tilt +
-                            "0, or the machine file of the machine this program was posted for");
+                            "0, or the machine file of the machine this program was posted for "
+                            "(the first such word; later ones are not listed)");
         }
         const RotaryForm form = effectiveForm(word, axis);
         const bool relative =
@@ -384,7 +391,11 @@ inline double ModalInterpreter::axisWordValue(const Context& at, std::size_t axi
         value *= rotary ? rules.incrementDeg : (m_inch ? rules.incrementInch : rules.incrementMm);
     }
     if (rotary) {
-        m_largestRotaryWord = std::max(m_largestRotaryWord, std::abs(word.value));
+        if (std::abs(word.value) > m_largestRotaryWord) {
+            m_largestRotaryWord = std::abs(word.value);
+            m_largestRotaryLine = at.lineNumber;
+            m_largestRotaryColumn = static_cast<int>(word.letter) + 1;
+        }
         m_firstRotaryLine = m_firstRotaryLine == 0 ? at.lineNumber : m_firstRotaryLine;
         return m_angleUnit == AngleUnit::Radians ? value : units::degToRad(value);
     }
@@ -403,9 +414,10 @@ void ModalInterpreter::finish() {
     // A rotary word beyond 2 pi cannot be radians; below it, a helical blade pass in degrees
     // would turn less than 6.3 deg, so the values alone cannot tell.
     if (!m_angleUnit && m_largestRotaryWord > 0.0 && m_largestRotaryWord <= units::kTwoPi) {
-        m_errors.add(m_firstRotaryLine, 1,
+        // Named at the largest word: the one that shows the values could be either unit.
+        m_errors.add(m_largestRotaryLine, m_largestRotaryColumn,
                      "the unit of the rotary words is ambiguous: every A and B is at most " +
-                         formatTrimmed(m_largestRotaryWord, 6) +
+                         formatTrimmed(m_largestRotaryWord, 6) + " (this word)" +
                          " (<= 2 pi), which reads as radians as well as degrees; give "
                          "--angle-unit deg|rad (job key angle_unit) or a header comment such as "
                          "(ANGLES IN DEGREES)");

@@ -116,6 +116,9 @@ class ModalInterpreter {
     std::optional<AngleUnit> m_angleUnit; // given or declared; empty: degrees, checked in finish
     int m_unitDeclarationLine = 0;        // the header comment that declared it, if any
     double m_largestRotaryWord = 0.0;     // max |A|, |B| as written
+    bool m_fixedHeadRefused = false;      // a tilt word on a fixed-head machine was refused
+    int m_largestRotaryLine = 0;          // where it is written (1-based line and column)
+    int m_largestRotaryColumn = 0;
     int m_firstRotaryLine = 0;
     int m_firstPointLine = 0;   // first non-zero axis word with a decimal point
     int m_firstIntegerLine = 0; // first non-zero axis word without one

@@ -1,6 +1,7 @@
 #include "ui/comparison_summary.h"
 
 #include "core/base/units.h"
+#include "core/job/job.h"
 #include "ui/number_text.h"
 
 #include <QHeaderView>
@@ -10,6 +11,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
 namespace bladeaxis::ui {
@@ -148,32 +150,53 @@ void ComparisonSummary::fillRow(int row, const compare::MethodResult& method) {
     }
 }
 
-// The rule, said with the recommendation: among the methods inside the feasible channel (the
-// original aside), the fewest A reversals, then the shortest cycle time of this machine's
-// controller model, then the lowest peak A acceleration.
+// Cycle times closer than this count as equal: they are models of a controller, not its
+// measurement (the block-by-block and look-ahead models of one program differ by far more), and
+// a few per cent of time is not worth several times the peak acceleration.
+constexpr double kSameTime = 0.05;
+
+// The rule, said with the recommendation: among the programs the window can export (the S-θ
+// presets and the edited schedule) that stay inside the feasible channel, the fewest A
+// reversals, then the shorter cycle time of this machine's controller model when the times
+// differ by more than 5 %, else the lower peak A acceleration. The optimum and the quaternion
+// baseline are references: the recommendation says how close the choice comes to the optimum.
 void ComparisonSummary::recommend(const compare::Comparison& comparison, const QString& exported,
                                   kinematics::Planner planner) {
-    const compare::MethodResult* best = nullptr;
-    const auto key = [planner](const compare::MethodResult& m) {
-        return std::tuple(m.profile.aReversals.count, machineTime(m, planner),
-                          m.profile.axis(AxisId::A).peakAcceleration);
+    const auto better = [planner](const compare::MethodResult& a, const compare::MethodResult& b) {
+        if (a.profile.aReversals.count != b.profile.aReversals.count) {
+            return a.profile.aReversals.count < b.profile.aReversals.count;
+        }
+        const double ta = machineTime(a, planner), tb = machineTime(b, planner);
+        if (std::abs(ta - tb) > kSameTime * std::max(ta, tb)) {
+            return ta < tb;
+        }
+        return a.profile.axis(AxisId::A).peakAcceleration <
+               b.profile.axis(AxisId::A).peakAcceleration;
     };
+    const auto exportable = [&exported](const std::string& method) {
+        return method.starts_with("stheta-") || method == job::kEditedMethod ||
+               QString::fromStdString(method) == exported;
+    };
+    const compare::MethodResult* best = nullptr;
     for (const compare::MethodResult& method : comparison.methods) {
-        if (method.method == "original" || method.channel.minClearance < 0.0) {
+        if (!exportable(method.method) || method.channel.minClearance < 0.0) {
             continue;
         }
-        if (best == nullptr || key(method) < key(*best)) {
+        if (best == nullptr || better(method, *best)) {
             best = &method;
         }
     }
     const compare::MethodResult* original = comparison.find("original");
     if (best == nullptr || original == nullptr) {
-        m_recommendation->setText(tr("No method stays inside the feasible channel: none is "
-                                     "recommended"));
+        m_recommendation->setText(tr("No program the window can export stays inside the feasible "
+                                     "channel: none is recommended"));
         return;
     }
     m_recommended = QString::fromStdString(best->method);
     const QChar table = QLatin1Char(comparison.letters[static_cast<std::size_t>(AxisId::A)]);
+    const auto peak = [](const compare::MethodResult& m) {
+        return grouped(units::radToDeg(m.profile.axis(AxisId::A).peakAcceleration), 0);
+    };
     QString text =
         tr("<b>Recommended: %1</b> — %2 reversals %3 (original %4), %5 %6 s (original %7 s), "
            "peak %2 acceleration %8 °/s² (original %9 °/s²).")
@@ -183,8 +206,7 @@ void ComparisonSummary::recommend(const compare::Comparison& comparison, const Q
             .arg(machineTimeName(*best, planner))
             .arg(grouped(machineTime(*best, planner), 1))
             .arg(grouped(machineTime(*original, planner), 1))
-            .arg(grouped(units::radToDeg(best->profile.axis(AxisId::A).peakAcceleration), 0))
-            .arg(grouped(units::radToDeg(original->profile.axis(AxisId::A).peakAcceleration), 0));
+            .arg(peak(*best), peak(*original));
     if (m_recommended == exported) {
         text += tr(" Export writes it.");
     } else if (m_recommended.startsWith(QStringLiteral("stheta-"))) {
@@ -192,14 +214,24 @@ void ComparisonSummary::recommend(const compare::Comparison& comparison, const Q
                    "recommended one.")
                     .arg(exported, m_recommended.mid(7));
     } else {
-        text += tr(" Export writes %1; %2 is a reference the window does not export.")
-                    .arg(exported, m_recommended);
+        text += tr(" Export writes %1.").arg(exported);
+    }
+    for (const char* reference : {"optimal-qp", "optimal-lp"}) {
+        if (const compare::MethodResult* optimum = comparison.find(reference)) {
+            text += tr(" The optimum in the same channel (%1, a reference, not exported): %2 "
+                       "%3 s, peak %4 °/s².")
+                        .arg(QString::fromLatin1(reference), machineTimeName(*optimum, planner))
+                        .arg(grouped(machineTime(*optimum, planner), 1))
+                        .arg(peak(*optimum));
+            break;
+        }
     }
     m_recommendation->setText(text);
     m_recommendation->setToolTip(
-        tr("The rule: among the methods that stay inside the feasible channel, the fewest %1 "
-           "reversals, then the shortest cycle time of this machine's controller model, then "
-           "the lowest peak %1 acceleration")
+        tr("The rule: among the programs the window can export that stay inside the feasible "
+           "channel, the fewest %1 reversals, then the shorter cycle time of this machine's "
+           "controller model when the times differ by more than 5 %, else the lower peak %1 "
+           "acceleration")
             .arg(table));
 }
 

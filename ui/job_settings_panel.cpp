@@ -72,7 +72,9 @@ JobSettingsPanel::JobSettingsPanel(QWidget* parent) : QWidget(parent) {
     m_apply->setObjectName(QStringLiteral("applyJobSettings"));
     m_apply->setToolTip(tr("Run the program on screen, or the one that just failed, with these "
                            "settings"));
-    m_note = new QLabel(tr("Kept for the next programs; a job file brings its own."), this);
+    m_note = new QLabel(tr("The tolerances and the preset stay for the next programs, the angle "
+                           "unit belongs to one program; a job file brings its own."),
+                        this);
     m_note->setWordWrap(true);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);

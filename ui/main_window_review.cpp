@@ -69,6 +69,8 @@ void MainWindow::buildJobSettingsDock() {
     m_jobSettings = new JobSettingsPanel(m_jobSettingsDock);
     m_jobSettingsDock->setWidget(m_jobSettings);
     addDockWidget(Qt::RightDockWidgetArea, m_jobSettingsDock);
+    // Out of the way until wanted: View > Job settings, or an error dialog that names it.
+    m_jobSettingsDock->hide();
     m_jobSettingsDock->toggleViewAction()->setObjectName(QStringLiteral("showJobSettings"));
     connect(m_jobSettings, &JobSettingsPanel::applyRequested, this, &MainWindow::applyJobSettings);
 }
@@ -105,7 +107,12 @@ void MainWindow::showReview(bool newProgram) {
 }
 
 void MainWindow::showJobError(const Error& error) {
-    QMessageBox::warning(this, tr("BladeAxis"), windowWording(error));
+    const QString message = windowWording(error);
+    if (message.contains(QString::fromUtf8(controls::kJobSettings))) {
+        m_jobSettingsDock->show(); // the control the message names, at hand
+        m_jobSettingsDock->raise();
+    }
+    QMessageBox::warning(this, tr("BladeAxis"), message);
 }
 
 void MainWindow::showRefusalSource(const Status& status) {

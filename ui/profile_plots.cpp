@@ -199,11 +199,24 @@ QPolygonF envelopeLine(const std::vector<double>& time, const std::vector<double
             largest = std::max(largest, values[end]);
             ++end;
         }
-        line << QPointF(plot.left() + (column + 0.5),
-                        plot.bottom() - (largest - low) / (high - low) * plot.height());
+        line << QPointF(plot.left() + (column + 0.5), largest);
         i = end;
     }
-    return line;
+    // Each column shows the largest value within kEnvelopeColumns of it: the zero crossings of a
+    // smooth acceleration (a few columns wide) are filled, no peak is lowered.
+    constexpr qsizetype kEnvelopeColumns = 3;
+    QPolygonF filled(line);
+    for (qsizetype k = 0; k < line.size(); ++k) {
+        double largest = line[k].y();
+        for (qsizetype m = std::max<qsizetype>(0, k - kEnvelopeColumns);
+             m <= std::min(line.size() - 1, k + kEnvelopeColumns); ++m) {
+            if (std::abs(line[m].x() - line[k].x()) <= kEnvelopeColumns) {
+                largest = std::max(largest, line[m].y());
+            }
+        }
+        filled[k].setY(plot.bottom() - (largest - low) / (high - low) * plot.height());
+    }
+    return filled;
 }
 
 QString decadeLabel(double exponent) {
@@ -309,7 +322,11 @@ class PlotPainter {
                 plot.bottom() - (value - range.low) / (range.high - range.low) * plot.height();
             m_p.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
             const double width = metrics.horizontalAdvance(label) + 4.0;
-            const double top = value >= 0.0 ? y - metrics.height() - 1.0 : y + 1.0;
+            // Beside the line, on the side away from zero unless the plot's edge is there.
+            double top = value >= 0.0 ? y - metrics.height() - 1.0 : y + 1.0;
+            if (top < plot.top() || top + metrics.height() > plot.bottom()) {
+                top = value >= 0.0 ? y + 1.0 : y - metrics.height() - 1.0;
+            }
             m_p.drawText(QRectF(plot.right() - width, top, width, metrics.height()),
                          Qt::AlignRight | Qt::AlignVCenter, label);
         }

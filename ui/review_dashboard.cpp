@@ -53,15 +53,15 @@ QString bindingText(const analysis::ConstantFeedTime& time, const kinematics::Ma
     const QChar letter = QLatin1Char(m.letter(time.bindingAxis));
     switch (time.binding) {
     case Binding::Velocity:
-        return ReviewDashboard::tr("%1 (velocity limit)").arg(letter);
+        return ReviewDashboard::tr("%1 velocity").arg(letter);
     case Binding::Acceleration:
-        return ReviewDashboard::tr("%1 (acceleration limit)").arg(letter);
+        return ReviewDashboard::tr("%1 acceleration").arg(letter);
     case Binding::Jerk:
-        return ReviewDashboard::tr("%1 (jerk limit)").arg(letter);
+        return ReviewDashboard::tr("%1 jerk").arg(letter);
     case Binding::Programmed:
         break;
     }
-    return ReviewDashboard::tr("programmed feed (%1 closest to its limit)").arg(letter);
+    return ReviewDashboard::tr("the feed (%1 nearest)").arg(letter);
 }
 
 // The model the peaks assume (docs/figures.md): the default's controller filter, or the method.
@@ -138,6 +138,15 @@ ReviewDashboard::ReviewDashboard(QWidget* parent) : QWidget(parent) {
                        tr("Model / what it assumes")},
                       QStringLiteral("dashboardFigures"), this);
     m_figures->setSelectionMode(QAbstractItemView::NoSelection);
+    // The figures as narrow as they read, the model's words wrapped in the rest of the width.
+    for (int column = kFigure; column < kModel; ++column) {
+        m_figures->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
+    }
+    m_figures->horizontalHeader()->setSectionResizeMode(kModel, QHeaderView::Stretch);
+    m_figures->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_figures->setVerticalScrollMode(QAbstractItemView::ScrollPerPixel);
+    connect(m_figures->horizontalHeader(), &QHeaderView::sectionResized, m_figures,
+            [this] { m_figures->resizeRowsToContents(); });
     m_warningsTitle = title(tr("Warnings"), this);
     m_warnings = table(kWarningColumns, {tr("Where"), tr("Warning")},
                        QStringLiteral("dashboardWarnings"), this);
@@ -218,7 +227,6 @@ void ReviewDashboard::setResult(const job::JobResult& result) {
     showFigures(result);
     showCycleTimes(result);
     showChecks(result);
-    m_figures->resizeColumnsToContents();
     m_figures->resizeRowsToContents();
     showWarnings(result);
     showClearanceIssues(result);
@@ -281,14 +289,19 @@ void ReviewDashboard::showCycleTimes(const job::JobResult& result) {
     times(row, result.constantFeed.time,
           outcome ? std::optional(outcome->constantFeed.time) : std::nullopt);
     if (result.timeOptimal) {
-        const analysis::ConvergedTime& t2 =
-            outcome && outcome->timeOptimal ? *outcome->timeOptimal : *result.timeOptimal;
+        const auto grid = [](const analysis::ConvergedTime& t2) {
+            return tr("%1 steps per block, last change %2 %")
+                .arg(t2.subdivisions)
+                .arg(QLocale().toString(100.0 * t2.lastChange, 'f', 2));
+        };
+        QString grids = tr("original %1").arg(grid(*result.timeOptimal));
+        if (outcome && outcome->timeOptimal) {
+            grids += tr("; re-scheduled %1").arg(grid(*outcome->timeOptimal));
+        }
         row = addFigure(QStringLiteral("t2"), tr("T2, look-ahead"),
-                        tr("look-ahead — %1 (up to %2 steps per block, last change %3 %)%4")
-                            .arg(QString::fromUtf8(job::kLookAheadModel))
-                            .arg(t2.subdivisions)
-                            .arg(QLocale().toString(100.0 * t2.lastChange, 'f', 2))
-                            .arg(thisMachine(result, kinematics::Planner::LookAhead)));
+                        tr("look-ahead — %1 (%2)%3")
+                            .arg(QString::fromUtf8(job::kLookAheadModel), grids,
+                                 thisMachine(result, kinematics::Planner::LookAhead)));
         times(row, result.timeOptimal->time,
               outcome && outcome->timeOptimal ? std::optional(outcome->timeOptimal->time)
                                               : std::nullopt);
@@ -306,6 +319,10 @@ void ReviewDashboard::showCycleTimes(const job::JobResult& result) {
     row = addFigure(QStringLiteral("limiting_axis"), tr("Limiting axis"),
                     tr("the axis whose limit sets T1's feed"));
     m_figures->setItem(row, kOriginal, textItem(bindingText(result.constantFeed, result.machine)));
+    m_figures->item(row, kOriginal)
+        ->setToolTip(tr("the limit that sets T1's feed; \"the feed\": "
+                        "the programmed feed, with the axis nearest "
+                        "its limit"));
     if (outcome) {
         m_figures->setItem(row, kRescheduled,
                            textItem(bindingText(outcome->constantFeed, result.machine)));

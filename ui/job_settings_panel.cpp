@@ -33,8 +33,12 @@ QDoubleSpinBox* degreeBox(QWidget* parent, double maximum, int decimals, const Q
     return box;
 }
 
-bool sameAngle(double a, double b) {
-    return std::abs(a - b) < 1e-9;
+// Whether the box shows `radians` (in degrees, as rounded to its decimals): then the spec's
+// exact value is kept rather than the box's rounding of it.
+bool shows(const QDoubleSpinBox& box, double radians) {
+    const double scale = std::pow(10.0, box.decimals());
+    return std::abs(box.value() - std::round(units::radToDeg(radians) * scale) / scale) <
+           0.5 / scale;
 }
 
 } // namespace
@@ -112,12 +116,11 @@ job::JobSpec JobSettingsPanel::applyTo(job::JobSpec spec) const {
     const int unit = m_angleUnit->currentData().toInt();
     spec.read.angleUnit =
         unit == kAutoUnit ? std::nullopt : std::optional(static_cast<io::AngleUnit>(unit));
-    // Only a changed value replaces the spec's: the box rounds to its decimals.
-    if (!sameAngle(m_bTolerance->value(), units::radToDeg(m_shown.check.tiltToleranceRad))) {
+    // Only a value the box does not show replaces the spec's: the box rounds to its decimals.
+    if (!shows(*m_bTolerance, spec.check.tiltToleranceRad)) {
         spec.check.tiltToleranceRad = units::degToRad(m_bTolerance->value());
     }
-    if (!sameAngle(m_channelTolerance->value(),
-                   units::radToDeg(m_shown.check.channelToleranceRad))) {
+    if (!shows(*m_channelTolerance, spec.check.channelToleranceRad)) {
         spec.check.channelToleranceRad = units::degToRad(m_channelTolerance->value());
     }
     const std::string preset = m_preset->currentData().toString().toStdString();

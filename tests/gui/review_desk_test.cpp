@@ -403,6 +403,22 @@ class ReviewDeskTest final : public QObject {
         QVERIFY(m_window->result()->rescheduled.has_value());
     }
 
+    // The tolerances and the preset stay for the next program opened; the angle unit, a
+    // property of one program, starts at "from the file" again.
+    void theNextProgramKeepsTheTolerancesButNotTheAngleUnit() {
+        bladeaxis::ui::JobSettingsPanel& settings = *m_window->jobSettings();
+        QCOMPARE(settings.angleUnitBox()->currentText(), QStringLiteral("radians"));
+        settings.bToleranceBox()->setValue(0.05);
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        m_window->runDemo();
+        QVERIFY(finished.wait(kJobTimeoutMs));
+        QCOMPARE(finished.back().front().toBool(), true);
+        QVERIFY(near(bladeaxis::units::radToDeg(m_window->spec().check.tiltToleranceRad), 0.05));
+        QVERIFY(!m_window->spec().read.angleUnit.has_value());
+        QCOMPARE(settings.angleUnitBox()->currentText(), QStringLiteral("from the file"));
+        QVERIFY(!settings.applyButton()->isEnabled());
+    }
+
   private:
     std::unique_ptr<bladeaxis::ui::MainWindow> m_window;
     nlohmann::json m_batch;

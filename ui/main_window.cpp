@@ -543,14 +543,17 @@ void MainWindow::onJobFinished() {
     updateExportActions();
     updateTitle();
     const QString cycleTimes = QString::fromStdString(job::cycleTimeStatus(*m_result));
-    statusBar()->showMessage(
-        (reapply ? tr("Layer edits applied in %1 s").arg(m_result->seconds, 0, 'f', 2)
-                 : tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2)) +
-        tr("; cycle time: %1").arg(cycleTimes));
     QStringList warnings;
     for (const std::string& warning : m_result->warnings) {
         warnings << QString::fromStdString(warning);
     }
+    statusBar()->showMessage(
+        (reapply ? tr("Layer edits applied in %1 s").arg(m_result->seconds, 0, 'f', 2)
+                 : tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2)) +
+        tr("; cycle time: %1").arg(cycleTimes) +
+        (warnings.isEmpty() ? QString()
+                            : tr("; %n warning(s) on the Review page", nullptr,
+                                 static_cast<int>(warnings.size()))));
     statusBar()->setToolTip(warnings.isEmpty() ? QString()
                                                : tr("%n warning(s), listed on the Review page:\n",
                                                     nullptr, static_cast<int>(warnings.size())) +

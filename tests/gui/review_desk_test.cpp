@@ -356,6 +356,8 @@ class ReviewDeskTest final : public QObject {
         // The B warning names the program (no line): its place is the file.
         QVERIFY(list.findItems(QStringLiteral("b_noise_large.nc"), Qt::MatchExactly).size() == 1);
         QVERIFY(m_window->statusBar()->toolTip().contains(QString::fromStdString(warnings.back())));
+        const QString message = m_window->statusBar()->currentMessage();
+        QVERIFY2(message.contains(QStringLiteral(" on the Review page")), qPrintable(message));
     }
 
     // Each warning's place: the program line it names, the layer, or both; double-clicking a

@@ -6,7 +6,6 @@
 #include "ui/job_settings_panel.h"
 #include "ui/main_window.h"
 #include "ui/review_dashboard.h"
-#include "ui/toolpath_view.h"
 #include "ui/window_wording.h"
 
 #include <QCheckBox>
@@ -22,10 +21,8 @@ namespace bladeaxis::ui {
 
 QWidget* MainWindow::buildReviewPage() {
     m_dashboard = new ReviewDashboard(this);
-    connect(m_dashboard, &ReviewDashboard::layerRequested, this, [this](int layer) {
-        selectLayer(layer);
-        m_view3d->setSelectedLayer(layer);
-    });
+    // Selecting the row selects the layer everywhere (layerSelected).
+    connect(m_dashboard, &ReviewDashboard::layerRequested, this, &MainWindow::selectLayer);
     connect(m_dashboard, &ReviewDashboard::acknowledgementChanged, this, [this](bool ticked) {
         statusBar()->showMessage(
             ticked ? tr("Export will write the program although the tool gouges or collides at "

@@ -314,6 +314,64 @@ class ReviewDeskTest final : public QObject {
         QCOMPARE(windowWording(QStringLiteral("no advice here")), QStringLiteral("no advice here"));
     }
 
+    // Every gouge or collision point of the output is a row (layer, point 1-based, line,
+    // depth); export waits for the tick, and a new result clears it.
+    void everyClearancePointIsListedAndTheTickBelongsToOneResult() {
+        bladeaxis::job::JobResult result = *m_window->result();
+        QVERIFY(result.cadCheck && result.cadCheck->rescheduled); // the demo's own surface
+        auto& report = *result.cadCheck->rescheduled;
+        QVERIFY(report.layers.size() > 2);
+        const std::size_t inSecondLayer = report.layers[1].first + 1;
+        report.issues = {{.record = 0, .line = 7, .depth = 0.25},
+                         {.record = inSecondLayer,
+                          .line = 40,
+                          .kind = bladeaxis::cad::ClearanceKind::ShankCollision,
+                          .depth = 0.5}};
+        ReviewDashboard board;
+        board.setResult(result);
+        QTableWidget& list = *board.clearanceIssues();
+        QCOMPARE(board.clearanceIssueCount(), 2);
+        const auto value = [&](int row, int column) {
+            return list.item(row, column)->data(ReviewDashboard::kValueRole).toDouble();
+        };
+        QCOMPARE(value(0, ReviewDashboard::kIssueLayer), 0.0);
+        QCOMPARE(value(0, ReviewDashboard::kIssuePoint), 1.0);
+        QCOMPARE(value(1, ReviewDashboard::kIssueLayer), 1.0);
+        QCOMPARE(value(1, ReviewDashboard::kIssuePoint), static_cast<double>(inSecondLayer + 1));
+        QCOMPARE(value(1, ReviewDashboard::kIssueLine), 40.0);
+        QCOMPARE(value(1, ReviewDashboard::kIssueDepth), 0.5);
+        QVERIFY(!list.isHidden() && !board.acknowledgeBox()->isHidden());
+        QVERIFY(!board.clearanceAcknowledged());
+        board.acknowledgeBox()->click();
+        QVERIFY(board.clearanceAcknowledged());
+        board.setResult(result); // a re-run: the engineer looks again
+        QVERIFY(!board.clearanceAcknowledged());
+        result.cadCheck->rescheduled->issues.clear();
+        board.setResult(result);
+        QVERIFY(board.clearanceAcknowledged()); // nothing to acknowledge
+        QVERIFY(board.acknowledgeBox()->isHidden());
+    }
+
+    // Each warning's place: the program line it names, the layer, or both; double-clicking a
+    // warning that names a layer selects it.
+    void everyWarningIsListedWithItsLineOrLayer() {
+        bladeaxis::job::JobResult result = *m_window->result();
+        result.warnings = {"blade.nc:120: a block beyond the travel of X",
+                           "layer 3: no monotone path, the original orientation is kept",
+                           "the file ends without M30"};
+        ReviewDashboard board;
+        board.setResult(result);
+        QTableWidget& list = *board.warnings();
+        QCOMPARE(list.rowCount(), 3);
+        QCOMPARE(list.item(0, ReviewDashboard::kWarningWhere)->text(), QStringLiteral("line 120"));
+        QCOMPARE(list.item(1, ReviewDashboard::kWarningWhere)->text(), QStringLiteral("layer 3"));
+        QCOMPARE(list.item(2, ReviewDashboard::kWarningWhere)->text(), QStringLiteral("—"));
+        QSignalSpy requested(&board, &ReviewDashboard::layerRequested);
+        emit list.cellDoubleClicked(1, ReviewDashboard::kWarningText);
+        QCOMPARE(requested.size(), 1);
+        QCOMPARE(requested.front().front().toInt(), 3);
+    }
+
     // A pass whose B wanders by 0.05 deg is refused naming the window's B tolerance, not
     // --b-tolerance-deg; the Job settings' B tolerance runs it, with the batch's warning listed
     // on the Review page with its line.
@@ -358,26 +416,6 @@ class ReviewDeskTest final : public QObject {
         QVERIFY(m_window->statusBar()->toolTip().contains(QString::fromStdString(warnings.back())));
         const QString message = m_window->statusBar()->currentMessage();
         QVERIFY2(message.contains(QStringLiteral(" on the Review page")), qPrintable(message));
-    }
-
-    // Each warning's place: the program line it names, the layer, or both; double-clicking a
-    // warning that names a layer selects it.
-    void everyWarningIsListedWithItsLineOrLayer() {
-        bladeaxis::job::JobResult result = *m_window->result();
-        result.warnings = {"blade.nc:120: a block beyond the travel of X",
-                           "layer 3: no monotone path, the original orientation is kept",
-                           "the file ends without M30"};
-        ReviewDashboard board;
-        board.setResult(result);
-        QTableWidget& list = *board.warnings();
-        QCOMPARE(list.rowCount(), 3);
-        QCOMPARE(list.item(0, ReviewDashboard::kWarningWhere)->text(), QStringLiteral("line 120"));
-        QCOMPARE(list.item(1, ReviewDashboard::kWarningWhere)->text(), QStringLiteral("layer 3"));
-        QCOMPARE(list.item(2, ReviewDashboard::kWarningWhere)->text(), QStringLiteral("—"));
-        QSignalSpy requested(&board, &ReviewDashboard::layerRequested);
-        emit list.cellDoubleClicked(1, ReviewDashboard::kWarningText);
-        QCOMPARE(requested.size(), 1);
-        QCOMPARE(requested.front().front().toInt(), 3);
     }
 
     // Rotary words in radians read as degrees: the refusal names the Angle unit of the window,

@@ -142,9 +142,9 @@ void MainWindow::buildEditMenu() {
 
 void MainWindow::buildViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    m_darkAction = view->addAction(tr("&Dark palette"));
     view->addAction(m_jobSettingsDock->toggleViewAction());
     view->addSeparator();
+    m_darkAction = view->addAction(tr("&Dark palette"));
     m_darkAction->setCheckable(true);
     m_darkAction->setShortcut(QKeySequence(tr("Ctrl+Shift+D")));
     connect(m_darkAction, &QAction::toggled, this, [this](bool dark) {
@@ -524,7 +524,8 @@ Status MainWindow::exportProgram(const QString& path) {
                              ": use the program's radius or keep the given one first");
     }
     job::JobSpec spec = m_spec;
-    spec.cad.force = m_dashboard->clearanceAcknowledged();
+    // Forced only by the engineer's tick under the points listed, never by their absence.
+    spec.cad.force = m_dashboard->clearanceIssueCount() > 0 && m_dashboard->clearanceAcknowledged();
     spec.outputProgram = path.toStdString();
     spec.outputCl.clear();
     spec.outputDir.clear();
@@ -541,7 +542,8 @@ Status MainWindow::exportClData(const QString& path) {
                              ": use the program's radius or keep the given one first");
     }
     job::JobSpec spec = m_spec;
-    spec.cad.force = m_dashboard->clearanceAcknowledged();
+    // Forced only by the engineer's tick under the points listed, never by their absence.
+    spec.cad.force = m_dashboard->clearanceIssueCount() > 0 && m_dashboard->clearanceAcknowledged();
     spec.outputProgram.clear();
     spec.outputCl = path.toStdString();
     spec.outputDir.clear();

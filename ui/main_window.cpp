@@ -3,10 +3,13 @@
 #include "core/base/units.h"
 #include "core/job/demo_program.h"
 #include "core/job/tool_radius.h"
+#include "ui/comparison_summary.h"
 #include "ui/comparison_table.h"
+#include "ui/job_settings_panel.h"
 #include "ui/job_thread.h"
 #include "ui/layer_settings_panel.h"
 #include "ui/profile_plots.h"
+#include "ui/review_dashboard.h"
 #include "ui/s_theta_editor.h"
 #include "ui/section_view.h"
 #include "ui/toolpath_view.h"
@@ -140,11 +143,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(this, &MainWindow::layerSelected, this, &MainWindow::showSelectedLayer);
 
     auto* tabs = new QTabWidget(this);
+    m_tabs = tabs;
+    tabs->setObjectName(QStringLiteral("pages"));
+    tabs->addTab(buildReviewPage(), tr("Review"));
     tabs->addTab(buildEditorPage(), tr("S-θ editor"));
     m_plots = new ProfilePlots(this);
     tabs->addTab(m_plots, tr("Axis motion"));
-    m_comparison = new ComparisonTable(this);
-    tabs->addTab(m_comparison, tr("Comparison"));
+    tabs->addTab(buildComparisonPage(), tr("Comparison"));
     tabs->addTab(build3dPage(), tr("3D view"));
     auto* splitter = new QSplitter(this);
     splitter->addWidget(m_layers);
@@ -179,6 +184,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setCentralWidget(central);
 
     m_undo.setUndoLimit(500);
+    buildJobSettingsDock();
     buildFileMenu();
     buildEditMenu();
     buildViewMenu();
@@ -318,6 +324,8 @@ void MainWindow::runDemo() {
     }
     job::JobSpec spec;
     spec.demo = true;
+    spec = m_jobSettings->applyTo(std::move(spec));
+    spec.read.angleUnit.reset(); // the unit belongs to a program, the tolerances to the desk
     m_undo.clear();
     detachBladeCad();
     startJob(std::move(spec), false, RadiusChoice{});
@@ -330,6 +338,8 @@ void MainWindow::runProgram(const QString& programPath) {
     }
     job::JobSpec spec;
     spec.program = programPath.toStdString();
+    spec = m_jobSettings->applyTo(std::move(spec));
+    spec.read.angleUnit.reset();   // the unit belongs to a program, the tolerances to the desk
     m_pendingRecent = programPath; // a file that does not read is not worth recalling
     m_undo.clear();
     detachBladeCad();
@@ -415,6 +425,10 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply, std::optional<RadiusC
         if (radius) {
             m_radius = *radius;
         }
+        m_lastAttempt = spec;
+        m_lastAttemptRadius = m_radius;
+        m_lastAttemptFailed = false;
+        m_jobSettings->showSpec(spec);
         showBladeCad();
     }
     // Edits do not change the comparison (its methods schedule the preset's own layers): a
@@ -490,9 +504,15 @@ void MainWindow::onJobFinished() {
             showToolRadius();
             showBladeCad();
         }
+        if (!reapply) {
+            // A failed program stays in the Job settings, to be run again with other settings.
+            m_lastAttemptFailed = !cancelled;
+            if (cancelled) {
+                m_jobSettings->showSpec(m_spec);
+            }
+        }
         if (!cancelled && !askRadius) {
-            QMessageBox::warning(this, tr("BladeAxis"),
-                                 QString::fromStdString(outcome.error().toString()));
+            showJobError(outcome.error());
         }
         m_editor->setPending({});
         emit jobFinished(false);
@@ -523,13 +543,21 @@ void MainWindow::onJobFinished() {
     updateExportActions();
     updateTitle();
     const QString cycleTimes = QString::fromStdString(job::cycleTimeStatus(*m_result));
+    QStringList warnings;
+    for (const std::string& warning : m_result->warnings) {
+        warnings << QString::fromStdString(warning);
+    }
     statusBar()->showMessage(
         (reapply ? tr("Layer edits applied in %1 s").arg(m_result->seconds, 0, 'f', 2)
                  : tr("Done in %1 s").arg(m_result->seconds, 0, 'f', 2)) +
-        tr("; cycle time: %1").arg(cycleTimes));
-    for (const std::string& warning : m_result->warnings) {
-        statusBar()->setToolTip(QString::fromStdString(warning));
-    }
+        tr("; cycle time: %1").arg(cycleTimes) +
+        (warnings.isEmpty() ? QString()
+                            : tr("; %n warning(s) on the Review page", nullptr,
+                                 static_cast<int>(warnings.size()))));
+    statusBar()->setToolTip(warnings.isEmpty() ? QString()
+                                               : tr("%n warning(s), listed on the Review page:\n",
+                                                    nullptr, static_cast<int>(warnings.size())) +
+                                                     warnings.join(QLatin1Char('\n')));
     if (m_reapplyQueued) {
         m_reapplyQueued = false;
         reapplyEdits();
@@ -540,14 +568,18 @@ void MainWindow::onJobFinished() {
 void MainWindow::showResult(job::DisplayScene scene) {
     m_scene = std::move(scene);
     showAxisLetters(m_result->machine);
+    showReview(!m_threadIsReapply);
     showLayers();
+    m_plots->setMachineLimits(m_result->machine);
     if (m_result->comparison) {
-        m_plots->setComparison(*m_result->comparison);
+        const QString exported = exportedMethod();
+        m_plots->setComparison(*m_result->comparison, exported);
         m_comparison->setComparison(*m_result->comparison);
-        // The job's program is the comparison's stheta-best until a layer is edited.
-        m_comparison->setExportedMethod(
-            QString::fromUtf8(m_spec.layerEdits.empty() ? "stheta-best" : job::kEditedMethod));
+        m_comparison->setExportedMethod(exported);
+        m_comparisonSummary->setComparison(*m_result->comparison, exported,
+                                           m_result->machine.controller.planner);
     } else {
+        m_comparisonSummary->clear();
         m_plots->setProfiles(m_result->original, m_result->rescheduled
                                                      ? std::optional(m_result->rescheduled->profile)
                                                      : std::nullopt);

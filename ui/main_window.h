@@ -15,12 +15,14 @@
 #include <optional>
 
 class QAction;
+class QDockWidget;
 class QDoubleSpinBox;
 class QLabel;
 class QMenu;
 class QProgressBar;
 class QPushButton;
 class QSlider;
+class QTabWidget;
 class QTableWidget;
 class QToolBar;
 
@@ -32,10 +34,13 @@ QString aboutText();
 // The machine files shipped with BladeAxis (installed, or the source tree's resources/machines).
 QStringList shippedMachineFiles();
 
+class ComparisonSummary;
 class ComparisonTable;
+class JobSettingsPanel;
 class JobThread;
 class LayerSettingsPanel;
 class ProfilePlots;
+class ReviewDashboard;
 class SectionView;
 class SThetaEditor;
 class ToolpathView;
@@ -94,7 +99,20 @@ class MainWindow final : public QMainWindow {
     LayerSettingsPanel* layerSettings() const { return m_layerSettings; }
     SectionView* sectionView() const { return m_section; }
     ProfilePlots* plots() const { return m_plots; }
+    // The Comparison page: the compact view with its recommendation, and the full table on
+    // demand ("Full table").
     ComparisonTable* comparisonTable() const { return m_comparison; }
+    ComparisonSummary* comparisonSummary() const { return m_comparisonSummary; }
+    // The first page after a job: the batch's figures, warnings and clearance points.
+    ReviewDashboard* dashboard() const { return m_dashboard; }
+    QTabWidget* pages() const { return m_tabs; }
+    // The dock with the settings the error dialogs name (angle unit, B and channel tolerance,
+    // preset); View > Job settings.
+    JobSettingsPanel* jobSettings() const { return m_jobSettings; }
+    QDockWidget* jobSettingsDock() const { return m_jobSettingsDock; }
+    // Runs the program on screen, or the one whose job just failed, with the Job settings
+    // panel's values (its "Apply and re-run").
+    void applyJobSettings();
     ToolpathView* view3d() const { return m_view3d; }
     QSlider* toolSlider() const { return m_toolSlider; }
     // The tool bar's ball radius of the program on screen: 0 ("from file") uses the radius the
@@ -120,14 +138,16 @@ class MainWindow final : public QMainWindow {
     void selectLayer(int layer);
     // Write the re-scheduled program / CL data / report folder of the last result exactly as
     // `--batch` would (through core's writeJobOutputs, which refuses when a check failed or the
-    // tool gouges or collides; `force` is the batch's --force and overrides only the latter);
-    // refused while edits are still being applied.
-    Status exportProgram(const QString& path, bool force = false);
-    Status exportClData(const QString& path, bool force = false);
+    // tool gouges or collides); refused while edits are still being applied. An output that
+    // gouges or collides is written only once the engineer ticked the acknowledgement on the
+    // Review dashboard (the batch's --force), after seeing every point.
+    Status exportProgram(const QString& path);
+    Status exportClData(const QString& path);
     Status exportReport(const QString& folder);
     // File > Export program / CL data after the file dialog: with an unresolved radius conflict,
     // asks which radius (the program's re-runs the job, export again after it); when the
-    // clearance check refuses the output, shows where and offers "Export anyway" (--force).
+    // clearance check refuses the output, says so and shows the Review page, where the points
+    // are listed and the acknowledgement is.
     void exportProgramTo(const QString& path);
     // "<input>_rescheduled.<ext>" beside the input (the demo's in the working folder), and the
     // file-dialog filter of the input's format; empty before the first result.
@@ -229,11 +249,26 @@ class MainWindow final : public QMainWindow {
     void exportClDialog();
     void exportReportDialog();
     void reportOutcome(const Status& status, const QString& done, const QString& refusedTitle);
-    // Whether to write although the tool gouges or collides: nullopt = cancelled.
-    std::optional<bool> confirmClearance();
+    // The Review page and Job settings dock, and their part in a job's life.
+    QWidget* buildReviewPage();
+    QWidget* buildComparisonPage();
+    // The comparison's name of the program Export writes: the job's preset's schedule
+    // (stheta-best, stheta-faithful) until a layer is edited, then "edited".
+    QString exportedMethod() const;
+    void buildJobSettingsDock();
+    void showReview(bool newProgram);
+    // An error as the dialogs show it: worded for the window (window_wording.h).
+    void showJobError(const Error& error);
+    // After a refused export: the Review page when the refusal is the clearance check's.
+    void showRefusalSource(const Status& status);
 
     job::JobSpec m_spec;
     job::JobSpec m_specBeforeJob; // restored when a new job fails or is cancelled
+    // The last new job started (not a re-run for edits), kept when it fails so that the Job
+    // settings can run it again; with the radius choice it started with.
+    job::JobSpec m_lastAttempt;
+    RadiusChoice m_lastAttemptRadius;
+    bool m_lastAttemptFailed = false;
     RadiusChoice m_radius;
     RadiusChoice m_radiusBeforeJob;
     quint64 m_jobGeneration = 0; // a job's finished signal is handled only while it is current
@@ -260,6 +295,11 @@ class MainWindow final : public QMainWindow {
     SectionView* m_section = nullptr;
     ProfilePlots* m_plots = nullptr;
     ComparisonTable* m_comparison = nullptr;
+    ReviewDashboard* m_dashboard = nullptr;
+    ComparisonSummary* m_comparisonSummary = nullptr;
+    QTabWidget* m_tabs = nullptr;
+    JobSettingsPanel* m_jobSettings = nullptr;
+    QDockWidget* m_jobSettingsDock = nullptr;
     ToolpathView* m_view3d = nullptr;
     QSlider* m_toolSlider = nullptr;
     QToolBar* m_view3dBar = nullptr; // the View menu's 3D actions, above the 3D view

@@ -10,14 +10,17 @@
 #include "ui/job_thread.h"
 #include "ui/main_window.h"
 #include "ui/profile_plots.h"
+#include "ui/review_dashboard.h"
 #include "ui/s_theta_editor.h"
 #include "ui/toolpath_view.h"
+#include "ui/window_wording.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCoreApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -139,6 +142,8 @@ void MainWindow::buildEditMenu() {
 
 void MainWindow::buildViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_jobSettingsDock->toggleViewAction());
+    view->addSeparator();
     m_darkAction = view->addAction(tr("&Dark palette"));
     m_darkAction->setCheckable(true);
     m_darkAction->setShortcut(QKeySequence(tr("Ctrl+Shift+D")));
@@ -509,7 +514,7 @@ void MainWindow::stopRunningJob() {
     onJobFinished(); // now, not when the signal arrives: the caller starts the next job
 }
 
-Status MainWindow::exportProgram(const QString& path, bool force) {
+Status MainWindow::exportProgram(const QString& path) {
     if (Status pending = refuseWhilePending(); !pending) {
         return pending;
     }
@@ -519,14 +524,15 @@ Status MainWindow::exportProgram(const QString& path, bool force) {
                              ": use the program's radius or keep the given one first");
     }
     job::JobSpec spec = m_spec;
-    spec.cad.force = force;
+    // Forced only by the engineer's tick under the points listed, never by their absence.
+    spec.cad.force = m_dashboard->clearanceIssueCount() > 0 && m_dashboard->clearanceAcknowledged();
     spec.outputProgram = path.toStdString();
     spec.outputCl.clear();
     spec.outputDir.clear();
     return job::writeJobOutputs(spec, *m_result);
 }
 
-Status MainWindow::exportClData(const QString& path, bool force) {
+Status MainWindow::exportClData(const QString& path) {
     if (Status pending = refuseWhilePending(); !pending) {
         return pending;
     }
@@ -536,7 +542,8 @@ Status MainWindow::exportClData(const QString& path, bool force) {
                              ": use the program's radius or keep the given one first");
     }
     job::JobSpec spec = m_spec;
-    spec.cad.force = force;
+    // Forced only by the engineer's tick under the points listed, never by their absence.
+    spec.cad.force = m_dashboard->clearanceIssueCount() > 0 && m_dashboard->clearanceAcknowledged();
     spec.outputProgram.clear();
     spec.outputCl = path.toStdString();
     spec.outputDir.clear();
@@ -557,53 +564,26 @@ Status MainWindow::exportReport(const QString& folder) {
 void MainWindow::reportOutcome(const Status& status, const QString& done,
                                const QString& refusedTitle) {
     if (!status) {
-        QMessageBox::warning(this, refusedTitle, QString::fromStdString(status.error().toString()));
+        showRefusalSource(status);
+        QMessageBox::warning(this, refusedTitle, windowWording(status.error()));
         statusBar()->showMessage(refusedTitle, 5000);
         return;
     }
     statusBar()->showMessage(done, 8000);
 }
 
-std::optional<bool> MainWindow::confirmClearance() {
-    if (!m_result || !m_result->cadCheck || !refuseWhilePending()) {
-        return false; // nothing to confirm: the export itself says why it is refused
-    }
-    const Status refused =
-        job::refuseIfColliding(*m_result->cadCheck, m_result->program.path().sourceFile, false);
-    if (refused) {
-        return false;
-    }
-    QMessageBox box(QMessageBox::Warning, tr("The tool gouges or collides"),
-                    QString::fromStdString(refused.error().toString()), QMessageBox::NoButton,
-                    this);
-    QPushButton* anyway = box.addButton(tr("Export anyway"), QMessageBox::DestructiveRole);
-    box.setDefaultButton(box.addButton(QMessageBox::Cancel));
-    box.exec();
-    if (box.clickedButton() != anyway) {
-        statusBar()->showMessage(tr("Export cancelled"), 5000);
-        return std::nullopt;
-    }
-    return true;
-}
-
 void MainWindow::exportProgramTo(const QString& path) {
     if (!resolveRadiusConflictForExport()) {
         return;
     }
-    if (const std::optional<bool> force = confirmClearance()) {
-        reportOutcome(exportProgram(path, *force), tr("Exported %1").arg(path),
-                      tr("Export refused"));
-    }
+    reportOutcome(exportProgram(path), tr("Exported %1").arg(path), tr("Export refused"));
 }
 
 void MainWindow::exportClDataTo(const QString& path) {
     if (!resolveRadiusConflictForExport()) {
         return;
     }
-    if (const std::optional<bool> force = confirmClearance()) {
-        reportOutcome(exportClData(path, *force), tr("Exported %1").arg(path),
-                      tr("Export refused"));
-    }
+    reportOutcome(exportClData(path), tr("Exported %1").arg(path), tr("Export refused"));
 }
 
 void MainWindow::updateExportActions() {

@@ -7,13 +7,16 @@
 #include <QCheckBox>
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QLocale>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPixmap>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QToolTip>
 #include <QVBoxLayout>
+#include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -160,17 +163,60 @@ struct PlotOptions {
     bool logAcceleration = false;                  // A acceleration as |a| on a log axis
     std::optional<std::pair<double, double>> span; // s: the selected layer's time span
     QString spanLabel;
+    std::array<std::optional<double>, ProfilePlots::kQuantityCount> limits; // display units
+    double logFloor = 1.0;                                                  // deg/s²
+    QString exported;                                // the method Export writes: drawn thicker
+    std::optional<std::pair<double, double>> window; // s: the zoomed time span, none: all
 };
 
-// |a| below this (deg/s²) is drawn at it on the log axis: a smooth schedule's quiet stretches
-// stay on the plot instead of falling to minus infinity.
-constexpr double kLogFloor = 1.0;
-
-std::vector<double> logMagnitudes(const std::vector<double>& values) {
+// |a| below the floor (deg/s²) is drawn at it on the log axis: quiet stretches stay on the plot
+// instead of falling to minus infinity.
+std::vector<double> logMagnitudes(const std::vector<double>& values, double floor) {
     std::vector<double> logs(values.size());
     std::transform(values.begin(), values.end(), logs.begin(),
-                   [](double v) { return std::log10(std::max(std::abs(v), kLogFloor)); });
+                   [floor](double v) { return std::log10(std::max(std::abs(v), floor)); });
     return logs;
+}
+
+// The largest value of each pixel column, in path order: the log plot's upper envelope. Where
+// the acceleration crosses zero, |a| dips to the floor for one sample; drawn sample by sample
+// (or column extremes) a smooth schedule becomes a comb of spikes down to the floor, which says
+// nothing about the motion. The envelope shows the magnitude the axis reaches in each column.
+QPolygonF envelopeLine(const std::vector<double>& time, const std::vector<double>& values,
+                       const QRectF& plot, std::pair<double, double> window, double low,
+                       double high) {
+    const auto columnOf = [&](double t) {
+        return std::floor((t - window.first) / (window.second - window.first) * plot.width());
+    };
+    const std::size_t count = std::min(time.size(), values.size());
+    QPolygonF line;
+    std::size_t i = 0;
+    while (i < count) {
+        const double column = columnOf(time[i]);
+        double largest = values[i];
+        std::size_t end = i;
+        while (end < count && columnOf(time[end]) == column) {
+            largest = std::max(largest, values[end]);
+            ++end;
+        }
+        line << QPointF(plot.left() + (column + 0.5), largest);
+        i = end;
+    }
+    // Each column shows the largest value within kEnvelopeColumns of it: the zero crossings of a
+    // smooth acceleration (a few columns wide) are filled, no peak is lowered.
+    constexpr qsizetype kEnvelopeColumns = 3;
+    QPolygonF filled(line);
+    for (qsizetype k = 0; k < line.size(); ++k) {
+        double largest = line[k].y();
+        for (qsizetype m = std::max<qsizetype>(0, k - kEnvelopeColumns);
+             m <= std::min(line.size() - 1, k + kEnvelopeColumns); ++m) {
+            if (std::abs(line[m].x() - line[k].x()) <= kEnvelopeColumns) {
+                largest = std::max(largest, line[m].y());
+            }
+        }
+        filled[k].setY(plot.bottom() - (largest - low) / (high - low) * plot.height());
+    }
+    return filled;
 }
 
 QString decadeLabel(double exponent) {
@@ -189,16 +235,25 @@ class PlotPainter {
               const PlotOptions& options) {
         const QFontMetricsF metrics(m_p.font());
         const bool log = options.logAcceleration && quantity == ProfilePlots::AAcceleration;
-        const Range xRange{0.0, visibleDuration(curves)};
+        const Range xRange = options.window ? Range{options.window->first, options.window->second}
+                                            : Range{0.0, visibleDuration(curves)};
         std::vector<std::vector<double>> shown; // per curve, in plot units (log10 |a| or as is)
         Range yRange;
         for (const ProfilePlots::Curve& curve : curves) {
-            shown.push_back(log && curve.visible ? logMagnitudes(curve.values[quantity])
-                                                 : std::vector<double>{});
+            shown.push_back(log && curve.visible
+                                ? logMagnitudes(curve.values[quantity], options.logFloor)
+                                : std::vector<double>{});
             if (curve.visible) {
                 for (double value : log ? shown.back() : curve.values[quantity]) {
                     yRange.include(value);
                 }
+            }
+        }
+        const std::optional<double> limit = options.limits[quantity];
+        if (limit && yRange.valid()) { // the limit is part of what the plot shows
+            yRange.include(log ? std::log10(*limit) : *limit);
+            if (!log) {
+                yRange.include(-*limit);
             }
         }
         const QRectF plot = plotRect(area, metrics);
@@ -206,7 +261,8 @@ class PlotPainter {
         const QString title = log ? options.logTitle : options.titles[quantity];
         m_p.drawText(area.adjusted(plot.left() - area.left(), 0, 0, 0),
                      Qt::AlignLeft | Qt::AlignTop, title);
-        if (!(xRange.high > 0.0) || !yRange.valid() || plot.width() < 10 || plot.height() < 10) {
+        if (!(xRange.high > xRange.low) || !yRange.valid() || plot.width() < 10 ||
+            plot.height() < 10) {
             m_p.drawRect(plot);
             return;
         }
@@ -227,24 +283,55 @@ class PlotPainter {
         for (std::size_t i = 0; i < curves.size(); ++i) {
             const ProfilePlots::Curve& curve = curves[i];
             if (curve.visible) {
-                m_p.setPen(QPen(curveColour(curve, m_palette), curve.dashed ? 1.2 : 1.5,
+                const bool exported = curve.method == options.exported;
+                m_p.setPen(QPen(curveColour(curve, m_palette),
+                                exported ? 2.4 : (curve.dashed ? 1.2 : 1.5),
                                 curve.dashed ? Qt::DashLine : Qt::SolidLine));
-                m_p.drawPolyline(decimatedLine(curve.time, log ? shown[i] : curve.values[quantity],
-                                               plot, xRange, yRange));
+                m_p.drawPolyline(
+                    log ? envelopeLine(curve.time, shown[i], plot, {xRange.low, xRange.high},
+                                       yRange.low, yRange.high)
+                        : decimatedLine(curve.time, curve.values[quantity], plot, xRange, yRange));
             }
+        }
+        if (limit) {
+            drawLimit(plot, yRange, *limit, log, metrics);
         }
         m_p.restore();
         m_p.setPen(m_palette.color(QPalette::Text));
         m_p.setBrush(Qt::NoBrush);
         m_p.drawRect(plot);
-        if (options.cursor && *options.cursor >= 0.0 && *options.cursor <= xRange.high) {
-            const double x = plot.left() + *options.cursor / xRange.high * plot.width();
+        if (options.cursor && *options.cursor >= xRange.low && *options.cursor <= xRange.high) {
+            const double x = plot.left() + (*options.cursor - xRange.low) /
+                                               (xRange.high - xRange.low) * plot.width();
             m_p.setPen(QPen(m_palette.color(QPalette::Text), 1.0, Qt::DotLine));
             m_p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
         }
     }
 
   private:
+    // The machine's limit: a red dashed line at +limit and -limit (at the limit alone on the
+    // log axis of |a|), labelled at its right end.
+    void drawLimit(const QRectF& plot, const Range& range, double limit, bool log,
+                   const QFontMetricsF& metrics) {
+        const QColor red(200, 40, 40);
+        m_p.setPen(QPen(red, 1.2, Qt::DashDotLine));
+        const QString label = ProfilePlots::tr("limit %1").arg(QLocale().toString(limit, 'g', 4));
+        for (double value :
+             log ? std::vector<double>{std::log10(limit)} : std::vector<double>{limit, -limit}) {
+            const double y =
+                plot.bottom() - (value - range.low) / (range.high - range.low) * plot.height();
+            m_p.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
+            const double width = metrics.horizontalAdvance(label) + 4.0;
+            // Beside the line, on the side away from zero unless the plot's edge is there.
+            double top = value >= 0.0 ? y - metrics.height() - 1.0 : y + 1.0;
+            if (top < plot.top() || top + metrics.height() > plot.bottom()) {
+                top = value >= 0.0 ? y + 1.0 : y - metrics.height() - 1.0;
+            }
+            m_p.drawText(QRectF(plot.right() - width, top, width, metrics.height()),
+                         Qt::AlignRight | Qt::AlignVCenter, label);
+        }
+    }
+
     static void padRange(Range& range) {
         const double span = range.high - range.low;
         const double pad = span > 0.0 ? 0.05 * span : std::max(1.0, std::abs(range.high) * 0.1);
@@ -294,13 +381,15 @@ class PlotPainter {
     // The selected layer's time span: a tinted band behind the curves, named at its top.
     void drawSpan(const QRectF& plot, const Range& xRange, std::pair<double, double> span,
                   const QString& label, const QFontMetricsF& metrics) {
-        const double from = std::clamp(span.first, 0.0, xRange.high);
-        const double to = std::clamp(span.second, 0.0, xRange.high);
+        const double from = std::clamp(span.first, xRange.low, xRange.high);
+        const double to = std::clamp(span.second, xRange.low, xRange.high);
         if (!(to > from)) {
             return;
         }
-        const double x0 = plot.left() + from / xRange.high * plot.width();
-        const double x1 = plot.left() + to / xRange.high * plot.width();
+        const double x0 =
+            plot.left() + (from - xRange.low) / (xRange.high - xRange.low) * plot.width();
+        const double x1 =
+            plot.left() + (to - xRange.low) / (xRange.high - xRange.low) * plot.width();
         QColor tint = m_palette.color(QPalette::Highlight);
         tint.setAlpha(45);
         m_p.fillRect(QRectF(x0, plot.top(), x1 - x0, plot.height()), tint);
@@ -317,7 +406,8 @@ class PlotPainter {
         const double step = niceStep(range.high - range.low, maxTicks);
         const QString unit = ProfilePlots::tr("t [s]");
         const double unitLeft = plot.right() - metrics.horizontalAdvance(unit) - 2.0;
-        for (double value = 0.0; value <= range.high; value += step) {
+        for (double value = std::ceil(range.low / step) * step; value <= range.high;
+             value += step) {
             const double x =
                 plot.left() + (value - range.low) / (range.high - range.low) * plot.width();
             m_p.setPen(gridPen());
@@ -356,7 +446,7 @@ namespace detail {
 // shows each visible method's value there.
 class PlotCanvas final : public QWidget {
   public:
-    PlotCanvas(const ProfilePlots& owner, QWidget* parent) : QWidget(parent), m_owner(owner) {
+    PlotCanvas(ProfilePlots& owner, QWidget* parent) : QWidget(parent), m_owner(owner) {
         setMinimumSize(320, 260);
         setMouseTracking(true);
     }
@@ -376,6 +466,13 @@ class PlotCanvas final : public QWidget {
         PlotOptions options;
         options.cursor = m_cursor;
         options.logAcceleration = m_owner.accelerationLogScale();
+        options.logFloor = m_owner.accelerationLogFloor();
+        options.exported = m_owner.exportedMethod();
+        for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
+            options.limits[quantity] =
+                m_owner.limitOf(static_cast<ProfilePlots::Quantity>(quantity));
+        }
+        options.window = m_owner.timeWindow();
         options.span = m_owner.highlightedSpan();
         options.spanLabel = m_owner.highlightedSpanLabel();
         for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
@@ -390,11 +487,22 @@ class PlotCanvas final : public QWidget {
 
     void mouseMoveEvent(QMouseEvent* event) override {
         const QPointF position = event->position();
+        if (m_dragFrom && (event->buttons() & Qt::LeftButton)) {
+            if (const auto at = plotAt(position)) {
+                const auto& [plot, span] = *at;
+                m_owner.panTime(-(position.x() - *m_dragFrom) / plot.width() *
+                                (span.second - span.first));
+                m_dragFrom = position.x();
+            }
+        }
         const double duration = visibleDuration(m_owner.curves());
+        const std::pair<double, double> span =
+            m_owner.timeWindow().value_or(std::pair{0.0, duration});
         for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
             const QRectF plot = plotRect(cellArea(quantity), QFontMetricsF(font()));
-            if (duration > 0.0 && plot.contains(position)) {
-                m_cursor = (position.x() - plot.left()) / plot.width() * duration;
+            if (span.second > span.first && plot.contains(position)) {
+                m_cursor = span.first +
+                           (position.x() - plot.left()) / plot.width() * (span.second - span.first);
                 QToolTip::showText(
                     event->globalPosition().toPoint(),
                     m_owner.valuesAt(*m_cursor, static_cast<ProfilePlots::Quantity>(quantity)),
@@ -427,8 +535,45 @@ class PlotCanvas final : public QWidget {
         }
     }
 
-    const ProfilePlots& m_owner;
-    std::optional<double> m_cursor; // s
+    // The plot under `position` and the time span it shows, none outside every plot.
+    std::optional<std::pair<QRectF, std::pair<double, double>>> plotAt(QPointF position) const {
+        const double duration = visibleDuration(m_owner.curves());
+        const std::pair<double, double> span =
+            m_owner.timeWindow().value_or(std::pair{0.0, duration});
+        for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
+            const QRectF plot = plotRect(cellArea(quantity), QFontMetricsF(font()));
+            if (span.second > span.first && plot.contains(position)) {
+                return std::pair{plot, span};
+            }
+        }
+        return std::nullopt;
+    }
+
+    // The wheel zooms the time axis about the time under the mouse.
+    void wheelEvent(QWheelEvent* event) override {
+        const auto at = plotAt(event->position());
+        if (!at || event->angleDelta().y() == 0) {
+            event->ignore();
+            return;
+        }
+        const auto& [plot, span] = *at;
+        const double time = span.first + (event->position().x() - plot.left()) / plot.width() *
+                                             (span.second - span.first);
+        m_owner.zoomTime(event->angleDelta().y() > 0 ? 0.8 : 1.25, time);
+        event->accept();
+    }
+
+    void mousePressEvent(QMouseEvent* event) override {
+        if (event->button() == Qt::LeftButton && plotAt(event->position())) {
+            m_dragFrom = event->position().x();
+        }
+    }
+
+    void mouseReleaseEvent(QMouseEvent*) override { m_dragFrom.reset(); }
+
+    ProfilePlots& m_owner;
+    std::optional<double> m_cursor;   // s
+    std::optional<double> m_dragFrom; // px: a left drag pans the time axis
 };
 
 } // namespace detail
@@ -446,8 +591,10 @@ ProfilePlots::ProfilePlots(QWidget* parent) : QWidget(parent) {
     m_legendArea->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     auto* legendRow = new QWidget(m_legendArea);
     legendRow->setToolTip(tr("Axis motion against time at the programmed feed, each method on its "
-                             "own time axis; the original dashed. Untick a method to hide it and "
-                             "rescale; hover a plot to read every method's value."));
+                             "own time axis; the original dashed, the exported program bold. Tick "
+                             "another method to compare it, untick one to hide it and rescale; "
+                             "hover a plot to read every method's value. Red dashed lines: the "
+                             "machine's limits."));
     m_legend = new QHBoxLayout(legendRow);
     m_legend->setContentsMargins(6, 2, 6, 0);
     m_legendArea->setWidget(legendRow);
@@ -456,10 +603,15 @@ ProfilePlots::ProfilePlots(QWidget* parent) : QWidget(parent) {
     m_logBox->setObjectName(QStringLiteral("accelerationLogScale"));
     m_logBox->setChecked(m_logAcceleration);
     connect(m_logBox, &QCheckBox::toggled, this, &ProfilePlots::setAccelerationLogScale);
+    auto* fit = new QPushButton(tr("Fit"), this);
+    fit->setObjectName(QStringLiteral("fitPlots"));
+    fit->setToolTip(tr("Show the whole time axis again (the wheel zooms it, a drag pans it)"));
+    connect(fit, &QPushButton::clicked, this, &ProfilePlots::fitTime);
     auto* top = new QHBoxLayout;
     top->setContentsMargins(0, 0, 6, 0);
     top->addWidget(m_legendArea, 1);
     top->addWidget(m_logBox);
+    top->addWidget(fit);
     layout->addLayout(top);
     layout->addWidget(m_canvas, 1);
     setAutoFillBackground(true);
@@ -470,13 +622,15 @@ ProfilePlots::ProfilePlots(QWidget* parent) : QWidget(parent) {
 void ProfilePlots::setProfiles(const analysis::AxisProfile& original,
                                const std::optional<analysis::AxisProfile>& rescheduled) {
     std::vector<Curve> curves{curveOf(QStringLiteral("original"), original, true)};
+    m_exported = QStringLiteral("re-scheduled");
     if (rescheduled) {
         curves.push_back(curveOf(QStringLiteral("re-scheduled"), *rescheduled, false));
     }
     setCurves(std::move(curves));
 }
 
-void ProfilePlots::setComparison(const compare::Comparison& comparison) {
+void ProfilePlots::setComparison(const compare::Comparison& comparison, const QString& exported) {
+    m_exported = exported;
     std::vector<Curve> curves;
     for (const compare::MethodResult& method : comparison.methods) {
         const QString name = QString::fromStdString(method.method);
@@ -494,6 +648,93 @@ void ProfilePlots::addProfile(const QString& method, const analysis::AxisProfile
     }
     curves.push_back(curveOf(method, profile, method == QLatin1String("original")));
     setCurves(std::move(curves));
+}
+
+void ProfilePlots::setTimeWindow(std::optional<std::pair<double, double>> seconds) {
+    const double duration = visibleDuration(m_curves);
+    if (seconds && duration > 0.0) {
+        // Within the pass, at least a millisecond wide; the whole pass is no zoom at all.
+        const double width = std::clamp(seconds->second - seconds->first, 1e-3, duration);
+        const double from = std::clamp(seconds->first, 0.0, duration - width);
+        seconds = std::pair{from, from + width};
+        if (width >= duration) {
+            seconds.reset();
+        }
+    } else {
+        seconds.reset();
+    }
+    m_timeWindow = seconds;
+    m_canvas->update();
+}
+
+void ProfilePlots::zoomTime(double factor, double aroundSeconds) {
+    const auto [from, to] = m_timeWindow.value_or(std::pair{0.0, visibleDuration(m_curves)});
+    setTimeWindow(std::pair{aroundSeconds - (aroundSeconds - from) * factor,
+                            aroundSeconds + (to - aroundSeconds) * factor});
+}
+
+void ProfilePlots::panTime(double seconds) {
+    if (m_timeWindow) {
+        setTimeWindow(std::pair{m_timeWindow->first + seconds, m_timeWindow->second + seconds});
+    }
+}
+
+void ProfilePlots::fitTime() {
+    setTimeWindow(std::nullopt);
+}
+
+void ProfilePlots::setExportedMethod(const QString& method) {
+    m_exported = method;
+    setCurves(std::move(m_curves)); // the default pair follows the exported method
+}
+
+void ProfilePlots::setMachineLimits(const kinematics::MachineModel& machine) {
+    const auto positive = [](double limit) {
+        return std::isfinite(limit) && limit > 0.0 ? std::optional(limit) : std::nullopt;
+    };
+    const auto degrees = [&](double limit) {
+        const auto value = positive(limit);
+        return value ? std::optional(units::radToDeg(*value)) : std::nullopt;
+    };
+    m_limits = {};
+    m_limits[AVelocity] = degrees(machine.limit(AxisId::A).velocity);
+    m_limits[AAcceleration] = degrees(machine.limit(AxisId::A).acceleration);
+    m_limits[XVelocity] = positive(machine.limit(AxisId::X).velocity);
+    m_limits[YVelocity] = positive(machine.limit(AxisId::Y).velocity);
+    m_limits[ZVelocity] = positive(machine.limit(AxisId::Z).velocity);
+    m_canvas->update();
+}
+
+double ProfilePlots::accelerationLogFloor() const {
+    double peak = 0.0;
+    for (const Curve& curve : m_curves) {
+        if (curve.visible) {
+            for (double value : curve.values[AAcceleration]) {
+                peak = std::max(peak, std::abs(value));
+            }
+        }
+    }
+    constexpr double kDecadesShown = 4.0;
+    return std::max(1.0, peak * std::pow(10.0, -kDecadesShown));
+}
+
+std::vector<double> ProfilePlots::logAccelerationEnvelope(const QString& method,
+                                                          int columns) const {
+    std::vector<double> envelope;
+    const double duration = visibleDuration(m_curves);
+    for (const Curve& curve : m_curves) {
+        if (curve.method != method || !(duration > 0.0) || columns <= 0) {
+            continue;
+        }
+        const std::vector<double> logs =
+            logMagnitudes(curve.values[AAcceleration], accelerationLogFloor());
+        const QPolygonF line =
+            envelopeLine(curve.time, logs, QRectF(0, 0, columns, 1.0), {0.0, duration}, 0.0, 1.0);
+        for (const QPointF& point : line) {
+            envelope.push_back(1.0 - point.y()); // back from the unit rectangle's y
+        }
+    }
+    return envelope;
 }
 
 void ProfilePlots::setAxisLetters(const std::array<char, 5>& letters) {
@@ -522,10 +763,15 @@ void ProfilePlots::clear() {
 
 void ProfilePlots::setCurves(std::vector<Curve> curves) {
     for (Curve& curve : curves) {
-        curve.visible = std::find(m_hidden.begin(), m_hidden.end(), curve.method) == m_hidden.end();
+        const auto chosen = std::find_if(m_chosen.begin(), m_chosen.end(),
+                                         [&](const auto& c) { return c.first == curve.method; });
+        curve.visible = chosen != m_chosen.end() ? chosen->second
+                                                 : curve.method == QLatin1String("original") ||
+                                                       curve.method == m_exported;
     }
     m_curves = std::move(curves);
     rebuildLegend();
+    setTimeWindow(m_timeWindow); // kept across results, within the new pass
     m_canvas->update();
 }
 
@@ -563,10 +809,8 @@ bool ProfilePlots::isMethodVisible(const QString& method) const {
 }
 
 void ProfilePlots::setMethodVisible(const QString& method, bool visible) {
-    std::erase(m_hidden, method);
-    if (!visible) {
-        m_hidden.push_back(method);
-    }
+    std::erase_if(m_chosen, [&](const auto& chosen) { return chosen.first == method; });
+    m_chosen.emplace_back(method, visible);
     bool changed = false;
     for (std::size_t i = 0; i < m_curves.size(); ++i) {
         if (m_curves[i].method == method && m_curves[i].visible != visible) {
@@ -657,7 +901,16 @@ void ProfilePlots::rebuildLegend() {
     for (const Curve& curve : m_curves) {
         auto* box = new QCheckBox(curve.method, m_legend->parentWidget());
         box->setChecked(curve.visible);
+        box->setObjectName(QStringLiteral("legend_") + curve.method);
         box->setToolTip(tr("Show or hide %1 in every plot").arg(curve.method));
+        if (curve.method == m_exported) { // what Export writes, marked and drawn thicker
+            QFont bold = box->font();
+            bold.setBold(true);
+            box->setFont(bold);
+            box->setText(tr("%1 (exported)").arg(curve.method));
+            box->setToolTip(tr("%1: the program Export writes; show or hide it in every plot")
+                                .arg(curve.method));
+        }
         const QString method = curve.method;
         connect(box, &QCheckBox::toggled, this,
                 [this, method](bool visible) { setMethodVisible(method, visible); });

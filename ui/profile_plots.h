@@ -1,10 +1,13 @@
 #pragma once
 // Axis-motion plots against time at the programmed feed: A position, velocity and acceleration
 // and the X, Y, Z velocities, one curve per method (original dashed), each method on its own
-// time axis (its own duration). A checkbox legend shows and hides the methods.
+// time axis (its own duration). By default the original and the exported (re-scheduled) program
+// are drawn, the exported one marked; a checkbox legend shows the other methods on demand. The
+// machine's velocity and acceleration limits are drawn as lines (±limit) where it has them.
 
 #include "core/analysis/axis_profile.h"
 #include "core/compare/compare.h"
+#include "core/kinematics/machine_model.h"
 
 #include <QStringList>
 #include <QWidget>
@@ -46,8 +49,25 @@ class ProfilePlots final : public QWidget {
     void setProfiles(const analysis::AxisProfile& original,
                      const std::optional<analysis::AxisProfile>& rescheduled);
     // Every method of the comparison (original, quaternion, stheta-faithful, stheta-best,
-    // optimal-qp and optimal-lp when present). Visibility chosen by name is kept.
-    void setComparison(const compare::Comparison& comparison);
+    // optimal-qp and optimal-lp when present). Shown: the original and `exported` (the program
+    // Export writes), unless the user chose otherwise for a method (kept across results).
+    void setComparison(const compare::Comparison& comparison,
+                       const QString& exported = QStringLiteral("stheta-best"));
+    // The method whose program Export writes: drawn thicker and marked in the legend.
+    void setExportedMethod(const QString& method);
+    QString exportedMethod() const { return m_exported; }
+    // The machine's limits drawn on the plots, in display units: A velocity (deg/s), A
+    // acceleration (deg/s²), X/Y/Z velocity (mm/s); a limit <= 0 (unlimited) draws nothing.
+    void setMachineLimits(const kinematics::MachineModel& machine);
+    // The limit line of a quantity (display units), none when the machine has none.
+    std::optional<double> limitOf(Quantity quantity) const { return m_limits[quantity]; }
+    // The log axis's floor (deg/s²) for the visible curves: four decades below the highest
+    // visible peak, never below 1. Quiet stretches of a smooth schedule sit at their own level
+    // instead of plunging to a fixed floor.
+    double accelerationLogFloor() const;
+    // log10 |A acceleration| of a method as the log plot draws it over `columns` pixel
+    // columns: the upper envelope (the largest |a| of each column), floored.
+    std::vector<double> logAccelerationEnvelope(const QString& method, int columns) const;
     // One more curve over what is shown (e.g. the re-scheduled path after a layer edit, next to
     // a comparison computed before it); replaces a curve of the same name.
     void addProfile(const QString& method, const analysis::AxisProfile& profile);
@@ -79,6 +99,15 @@ class ProfilePlots final : public QWidget {
     std::optional<std::pair<double, double>> highlightedSpan() const { return m_span; }
     QString highlightedSpanLabel() const { return m_spanLabel; }
 
+    // The time span shown (s), none for the whole pass: the wheel zooms it about the mouse, a
+    // left drag pans it, "Fit" shows the whole pass again. Kept within the pass.
+    void setTimeWindow(std::optional<std::pair<double, double>> seconds);
+    std::optional<std::pair<double, double>> timeWindow() const { return m_timeWindow; }
+    // factor < 1 zooms in; the time `aroundSeconds` stays where it is.
+    void zoomTime(double factor, double aroundSeconds);
+    void panTime(double seconds);
+    void fitTime();
+
     // The colour of a method's curves, readable on a light or dark background.
     static QColor methodColour(const QString& method, bool darkBackground);
 
@@ -95,13 +124,17 @@ class ProfilePlots final : public QWidget {
 
     std::vector<Curve> m_curves;
     std::array<char, 5> m_letters{'X', 'Y', 'Z', 'A', 'B'};
-    std::vector<QString> m_hidden; // methods the user hid, kept across results
+    // Methods the user showed or hid, kept across results; the others follow the default pair.
+    std::vector<std::pair<QString, bool>> m_chosen;
+    QString m_exported = QStringLiteral("re-scheduled");
+    std::array<std::optional<double>, kQuantityCount> m_limits{};
     QScrollArea* m_legendArea = nullptr;
     QHBoxLayout* m_legend = nullptr;
     std::vector<QCheckBox*> m_boxes;
     QCheckBox* m_logBox = nullptr;
     bool m_logAcceleration = true;
     std::optional<std::pair<double, double>> m_span;
+    std::optional<std::pair<double, double>> m_timeWindow;
     QString m_spanLabel;
     detail::PlotCanvas* m_canvas = nullptr;
 };

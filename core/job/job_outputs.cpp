@@ -5,6 +5,7 @@
 #include "core/base/version.h"
 #include "core/io/cl/apt_writer.h"
 #include "core/io/program.h"
+#include "core/job/cycle_time_models.h"
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
 #include "core/report/analysis_report.h"
@@ -138,24 +139,17 @@ nlohmann::json cycleTimesJson(const analysis::ConstantFeedTime& constantFeed,
                               const kinematics::MachineModel& machine) {
     nlohmann::json json;
     json["machine_model"] = kinematics::plannerName(machine.controller.planner);
-    json["constant_feed"] = {
-        {"time_s", constantFeed.time},
-        {"model", "T1: the whole pass at one constant feed, the highest the slowest point "
-                  "allows (a bound, not a controller)"}};
+    json["constant_feed"] = {{"time_s", constantFeed.time}, {"model", kConstantFeedModel}};
     if (lookAhead) {
-        json["look_ahead"] = {
-            {"time_s", lookAhead->time},
-            {"model", "T2: look-ahead, time-optimal along the path under the axes' velocity and "
-                      "acceleration limits and the feed (TOPP-RA), grid-converged"},
-            {"grid_steps_per_block", lookAhead->subdivisions},
-            {"last_grid_change", lookAhead->lastChange},
-            {"converged", lookAhead->converged}};
+        json["look_ahead"] = {{"time_s", lookAhead->time},
+                              {"model", kLookAheadModel},
+                              {"grid_steps_per_block", lookAhead->subdivisions},
+                              {"last_grid_change", lookAhead->lastChange},
+                              {"converged", lookAhead->converged}};
     }
-    json["block_by_block"] = {
-        {"time_s", blockByBlock.time},
-        {"model", "each block planned alone from rest to rest, parabolic blends, no blending "
-                  "across rotary blocks, F read as the XYZ speed (LinuxCNC 2.9's planner)"},
-        {"blocks", blockByBlock.blocks}};
+    json["block_by_block"] = {{"time_s", blockByBlock.time},
+                              {"model", kBlockByBlockModel},
+                              {"blocks", blockByBlock.blocks}};
     return json;
 }
 

@@ -220,6 +220,13 @@ class ComparisonTest final : public QObject {
         ProfilePlots plots;
         plots.resize(1000, 700);
         plots.setComparison(comparison());
+        // By default the original and the exported program; every method on demand.
+        for (const auto& method : comparison().methods) {
+            const QString name = QString::fromStdString(method.method);
+            QCOMPARE(plots.isMethodVisible(name),
+                     name == QStringLiteral("original") || name == QStringLiteral("stheta-best"));
+            plots.setMethodVisible(name, true);
+        }
         plots.show();
         QVERIFY(QTest::qWaitForWindowExposed(&plots));
         QCOMPARE(static_cast<std::size_t>(plots.methods().size()), comparison().methods.size());
@@ -236,10 +243,7 @@ class ComparisonTest final : public QObject {
         // Hiding a method through its legend checkbox removes its curves (its legend icon
         // keeps the colour) and rescales.
         const QColor best = ProfilePlots::methodColour(QStringLiteral("stheta-best"), false);
-        QCheckBox* box = nullptr;
-        for (QCheckBox* candidate : plots.findChildren<QCheckBox*>()) {
-            box = candidate->text() == QStringLiteral("stheta-best") ? candidate : box;
-        }
+        QCheckBox* box = plots.findChild<QCheckBox*>(QStringLiteral("legend_stheta-best"));
         QVERIFY(box != nullptr);
         box->click();
         QVERIFY(!plots.isMethodVisible(QStringLiteral("stheta-best")));

@@ -12,6 +12,7 @@
 #include "ui/layer_settings_panel.h"
 #include "ui/main_window.h"
 #include "ui/profile_plots.h"
+#include "ui/review_dashboard.h"
 #include "ui/s_theta_editor.h"
 #include "ui/section_view.h"
 #include "ui/toolpath_view.h"
@@ -34,6 +35,7 @@
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
 #include <QTimer>
@@ -491,9 +493,10 @@ class MainWindowTest final : public QObject {
         QVERIFY(withTool != rotated);
     }
 
-    // The demo blade moved 0.3 mm into the tool: the export is refused naming where, and the
-    // confirmation dialog's "Export anyway" writes it, as --force does in batch. Last: it
-    // leaves another job in the window.
+    // The demo blade moved 0.3 mm into the tool: the export is refused naming where and pointing
+    // to the Review page, which lists every point (layer, point 1-based, line, depth); once the
+    // engineer ticks the acknowledgement there, Export writes it, as --force does in batch.
+    // Last: it leaves another job in the window.
     void gougingExportIsRefusedWithWhereAndCanBeForced() {
         const QString folder = QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/gui_report");
         QVERIFY(QFileInfo::exists(folder + "/demo_blade.step")); // from clDataAndReportExport
@@ -516,24 +519,46 @@ class MainWindowTest final : public QObject {
                  message.c_str());
         QVERIFY(!QFileInfo::exists(output));
 
+        // The window's way: the refusal names the Review page's acknowledgement, not --force,
+        // and shows the page, where every point is listed.
         QString shown;
-        QTimer clicker;
-        connect(&clicker, &QTimer::timeout, [&] {
-            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-            if (box == nullptr) {
-                return;
-            }
-            shown = box->text();
-            for (QAbstractButton* button : box->buttons()) {
-                if (button->text() == QStringLiteral("Export anyway")) {
-                    button->click();
-                }
+        QTimer closer;
+        connect(&closer, &QTimer::timeout, [&] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                shown = box->text();
+                box->accept();
             }
         });
-        clicker.start(50);
+        closer.start(50);
         m_window->exportProgramTo(output);
-        clicker.stop();
         QVERIFY2(shown.contains(QStringLiteral(": gouge ")), qPrintable(shown));
+        QVERIFY2(!shown.contains(QStringLiteral("--force")), qPrintable(shown));
+        QVERIFY2(shown.contains(QStringLiteral("on the Review tab")), qPrintable(shown));
+        QVERIFY(!QFileInfo::exists(output));
+        bladeaxis::ui::ReviewDashboard& board = *m_window->dashboard();
+        QCOMPARE(m_window->pages()->currentWidget(), static_cast<QWidget*>(&board));
+        const auto& issues = m_window->result()->cadCheck->rescheduled->issues;
+        QCOMPARE(board.clearanceIssueCount(), static_cast<int>(issues.size()));
+        for (int row = 0; row < board.clearanceIssueCount(); ++row) {
+            const auto& issue = issues[static_cast<std::size_t>(row)];
+            const auto cell = [&](int column) {
+                return board.clearanceIssues()->item(row, column)->data(Qt::UserRole).toDouble();
+            };
+            QCOMPARE(cell(bladeaxis::ui::ReviewDashboard::kIssuePoint),
+                     static_cast<double>(issue.record + 1)); // 1-based
+            QCOMPARE(cell(bladeaxis::ui::ReviewDashboard::kIssueLine),
+                     static_cast<double>(issue.line));
+            QCOMPARE(cell(bladeaxis::ui::ReviewDashboard::kIssueDepth), issue.depth);
+            QVERIFY(cell(bladeaxis::ui::ReviewDashboard::kIssueLayer) >= 0.0);
+        }
+        QVERIFY(!board.clearanceAcknowledged());
+        QVERIFY(board.acknowledgeBox()->isVisibleTo(m_window.get()));
+        board.acknowledgeBox()->click();
+        QVERIFY(board.clearanceAcknowledged());
+        shown.clear();
+        m_window->exportProgramTo(output);
+        closer.stop();
+        QVERIFY2(shown.isEmpty(), qPrintable(shown));
         QVERIFY(QFileInfo::exists(output));
     }
 

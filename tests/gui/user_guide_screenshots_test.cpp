@@ -37,8 +37,9 @@ constexpr QSize kWindowSize(1366, 768);
 constexpr std::size_t kMinimumColours = 16;
 
 // The screenshots this test takes, by file name; docs/user-guide.md must show exactly these.
-constexpr std::array<const char*, 4> kScreenshots = {
-    "gui-main-window.png", "gui-s-theta-editor.png", "gui-axis-plots.png", "gui-3d-view.png"};
+constexpr std::array<const char*, 6> kScreenshots = {"gui-main-window.png",    "gui-review.png",
+                                                     "gui-s-theta-editor.png", "gui-axis-plots.png",
+                                                     "gui-comparison.png",     "gui-3d-view.png"};
 
 QString outputFolder() {
     return QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/user-guide");
@@ -100,6 +101,20 @@ class UserGuideScreenshotsTest final : public QObject {
     void savesTheWholeWindowAfterTheDemoJob() {
         showTab(QStringLiteral("S-θ editor"));
         saveScreenshot("gui-main-window.png", m_window->grab().toImage());
+    }
+
+    // The first page after a job: the batch's figures with their models, warnings, clearance.
+    void savesTheReviewPage() {
+        QWidget* page = showTab(QStringLiteral("Review"));
+        QVERIFY(page != nullptr);
+        saveScreenshot("gui-review.png", page->grab().toImage());
+    }
+
+    // The compact comparison with its recommendation (the full table folded away).
+    void savesTheComparisonPage() {
+        QWidget* page = showTab(QStringLiteral("Comparison"));
+        QVERIFY(page != nullptr);
+        saveScreenshot("gui-comparison.png", page->grab().toImage());
     }
 
     void savesTheSThetaEditorPageOfAMiddleLayer() {

@@ -18,7 +18,7 @@ Result<std::string> readTextFile(const std::filesystem::path& path);
 // Writes `content` so that `path` holds either its old content or the whole new one, never a
 // part, even when the process is killed or the disk fills up:
 // - a regular file (or a new name) is written to an unnamed temporary file in the same folder
-//   (O_TMPFILE; a named `.name.tmpN` sibling where the file system lacks it), synced, given the
+//   (O_TMPFILE; a named `.ba-XXXXXX` sibling where the file system lacks it), synced, given the
 //   old file's permission bits, renamed over `path`, and the folder synced;
 // - a symbolic link is followed: its target is replaced as above and the link stays a link;
 // - a character device or a pipe (`/dev/stdout`, a FIFO) is written directly: it holds no old
@@ -53,7 +53,7 @@ class MappedText {
 };
 
 // The content of a regular file written in pieces before it is given its name: it is an
-// unnamed temporary file in the target's folder (a `.name.tmpN` sibling where the file system
+// unnamed temporary file in the target's folder (a `.ba-XXXXXX` sibling where the file system
 // cannot make one unnamed) until commit() moves it over the target exactly as
 // writeFileAtomically does. Dropped uncommitted, nothing of it remains, also when the process is
 // killed (an unnamed file). A job writes a large output here while it runs instead of holding
@@ -95,5 +95,10 @@ class StagedFile {
 
 // True when both paths name the same existing file (after resolving links).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// A fresh name for a temporary file in `folder`: `.ba-` and six random letters or digits. Its
+// length does not depend on the target's, so a target with the longest name a file system
+// allows (255 bytes) can still be written through a temporary beside it.
+std::filesystem::path temporaryNameIn(const std::filesystem::path& folder);
 
 } // namespace bladeaxis

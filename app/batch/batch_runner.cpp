@@ -2,6 +2,7 @@
 
 #include "app/batch/exit_codes.h"
 #include "core/base/file_io.h"
+#include "core/base/output_set.h"
 #include "core/base/version.h"
 
 #include <algorithm>
@@ -201,6 +202,30 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
     return kExitOk;
 }
 
+// Both files or neither, and no folder of this run's left empty (as a job's outputs).
+Status writeReproduction(const std::filesystem::path& folder,
+                         const job::ReproductionResult& result) {
+    if (folder.empty()) {
+        return {};
+    }
+    auto created = CreatedFolder::create(folder);
+    if (!created) {
+        return std::unexpected(created.error());
+    }
+    OutputSet outputs;
+    for (const auto& [name, text] : {std::pair{"reproduce.json", job::reproductionJsonText(result)},
+                                     std::pair{"reproduce.csv", job::reproductionCsv(result)}}) {
+        if (auto status = outputs.add(folder / name, text); !status) {
+            return status;
+        }
+    }
+    if (auto status = outputs.publish(); !status) {
+        return status;
+    }
+    created->keep();
+    return {};
+}
+
 int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& err) {
     BatchProgress progress(err, options.quiet, options.progress);
     CancelToken cancel;
@@ -212,18 +237,8 @@ int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& e
     if (!result) {
         return fail(result.error(), err);
     }
-    const auto& folder = options.job.outputDir;
-    if (!folder.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(folder, ec);
-        const std::pair<const char*, std::string> files[] = {
-            {"reproduce.json", job::reproductionJsonText(*result)},
-            {"reproduce.csv", job::reproductionCsv(*result)}};
-        for (const auto& [name, text] : files) {
-            if (auto status = writeFileAtomically(folder / name, text); !status) {
-                return fail(status.error(), err);
-            }
-        }
+    if (auto status = writeReproduction(options.job.outputDir, *result); !status) {
+        return fail(status.error(), err);
     }
     if (!options.quiet) {
         out << job::reproductionSummary(*result);

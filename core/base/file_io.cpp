@@ -324,6 +324,10 @@ const fs::path& StagedFile::target() const {
     return m_state->requested;
 }
 
+const fs::path& StagedFile::resolvedTarget() const {
+    return m_state->target;
+}
+
 Status StagedFile::commit() {
     State& state = *m_state;
     if (::fsync(state.fd.get()) != 0) {

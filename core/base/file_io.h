@@ -80,6 +80,8 @@ class StagedFile {
     Status append(std::string_view content);
     std::size_t size() const;
     const std::filesystem::path& target() const;
+    // The file the content replaces: target() with its links followed.
+    const std::filesystem::path& resolvedTarget() const;
     // Syncs the content and moves it over the target. Once committed the file stays readable
     // here; a second commit names it again (the same bytes).
     Status commit();

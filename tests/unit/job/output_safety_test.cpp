@@ -1,0 +1,81 @@
+// Output safety of the batch front end (issue 39's reliability audit): a run publishes all of its
+// outputs or none, and no output may be another output or an input.
+#include "app/batch/batch_runner.h"
+#include "app/batch/exit_codes.h"
+#include "core/base/file_io.h"
+#include "tests/support/scratch_folder.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace bladeaxis::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+    int code;
+    std::string out;
+    std::string err;
+};
+
+CliRun run(std::vector<std::string> arguments) {
+    arguments.insert(arguments.begin(), "bladeaxis");
+    std::ostringstream out;
+    std::ostringstream err;
+    std::istringstream in;
+    const int code = runBatchCommandLine(arguments, out, err, in);
+    return {code, out.str(), err.str()};
+}
+
+void writeFile(const fs::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+class OutputSafety : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        ASSERT_EQ(
+            run({"--batch", "--generate", m_program.string(), "--revolutions", "2", "-q"}).code,
+            kExitOk);
+    }
+    std::string path(const std::string& name) const { return (m_dir / name).string(); }
+
+    test::ScratchFolder m_scratch{"bladeaxis_output_safety_"};
+    const fs::path& m_dir = m_scratch.path();
+    const fs::path m_program = m_dir / "blade.nc";
+};
+
+TEST_F(OutputSafety, AReportFolderThatCannotTakeReportJsonWritesNoProgram) {
+    fs::create_directories(m_dir / "out" / "report.json");
+    const CliRun result =
+        run({"--batch", m_program.string(), "-o", path("new.nc"), "--out", path("out"), "-q"});
+    EXPECT_EQ(result.code, kExitWrite) << result.err;
+    EXPECT_NE(result.err.find("report.json"), std::string::npos) << result.err;
+    EXPECT_FALSE(fs::exists(m_dir / "new.nc")) << "the program of a run that failed";
+    EXPECT_FALSE(fs::exists(m_dir / "out" / "axes.csv"));
+}
+
+TEST_F(OutputSafety, ABadClOutputPathWritesNoProgramAndLeavesNoOutputFolder) {
+    const CliRun result = run({"--batch", m_program.string(), "-o", path("new.nc"), "--cl-output",
+                               path("missing/new.cl"), "--out", path("made/by/run"), "-q"});
+    EXPECT_EQ(result.code, kExitWrite) << result.err;
+    EXPECT_FALSE(fs::exists(m_dir / "new.nc"));
+    EXPECT_FALSE(fs::exists(m_dir / "made")) << "an output folder this run created, left empty";
+}
+
+TEST_F(OutputSafety, ASuccessfulRunWritesEveryOutput) {
+    const CliRun result = run({"--batch", m_program.string(), "-o", path("new.nc"), "--cl-output",
+                               path("new.cl"), "--out", path("out"), "-q"});
+    ASSERT_EQ(result.code, kExitOk) << result.err;
+    for (const char* name : {"new.nc", "new.cl", "out/report.json", "out/axes.csv"}) {
+        EXPECT_TRUE(fs::is_regular_file(m_dir / name)) << name;
+    }
+}
+
+} // namespace
+} // namespace bladeaxis::app

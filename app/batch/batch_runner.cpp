@@ -120,7 +120,9 @@ int runGenerate(const BatchOptions& options, std::ostream& out, std::ostream& er
     if (!generated) {
         return fail(generated.error(), err);
     }
-    if (auto status = writeFileAtomically(options.generateOutput, generated->text); !status) {
+    const std::filesystem::path inputs[] = {options.job.machineFile};
+    if (auto status = writeFileAtomically(options.generateOutput, generated->text, inputs);
+        !status) {
         return fail(status.error(), err);
     }
     if (!options.quiet) {
@@ -274,7 +276,10 @@ int runBatchCommandLine(const std::vector<std::string>& arguments, std::ostream&
                         std::ostream& err, std::istream& in) {
     auto options = parseBatchOptions(arguments);
     if (!options) {
-        err << "bladeaxis: " << options.error().message << "\nRun with --help for usage.\n";
+        // A job file's error names its file and line (the command line's have no place).
+        const SourceLocation& where = options.error().where;
+        err << "bladeaxis: " << (where.empty() ? "" : where.toString() + ": ")
+            << options.error().message << "\nRun with --help for usage.\n";
         return kExitUsage;
     }
     if (&err == &std::cerr && isatty(STDERR_FILENO) == 1 && !options->quiet) {

@@ -58,6 +58,35 @@ Result<std::string> readTextFile(const fs::path& path) {
     return content;
 }
 
+bool hasNulCharacter(const fs::path& path) {
+    return path.native().find('\0') != std::string::npos;
+}
+
+namespace {
+
+// Where a path ends up once every link on the way is followed; a name not yet there keeps its
+// own last part under its folder's resolved place.
+fs::path resolvedPlace(const fs::path& path) {
+    std::error_code ec;
+    return fs::weakly_canonical(fs::absolute(followLinks(path), ec).lexically_normal(), ec);
+}
+
+} // namespace
+
+bool isSameDestination(const fs::path& a, const fs::path& b) {
+    struct stat first {};
+    struct stat second {};
+    const bool firstExists = ::stat(a.c_str(), &first) == 0;
+    const bool secondExists = ::stat(b.c_str(), &second) == 0;
+    if (firstExists && secondExists) {
+        const auto stream = [](const struct stat& s) {
+            return S_ISCHR(s.st_mode) || S_ISFIFO(s.st_mode);
+        };
+        return !stream(first) && first.st_dev == second.st_dev && first.st_ino == second.st_ino;
+    }
+    return firstExists == secondExists && resolvedPlace(a) == resolvedPlace(b);
+}
+
 fs::path temporaryNameIn(const fs::path& folder) {
     static constexpr std::string_view kLetters =
         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";

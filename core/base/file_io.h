@@ -98,6 +98,16 @@ class StagedFile {
 // True when both paths name the same existing file (after resolving links).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 
+// True when writing to `a` and to `b` would write the same file: the same existing file (also
+// through links and hard links), or, for a name not yet there, the same place once links in its
+// folders are followed. A character device or a pipe (`/dev/null`, a FIFO) holds nothing a
+// second write could replace and is never the same.
+bool isSameDestination(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// True when `path` holds a NUL character: the system reads a path up to its first NUL, so
+// "victim.json\0.nc" would name victim.json.
+bool hasNulCharacter(const std::filesystem::path& path);
+
 // A fresh name for a temporary file in `folder`: `.ba-` and six random letters or digits. Its
 // length does not depend on the target's, so a target with the longest name a file system
 // allows (255 bytes) can still be written through a temporary beside it.

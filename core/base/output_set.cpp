@@ -159,4 +159,46 @@ CreatedFolder::~CreatedFolder() {
     }
 }
 
+namespace {
+
+bool isNamed(const NamedPath& named) {
+    return !named.path.empty() && named.path != "-";
+}
+
+Status sharedFile(const NamedPath& first, const NamedPath& second, const std::string& why) {
+    return makeError(ErrorCode::InvalidArgument, first.name + " and " + second.name +
+                                                     " name the same file " + second.path.string() +
+                                                     ": " + why);
+}
+
+} // namespace
+
+Status refuseSharedFiles(std::span<const NamedPath> outputs, std::span<const NamedPath> inputs) {
+    for (const auto* list : {&outputs, &inputs}) {
+        for (const NamedPath& named : *list) {
+            if (hasNulCharacter(named.path)) {
+                return makeError(ErrorCode::InvalidArgument,
+                                 named.name + ": a path with a NUL character, which the system "
+                                              "would cut short at the NUL");
+            }
+        }
+    }
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        if (!isNamed(outputs[i])) {
+            continue;
+        }
+        for (const NamedPath& input : inputs) {
+            if (isNamed(input) && isSameDestination(outputs[i].path, input.path)) {
+                return sharedFile(outputs[i], input, "the output would overwrite the input");
+            }
+        }
+        for (std::size_t j = i + 1; j < outputs.size(); ++j) {
+            if (isNamed(outputs[j]) && isSameDestination(outputs[i].path, outputs[j].path)) {
+                return sharedFile(outputs[i], outputs[j], "one output would overwrite the other");
+            }
+        }
+    }
+    return {};
+}
+
 } // namespace bladeaxis

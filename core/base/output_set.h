@@ -60,4 +60,15 @@ class CreatedFolder {
     std::vector<std::filesystem::path> m_created; // deepest first
 };
 
+// A path with the name a message gives it ("-o", "output_program", "--out (report.json)").
+struct NamedPath {
+    std::string name;
+    std::filesystem::path path;
+};
+
+// Refuses (InvalidArgument, naming both) two outputs that are the same destination
+// (isSameDestination), or an output that is one of the inputs; and any path with a NUL
+// character. Empty paths and "-" (standard input or output) are left out.
+Status refuseSharedFiles(std::span<const NamedPath> outputs, std::span<const NamedPath> inputs);
+
 } // namespace bladeaxis

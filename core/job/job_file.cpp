@@ -61,6 +61,11 @@ Result<fs::path> JobReader::pathValue(const Json& root, const char* key) const {
     if (!value.is_string() || value.get<std::string>().empty()) {
         return fail(key, "expected a file path as a string");
     }
+    // "victim.json\u0000.nc" would be cut at the NUL by the system and name victim.json.
+    if (value.get<std::string>().find('\0') != std::string::npos) {
+        return fail(key, "a path with a NUL character (\\u0000), which the system would cut "
+                         "short at the NUL");
+    }
     const fs::path path = value.get<std::string>();
     return path.is_absolute() ? path : m_path.parent_path() / path;
 }

@@ -8,6 +8,7 @@
 #include "core/io/program.h"
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
+#include "core/job/output_paths.h"
 #include "core/report/analysis_report.h"
 #include "core/report/compare_report.h"
 #include "core/report/schedule_report.h"
@@ -534,6 +535,10 @@ Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
         return makeError(ErrorCode::Internal,
                          "axes.csv and layers.csv need the samples the job released once it had "
                          "taken its figures: run it with the output folder it writes");
+    }
+    // Again here: the GUI and the API name their outputs after the job ran.
+    if (auto refused = refuseSharedPaths(spec); !refused) {
+        return refused;
     }
     if (auto refused = refuseOutputsOfThisResult(spec, result); !refused) {
         return refused;

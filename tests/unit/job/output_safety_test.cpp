@@ -77,5 +77,61 @@ TEST_F(OutputSafety, ASuccessfulRunWritesEveryOutput) {
     }
 }
 
+TEST_F(OutputSafety, AProgramOutputThatIsTheReportIsRefusedNamingBothOptions) {
+    const CliRun result = run(
+        {"--batch", m_program.string(), "-o", path("out/report.json"), "--out", path("out"), "-q"});
+    EXPECT_EQ(result.code, kExitUsage) << result.err;
+    EXPECT_NE(result.err.find("-o and --out (report.json) name the same file"), std::string::npos)
+        << result.err;
+    EXPECT_FALSE(fs::exists(m_dir / "out"));
+}
+
+TEST_F(OutputSafety, AProgramAndClOutputThatAreOneFileAreRefused) {
+    writeFile(m_dir / "target.nc", "kept\n");
+    fs::create_symlink("target.nc", m_dir / "link.nc");
+    for (const auto& [program, cl] : {std::pair{"x.nc", "x.nc"}, std::pair{"x.nc", "./x.nc"},
+                                      std::pair{"link.nc", "target.nc"}}) {
+        const CliRun result = run(
+            {"--batch", m_program.string(), "-o", path(program), "--cl-output", path(cl), "-q"});
+        EXPECT_EQ(result.code, kExitUsage) << program << " " << cl << ": " << result.err;
+        EXPECT_NE(result.err.find("-o and --cl-output name the same file"), std::string::npos)
+            << result.err;
+    }
+    EXPECT_FALSE(fs::exists(m_dir / "x.nc"));
+    EXPECT_EQ(readTextFile(m_dir / "target.nc").value_or(""), "kept\n");
+}
+
+TEST_F(OutputSafety, AHardLinkedOutputIsTheSameFile) {
+    writeFile(m_dir / "a.nc", "kept\n");
+    fs::create_hard_link(m_dir / "a.nc", m_dir / "b.cl");
+    const CliRun result =
+        run({"--batch", m_program.string(), "-o", path("a.nc"), "--cl-output", path("b.cl"), "-q"});
+    EXPECT_EQ(result.code, kExitUsage) << result.err;
+    EXPECT_EQ(readTextFile(m_dir / "a.nc").value_or(""), "kept\n");
+}
+
+TEST_F(OutputSafety, AGeneratedProgramOverTheMachineFileIsRefused) {
+    const std::string machine = "{\"name\": \"not to be overwritten\"}\n";
+    writeFile(m_dir / "m.json", machine);
+    const CliRun result =
+        run({"--batch", "--generate", path("m.json"), "--machine", path("m.json"), "-q"});
+    EXPECT_EQ(result.code, kExitUsage) << result.err;
+    EXPECT_NE(result.err.find("--generate and --machine name the same file"), std::string::npos)
+        << result.err;
+    EXPECT_EQ(readTextFile(m_dir / "m.json").value_or(""), machine);
+}
+
+TEST_F(OutputSafety, AJobFileOutputWithANulCharacterIsRefusedAtItsLine) {
+    writeFile(m_dir / "victim.json", "victim\n");
+    writeFile(m_dir / "job.json", "{\n  \"schema\": \"bladeaxis-job/1\",\n"
+                                  "  \"program\": \"blade.nc\",\n"
+                                  "  \"output_program\": \"victim.json\\u0000.nc\"\n}\n");
+    const CliRun result = run({"--batch", "--job", path("job.json"), "-q"});
+    EXPECT_EQ(result.code, kExitUsage) << result.err;
+    EXPECT_NE(result.err.find("job.json:4:"), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find("NUL character"), std::string::npos) << result.err;
+    EXPECT_EQ(readTextFile(m_dir / "victim.json").value_or(""), "victim\n");
+}
+
 } // namespace
 } // namespace bladeaxis::app

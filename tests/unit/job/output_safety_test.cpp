@@ -133,5 +133,35 @@ TEST_F(OutputSafety, AJobFileOutputWithANulCharacterIsRefusedAtItsLine) {
     EXPECT_EQ(readTextFile(m_dir / "victim.json").value_or(""), "victim\n");
 }
 
+// "output_cl", documented in docs/python.md and docs/plugins.md, was ignored, as was every key
+// the reader did not know (a misspelt "output_programm" wrote nothing without a word).
+TEST_F(OutputSafety, AJobFilesOutputClIsWritten) {
+    writeFile(m_dir / "job.json", "{\"schema\": \"bladeaxis-job/1\", \"program\": \"blade.nc\", "
+                                  "\"output_cl\": \"new.cl\"}\n");
+    const CliRun result = run({"--batch", "--job", path("job.json"), "-q"});
+    ASSERT_EQ(result.code, kExitOk) << result.err;
+    EXPECT_NE(readTextFile(m_dir / "new.cl").value_or("").find("GOTO/"), std::string::npos);
+}
+
+TEST_F(OutputSafety, AnUnknownJobKeyIsRefusedAtItsLineWithTheNearestKnownOne) {
+    writeFile(m_dir / "job.json",
+              "{\n  \"schema\": \"bladeaxis-job/1\",\n  \"program\": \"blade.nc\",\n"
+              "  \"output_programm\": \"new.nc\"\n}\n");
+    const CliRun result = run({"--batch", "--job", path("job.json"), "-q"});
+    EXPECT_EQ(result.code, kExitUsage) << result.err;
+    EXPECT_NE(result.err.find("job.json:4: output_programm: unknown key in a job file"),
+              std::string::npos)
+        << result.err;
+    EXPECT_NE(result.err.find("did you mean \"output_program\"?"), std::string::npos);
+    EXPECT_FALSE(fs::exists(m_dir / "new.nc"));
+    writeFile(m_dir / "edit.json", "{\"schema\": \"bladeaxis-job/1\", \"program\": \"blade.nc\",\n"
+                                   "\"layer_edits\": [{\"layer\": 1, \"margn_deg\": 2}]}\n");
+    const CliRun edit = run({"--batch", "--job", path("edit.json"), "-q"});
+    EXPECT_EQ(edit.code, kExitUsage) << edit.err;
+    EXPECT_NE(edit.err.find("margn_deg: unknown key in a layer edit"), std::string::npos)
+        << edit.err;
+    EXPECT_NE(edit.err.find("did you mean \"margin_deg\"?"), std::string::npos);
+}
+
 } // namespace
 } // namespace bladeaxis::app

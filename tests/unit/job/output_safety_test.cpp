@@ -133,6 +133,35 @@ TEST_F(OutputSafety, AJobFileOutputWithANulCharacterIsRefusedAtItsLine) {
     EXPECT_EQ(readTextFile(m_dir / "victim.json").value_or(""), "victim\n");
 }
 
+// A fixed-head machine, written by the test (the shipped table_a.json's chain and limits).
+constexpr const char* kTableAMachine = R"({"schema": "bladeaxis-machine/1",
+  "name": "table A, fixed head",
+  "kinematics": {"type": "table_a"},
+  "axes": {
+    "X": {"velocity_mm_s": 400, "acceleration_mm_s2": 2500, "jerk_mm_s3": 25000},
+    "Y": {"velocity_mm_s": 400, "acceleration_mm_s2": 2500, "jerk_mm_s3": 25000},
+    "Z": {"velocity_mm_s": 400, "acceleration_mm_s2": 2500, "jerk_mm_s3": 25000},
+    "A": {"velocity_deg_s": 300, "acceleration_deg_s2": 1500, "jerk_deg_s3": 15000}}}
+)";
+
+// `generate --machine table_a.json` wrote B5. (the default tilt) that the same machine then
+// refused: a fixed head generates at its own tilt, 0.
+TEST_F(OutputSafety, AProgramGeneratedForAFixedHeadIsOneTheSameMachineReschedules) {
+    writeFile(m_dir / "table_a.json", kTableAMachine);
+    const CliRun generated = run({"--batch", "--generate", path("fixed.nc"), "--machine",
+                                  path("table_a.json"), "--revolutions", "2", "-q"});
+    ASSERT_EQ(generated.code, kExitOk) << generated.err;
+    const CliRun rescheduled = run({"--batch", path("fixed.nc"), "--machine", path("table_a.json"),
+                                    "-o", path("new.nc"), "-q"});
+    EXPECT_EQ(rescheduled.code, kExitOk) << rescheduled.err;
+    const CliRun tilted = run({"--batch", "--generate", path("tilted.nc"), "--machine",
+                               path("table_a.json"), "--tilt-deg", "5", "-q"});
+    EXPECT_EQ(tilted.code, kExitUsage);
+    EXPECT_NE(tilted.err.find("--tilt-deg: the machine (table A, fixed head) has a fixed head"),
+              std::string::npos)
+        << tilted.err;
+}
+
 // "output_cl", documented in docs/python.md and docs/plugins.md, was ignored, as was every key
 // the reader did not know (a misspelt "output_programm" wrote nothing without a word).
 TEST_F(OutputSafety, AJobFilesOutputClIsWritten) {

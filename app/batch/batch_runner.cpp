@@ -6,6 +6,7 @@
 #include "core/base/version.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <csignal>
@@ -149,7 +150,11 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
                std::ostream& err) {
     job::JobSpec spec = options.job;
     if (!spec.demo && spec.program == "-") {
-        spec.programText = std::string(std::istreambuf_iterator<char>(in), {});
+        auto text = readStandardInput(in);
+        if (!text) {
+            return fail(text.error(), err);
+        }
+        spec.programText = std::move(*text);
         spec.program = "stdin";
     }
     const bool programToStdout = spec.outputProgram == "-";
@@ -249,6 +254,22 @@ int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& e
 }
 
 } // namespace
+
+Result<std::string> readStandardInput(std::istream& in, std::size_t limit) {
+    std::string text;
+    std::array<char, 1 << 16> chunk{};
+    while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
+        const auto got = static_cast<std::size_t>(in.gcount());
+        if (text.size() + got > limit) {
+            return std::unexpected(io::nc::programTooLarge("stdin"));
+        }
+        if (text.size() + got > text.capacity()) { // doubling, but never past the cap
+            text.reserve(std::min(limit, std::max(2 * text.capacity(), text.size() + got)));
+        }
+        text.append(chunk.data(), got);
+    }
+    return text;
+}
 
 int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err, std::istream& in) {
     switch (options.mode) {

@@ -3,6 +3,7 @@
 // streams so tests can capture it.
 
 #include "app/batch/batch_options.h"
+#include "core/io/nc/gcode_reader.h"
 
 #include <iostream>
 
@@ -11,6 +12,12 @@ namespace bladeaxis::app {
 // `in` is read only for a program named `-` (standard input in a pipe).
 int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err,
              std::istream& in = std::cin);
+
+// A program from standard input, capped as a file is (`limit`: io::nc::kMaxProgramBytes, 4 GiB):
+// a longer stream is refused once it passes the cap (Parse at stdin:1, the file's message)
+// instead of filling memory. Memory held stays within the cap.
+Result<std::string> readStandardInput(std::istream& in,
+                                      std::size_t limit = io::nc::kMaxProgramBytes);
 
 // Parses and runs; the whole `--batch` front end.
 int runBatchCommandLine(const std::vector<std::string>& arguments, std::ostream& out,

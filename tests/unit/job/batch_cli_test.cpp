@@ -322,5 +322,18 @@ TEST(BatchCli, StickOutShorterThanTheBallIsAUsageErrorNamingTheOption) {
         << result.err;
 }
 
+// A stream without end on standard input (4.5 GB of NUL) took 8.4 GB and ended in exit 1; it is
+// capped as a file is, with the file's message (the cap is 4 GiB; a small one here).
+TEST(BatchCli, StandardInputLongerThanTheCapIsRefusedAsAFileTooLarge) {
+    std::istringstream endless(std::string(5000, '\0'));
+    const auto refused = readStandardInput(endless, 4096);
+    ASSERT_FALSE(refused.has_value());
+    EXPECT_EQ(exitCodeFor(refused.error()), kExitInput);
+    EXPECT_EQ(refused.error().toString(),
+              "stdin:1:1: parse error: file too large: expected at most 4 GiB of G-code");
+    std::istringstream exact(std::string(4096, 'x'));
+    EXPECT_EQ(readStandardInput(exact, 4096).value_or("").size(), 4096U);
+}
+
 } // namespace
 } // namespace bladeaxis::app

@@ -69,26 +69,40 @@ class BatchProgress final : public ProgressSink {
     bool m_lineShown = false;
 };
 
-// Ctrl+C (SIGINT) or a polite kill (SIGTERM) during a batch run cancels the job like the GUI's
-// Cancel: the job stops at its next check, nothing is written, the exit code is 7. The handler
-// only stores to a lock-free atomic, which is async-signal-safe.
+// Ctrl+C (SIGINT) or a polite kill (SIGTERM) cancels a batch run like the GUI's Cancel, in
+// every phase: the handler is installed for the whole process before the arguments are read
+// (installBatchInterruptHandlers, from main) and stays until it ends, so a signal at start-up,
+// during generation or at exit never ends the process by the signal. A signal that comes before
+// a run's token exists is kept (g_interruptPending) and cancels the run as soon as it starts.
+// The run stops at its next check and exits 7 with nothing written; once its outputs are in
+// place, a signal is too late to undo them and the run ends as it would have. The handler only
+// stores to lock-free atomics, which is async-signal-safe.
+std::atomic<bool> g_interruptPending{false};
 std::atomic<CancelToken*> g_interruptTarget{nullptr};
 
 extern "C" void cancelOnSignal(int) {
+    g_interruptPending.store(true);
     if (CancelToken* token = g_interruptTarget.load()) {
         token->requestCancel();
     }
+}
+
+void setInterruptHandlers(struct sigaction* previousInt, struct sigaction* previousTerm) {
+    struct sigaction action {};
+    action.sa_handler = cancelOnSignal;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(SIGINT, &action, previousInt);
+    ::sigaction(SIGTERM, &action, previousTerm);
 }
 
 class InterruptCancels {
   public:
     explicit InterruptCancels(CancelToken& token) {
         g_interruptTarget.store(&token);
-        struct sigaction action {};
-        action.sa_handler = cancelOnSignal;
-        sigemptyset(&action.sa_mask);
-        ::sigaction(SIGINT, &action, &m_previousInt);
-        ::sigaction(SIGTERM, &action, &m_previousTerm);
+        setInterruptHandlers(&m_previousInt, &m_previousTerm);
+        if (g_interruptPending.exchange(false)) { // came before this run had a token
+            token.requestCancel();
+        }
     }
     InterruptCancels(const InterruptCancels&) = delete;
     InterruptCancels& operator=(const InterruptCancels&) = delete;
@@ -112,7 +126,8 @@ int fail(const Error& error, std::ostream& err) {
     return exitCodeFor(error);
 }
 
-int runGenerate(const BatchOptions& options, std::ostream& out, std::ostream& err) {
+int runGenerate(const BatchOptions& options, const CancelToken& cancel, std::ostream& out,
+                std::ostream& err) {
     auto machine = job::loadMachine(options.job);
     if (!machine) {
         return fail(machine.error(), err);
@@ -120,6 +135,9 @@ int runGenerate(const BatchOptions& options, std::ostream& out, std::ostream& er
     auto generated = job::generateProgram(options.generate, *machine);
     if (!generated) {
         return fail(generated.error(), err);
+    }
+    if (cancel.isCancelled()) { // the generation does not stop early; its program is not written
+        return fail(cancelledError(), err);
     }
     const std::filesystem::path inputs[] = {options.job.machineFile};
     if (auto status = writeFileAtomically(options.generateOutput, generated->text, inputs);
@@ -146,8 +164,8 @@ Error streamFailure(const std::string& what) {
 // to standard output (the summary then goes to standard error), so BladeAxis can sit in a
 // post-processor's pipe. The program goes out only once every other output is written, so a
 // refused or failed job leaves standard output empty.
-int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
-               std::ostream& err) {
+int runAnalyse(const BatchOptions& options, CancelToken& cancel, std::istream& in,
+               std::ostream& out, std::ostream& err) {
     job::JobSpec spec = options.job;
     if (!spec.demo && spec.program == "-") {
         auto text = readStandardInput(in);
@@ -169,8 +187,6 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
     spec.releaseSamplesOnceRead = true;
     std::ostream& summary = programToStdout ? err : out;
     BatchProgress progress(err, options.quiet, options.progress);
-    CancelToken cancel;
-    InterruptCancels interrupts(cancel);
     auto result = job::runJob(spec, progress, cancel);
     if (cancel.isCancelled()) {
         return fail(cancelledError(), err);
@@ -178,7 +194,9 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
     if (!result) {
         return fail(result.error(), err);
     }
-    if (auto status = job::writeJobOutputs(spec, *result); !status) {
+    // Checks the token last before the outputs are moved into place: after that the run ends
+    // as it would have, its outputs whole.
+    if (auto status = job::writeJobOutputs(spec, *result, &cancel); !status) {
         return fail(status.error(), err);
     }
     if (programToStdout) {
@@ -233,16 +251,18 @@ Status writeReproduction(const std::filesystem::path& folder,
     return {};
 }
 
-int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& err) {
+int runReproduce(const BatchOptions& options, const CancelToken& cancel, std::ostream& out,
+                 std::ostream& err) {
     BatchProgress progress(err, options.quiet, options.progress);
-    CancelToken cancel;
-    InterruptCancels interrupts(cancel);
     auto result = job::runReproduction(options.reproduction, progress, cancel);
     if (cancel.isCancelled()) {
         return fail(cancelledError(), err);
     }
     if (!result) {
         return fail(result.error(), err);
+    }
+    if (cancel.isCancelled()) {
+        return fail(cancelledError(), err);
     }
     if (auto status = writeReproduction(options.job.outputDir, *result); !status) {
         return fail(status.error(), err);
@@ -271,7 +291,16 @@ Result<std::string> readStandardInput(std::istream& in, std::size_t limit) {
     return text;
 }
 
+void installBatchInterruptHandlers() {
+    setInterruptHandlers(nullptr, nullptr);
+}
+
 int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err, std::istream& in) {
+    CancelToken cancel;
+    InterruptCancels interrupts(cancel);
+    if (cancel.isCancelled()) { // a signal before the run started
+        return fail(cancelledError(), err);
+    }
     switch (options.mode) {
     case BatchOptions::Mode::Help:
         out << options.helpText;
@@ -284,11 +313,11 @@ int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err, 
             << ")\nbuilt with " << BLADEAXIS_LIBRARIES << '\n';
         return kExitOk;
     case BatchOptions::Mode::Generate:
-        return runGenerate(options, out, err);
+        return runGenerate(options, cancel, out, err);
     case BatchOptions::Mode::Analyse:
-        return runAnalyse(options, in, out, err);
+        return runAnalyse(options, cancel, in, out, err);
     case BatchOptions::Mode::Reproduce:
-        return runReproduce(options, out, err);
+        return runReproduce(options, cancel, out, err);
     }
     return kExitInternal;
 }

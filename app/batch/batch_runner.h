@@ -9,6 +9,11 @@
 
 namespace bladeaxis::app {
 
+// SIGINT and SIGTERM cancel the batch run (exit 7, nothing written) from here on, for the rest
+// of the process: main calls it first, so that no phase (start-up, generation, the exit) ends
+// by the signal. A signal before a run starts cancels that run when it starts.
+void installBatchInterruptHandlers();
+
 // `in` is read only for a program named `-` (standard input in a pipe).
 int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err,
              std::istream& in = std::cin);

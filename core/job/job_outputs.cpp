@@ -488,7 +488,7 @@ Status stageReportFolder(const JobSpec& spec, const JobResult& result, OutputSet
 
 // Every output staged, then all published or none: a job that cannot write one of its files
 // leaves neither the others nor an output folder it made.
-Status stageAndPublish(const JobSpec& spec, const JobResult& result) {
+Status stageAndPublish(const JobSpec& spec, const JobResult& result, const CancelToken* cancel) {
     OutputSet outputs(protectedInputsOf(spec));
     if (auto status = stageOutputProgram(spec, result, outputs); !status) {
         return status;
@@ -496,8 +496,14 @@ Status stageAndPublish(const JobSpec& spec, const JobResult& result) {
     if (auto status = stageOutputCl(spec, result, outputs); !status) {
         return status;
     }
-    if (spec.outputDir.empty()) {
+    const auto publish = [&outputs, cancel]() -> Status {
+        if (cancel != nullptr && cancel->isCancelled()) { // the last point where nothing is out
+            return makeError(ErrorCode::Cancelled, "interrupted: nothing was written");
+        }
         return outputs.publish();
+    };
+    if (spec.outputDir.empty()) {
+        return publish();
     }
     auto folder = CreatedFolder::create(spec.outputDir);
     if (!folder) {
@@ -506,7 +512,7 @@ Status stageAndPublish(const JobSpec& spec, const JobResult& result) {
     if (auto status = stageReportFolder(spec, result, outputs); !status) {
         return status;
     }
-    if (auto status = outputs.publish(); !status) {
+    if (auto status = publish(); !status) {
         return status;
     }
     folder->keep();
@@ -526,7 +532,7 @@ std::vector<fs::path> protectedInputsOf(const JobSpec& spec) {
     return inputs;
 }
 
-Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
+Status writeJobOutputs(const JobSpec& spec, const JobResult& result, const CancelToken* cancel) {
     // Refused before anything is written: a job that ran without an output folder (and so
     // released the samples these files are made of) given one only now.
     if (!spec.outputDir.empty() &&
@@ -543,7 +549,7 @@ Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
     if (auto refused = refuseOutputsOfThisResult(spec, result); !refused) {
         return refused;
     }
-    return stageAndPublish(spec, result);
+    return stageAndPublish(spec, result, cancel);
 }
 
 std::string reportJsonText(const JobResult& result, const JobSpec* spec) {

@@ -133,6 +133,23 @@ TEST_F(OutputSafety, AJobFileOutputWithANulCharacterIsRefusedAtItsLine) {
     EXPECT_EQ(readTextFile(m_dir / "victim.json").value_or(""), "victim\n");
 }
 
+// SIGTERM at start-up (before the run's token exists) ended the process by the signal (143):
+// the handler is there from main's first line and the signal cancels the run when it starts.
+TEST_F(OutputSafety, ASignalBeforeTheRunStartsCancelsItWithExit7AndNothingWritten) {
+    installBatchInterruptHandlers();
+    std::raise(SIGTERM);
+    const CliRun cancelled = run({"--batch", "--generate", path("g.nc"), "-q"});
+    const bool writtenWhenCancelled = fs::exists(m_dir / "g.nc");
+    const CliRun next = run({"--batch", "--generate", path("g.nc"), "-q"});
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    EXPECT_EQ(cancelled.code, kExitCancelled) << cancelled.err;
+    EXPECT_NE(cancelled.err.find("interrupted: nothing was written"), std::string::npos);
+    EXPECT_FALSE(writtenWhenCancelled);
+    EXPECT_EQ(next.code, kExitOk) << "the signal cancels one run, not every run after it";
+    EXPECT_TRUE(fs::exists(m_dir / "g.nc"));
+}
+
 // A fixed-head machine, written by the test (the shipped table_a.json's chain and limits).
 constexpr const char* kTableAMachine = R"({"schema": "bladeaxis-machine/1",
   "name": "table A, fixed head",

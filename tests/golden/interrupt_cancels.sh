@@ -27,7 +27,7 @@ grep -q "interrupted: nothing was written" "$work/stderr.txt" || { cat "$work/st
 "$bladeaxis" --batch --generate "$work/generated.nc" --revolutions 30 --pitch 0.5 -q \
     2>"$work/generate_stderr.txt" &
 generate=$!
-sleep 0.3
+sleep 1 # the generation takes seconds; a signal before main() runs would be the system's
 kill -TERM "$generate"
 wait "$generate"
 code=$?

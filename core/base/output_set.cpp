@@ -124,6 +124,9 @@ Status OutputSet::publish() {
 
 Result<CreatedFolder> CreatedFolder::create(const fs::path& folder) {
     CreatedFolder created;
+    if (folder.empty()) {
+        return created; // no output folder: nothing to make
+    }
     std::error_code ec;
     fs::path start = fs::absolute(folder, ec).lexically_normal();
     if (!start.has_filename()) { // "out/": its parent is "out" itself

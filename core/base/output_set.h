@@ -45,6 +45,7 @@ class OutputSet {
 
 // Creates `folder` (and its missing parents) for a run's outputs and removes what it created
 // when dropped, unless keep() was called: a failed run leaves no empty folder of its own behind.
+// An empty path makes nothing.
 class CreatedFolder {
   public:
     static Result<CreatedFolder> create(const std::filesystem::path& folder);

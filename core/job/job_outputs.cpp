@@ -489,6 +489,11 @@ Status stageReportFolder(const JobSpec& spec, const JobResult& result, OutputSet
 // Every output staged, then all published or none: a job that cannot write one of its files
 // leaves neither the others nor an output folder it made.
 Status stageAndPublish(const JobSpec& spec, const JobResult& result, const CancelToken* cancel) {
+    // Made first: the program's folder may lie in it (-o out/new.nc --out out/report).
+    auto folder = CreatedFolder::create(spec.outputDir);
+    if (!folder) {
+        return std::unexpected(folder.error());
+    }
     OutputSet outputs(protectedInputsOf(spec));
     if (auto status = stageOutputProgram(spec, result, outputs); !status) {
         return status;
@@ -496,23 +501,15 @@ Status stageAndPublish(const JobSpec& spec, const JobResult& result, const Cance
     if (auto status = stageOutputCl(spec, result, outputs); !status) {
         return status;
     }
-    const auto publish = [&outputs, cancel]() -> Status {
-        if (cancel != nullptr && cancel->isCancelled()) { // the last point where nothing is out
-            return makeError(ErrorCode::Cancelled, "interrupted: nothing was written");
+    if (!spec.outputDir.empty()) {
+        if (auto status = stageReportFolder(spec, result, outputs); !status) {
+            return status;
         }
-        return outputs.publish();
-    };
-    if (spec.outputDir.empty()) {
-        return publish();
     }
-    auto folder = CreatedFolder::create(spec.outputDir);
-    if (!folder) {
-        return std::unexpected(folder.error());
+    if (cancel != nullptr && cancel->isCancelled()) { // the last point where nothing is out
+        return makeError(ErrorCode::Cancelled, "interrupted: nothing was written");
     }
-    if (auto status = stageReportFolder(spec, result, outputs); !status) {
-        return status;
-    }
-    if (auto status = publish(); !status) {
+    if (auto status = outputs.publish(); !status) {
         return status;
     }
     folder->keep();

@@ -112,9 +112,9 @@ def test_write_outputs_writes_what_the_job_names(tmp_path):
 
 
 def test_output_cl_is_written_as_documented(tmp_path):
-    outcome = bladeaxis.run_job({"demo": True, "output_cl": "out/demo.cl"}, base_dir=tmp_path)
+    outcome = bladeaxis.run_job({"demo": True, "output_cl": "demo.cl"}, base_dir=tmp_path)
     outcome.write_outputs()
-    assert "GOTO/" in (tmp_path / "out" / "demo.cl").read_text()
+    assert "GOTO/" in (tmp_path / "demo.cl").read_text()
 
 
 def test_an_unknown_key_is_refused_with_the_nearest_known_one():

@@ -10,6 +10,7 @@
 #include "core/base/memory_policy.h"
 #include "ui/run_gui.h"
 
+#include <csignal>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -32,11 +33,16 @@ bool wantsBatch(const std::vector<std::string>& arguments) {
 } // namespace
 
 int main(int argc, char** argv) {
+    // First, so that Ctrl+C at start-up cancels a batch run (exit 7) rather than killing it;
+    // the window restores the system's default below.
+    bladeaxis::app::installBatchInterruptHandlers();
     bladeaxis::returnLargeBlocksToTheSystem();
     bladeaxis::backLargeBlocksWithHugePages();
     const std::vector<std::string> arguments =
         bladeaxis::app::expandSubcommand(std::vector<std::string>(argv, argv + argc));
     if (!wantsBatch(arguments)) {
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
         if (auto problem = bladeaxis::app::checkGuiArguments(arguments, &std::getenv)) {
             std::cerr << "bladeaxis: " << *problem << '\n';
             return bladeaxis::kExitUsage;

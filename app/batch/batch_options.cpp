@@ -3,9 +3,11 @@
 #include "app/batch/man_page.h"
 #include "app/subcommands.h"
 #include "core/base/number_io.h"
+#include "core/base/output_set.h"
 #include "core/base/units.h"
 #include "core/base/version.h"
 #include "core/job/job_file.h"
+#include "core/job/output_paths.h"
 #include "core/job/parameter_schema.h"
 
 #include <CLI/CLI.hpp>
@@ -393,7 +395,49 @@ Status checkFileValues(const RawOptions& raw) {
     return {};
 }
 
+// Each path by the option that gave it, or by its key in the job file.
+job::PathNames pathNamesOf(const RawOptions& raw) {
+    const std::string inJob = " in " + raw.jobFile;
+    const auto name = [&inJob](const std::string& given, const char* option, const char* key) {
+        return given.empty() ? key + inJob : std::string(option);
+    };
+    return {.program = name(raw.program, "the program", "program"),
+            .machine = name(raw.machine, "--machine", "machine"),
+            .cad = name(raw.cad, "--cad", "cad"),
+            .jobFile = "--job",
+            .outputProgram = name(raw.outputProgram, "-o", "output_program"),
+            .outputCl = name(raw.outputCl, "--cl-output", "output_cl"),
+            .outputDir = name(raw.out, "--out", "output_dir")};
+}
+
+// Outputs that would overwrite each other or an input are refused before anything runs.
+Status refuseSharedPaths(const RawOptions& raw, const BatchOptions& options) {
+    switch (options.mode) {
+    case BatchOptions::Mode::Generate: {
+        const NamedPath outputs[] = {{"--generate", options.generateOutput}};
+        const NamedPath inputs[] = {{"--machine", options.job.machineFile}};
+        return refuseSharedFiles(outputs, inputs);
+    }
+    case BatchOptions::Mode::Analyse:
+        return job::refuseSharedPaths(options.job, pathNamesOf(raw));
+    default:
+        return {};
+    }
+}
+
+Result<BatchOptions> interpretOptions(const RawOptions& raw, std::string helpText);
+
 Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
+    auto options = interpretOptions(raw, std::move(helpText));
+    if (options) {
+        if (auto refused = refuseSharedPaths(raw, *options); !refused) {
+            return std::unexpected(refused.error());
+        }
+    }
+    return options;
+}
+
+Result<BatchOptions> interpretOptions(const RawOptions& raw, std::string helpText) {
     if (auto status = checkFileValues(raw); !status) {
         return std::unexpected(status.error());
     }

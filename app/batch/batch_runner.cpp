@@ -2,9 +2,11 @@
 
 #include "app/batch/exit_codes.h"
 #include "core/base/file_io.h"
+#include "core/base/output_set.h"
 #include "core/base/version.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <csignal>
@@ -67,26 +69,40 @@ class BatchProgress final : public ProgressSink {
     bool m_lineShown = false;
 };
 
-// Ctrl+C (SIGINT) or a polite kill (SIGTERM) during a batch run cancels the job like the GUI's
-// Cancel: the job stops at its next check, nothing is written, the exit code is 7. The handler
-// only stores to a lock-free atomic, which is async-signal-safe.
+// Ctrl+C (SIGINT) or a polite kill (SIGTERM) cancels a batch run like the GUI's Cancel, in
+// every phase: the handler is installed for the whole process before the arguments are read
+// (installBatchInterruptHandlers, from main) and stays until it ends, so a signal at start-up,
+// during generation or at exit never ends the process by the signal. A signal that comes before
+// a run's token exists is kept (g_interruptPending) and cancels the run as soon as it starts.
+// The run stops at its next check and exits 7 with nothing written; once its outputs are in
+// place, a signal is too late to undo them and the run ends as it would have. The handler only
+// stores to lock-free atomics, which is async-signal-safe.
+std::atomic<bool> g_interruptPending{false};
 std::atomic<CancelToken*> g_interruptTarget{nullptr};
 
 extern "C" void cancelOnSignal(int) {
+    g_interruptPending.store(true);
     if (CancelToken* token = g_interruptTarget.load()) {
         token->requestCancel();
     }
+}
+
+void setInterruptHandlers(struct sigaction* previousInt, struct sigaction* previousTerm) {
+    struct sigaction action {};
+    action.sa_handler = cancelOnSignal;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(SIGINT, &action, previousInt);
+    ::sigaction(SIGTERM, &action, previousTerm);
 }
 
 class InterruptCancels {
   public:
     explicit InterruptCancels(CancelToken& token) {
         g_interruptTarget.store(&token);
-        struct sigaction action {};
-        action.sa_handler = cancelOnSignal;
-        sigemptyset(&action.sa_mask);
-        ::sigaction(SIGINT, &action, &m_previousInt);
-        ::sigaction(SIGTERM, &action, &m_previousTerm);
+        setInterruptHandlers(&m_previousInt, &m_previousTerm);
+        if (g_interruptPending.exchange(false)) { // came before this run had a token
+            token.requestCancel();
+        }
     }
     InterruptCancels(const InterruptCancels&) = delete;
     InterruptCancels& operator=(const InterruptCancels&) = delete;
@@ -110,7 +126,8 @@ int fail(const Error& error, std::ostream& err) {
     return exitCodeFor(error);
 }
 
-int runGenerate(const BatchOptions& options, std::ostream& out, std::ostream& err) {
+int runGenerate(const BatchOptions& options, const CancelToken& cancel, std::ostream& out,
+                std::ostream& err) {
     auto machine = job::loadMachine(options.job);
     if (!machine) {
         return fail(machine.error(), err);
@@ -119,7 +136,12 @@ int runGenerate(const BatchOptions& options, std::ostream& out, std::ostream& er
     if (!generated) {
         return fail(generated.error(), err);
     }
-    if (auto status = writeFileAtomically(options.generateOutput, generated->text); !status) {
+    if (cancel.isCancelled()) { // the generation does not stop early; its program is not written
+        return fail(cancelledError(), err);
+    }
+    const std::filesystem::path inputs[] = {options.job.machineFile};
+    if (auto status = writeFileAtomically(options.generateOutput, generated->text, inputs);
+        !status) {
         return fail(status.error(), err);
     }
     if (!options.quiet) {
@@ -142,11 +164,15 @@ Error streamFailure(const std::string& what) {
 // to standard output (the summary then goes to standard error), so BladeAxis can sit in a
 // post-processor's pipe. The program goes out only once every other output is written, so a
 // refused or failed job leaves standard output empty.
-int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
-               std::ostream& err) {
+int runAnalyse(const BatchOptions& options, CancelToken& cancel, std::istream& in,
+               std::ostream& out, std::ostream& err) {
     job::JobSpec spec = options.job;
     if (!spec.demo && spec.program == "-") {
-        spec.programText = std::string(std::istreambuf_iterator<char>(in), {});
+        auto text = readStandardInput(in);
+        if (!text) {
+            return fail(text.error(), err);
+        }
+        spec.programText = std::move(*text);
         spec.program = "stdin";
     }
     const bool programToStdout = spec.outputProgram == "-";
@@ -161,8 +187,6 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
     spec.releaseSamplesOnceRead = true;
     std::ostream& summary = programToStdout ? err : out;
     BatchProgress progress(err, options.quiet, options.progress);
-    CancelToken cancel;
-    InterruptCancels interrupts(cancel);
     auto result = job::runJob(spec, progress, cancel);
     if (cancel.isCancelled()) {
         return fail(cancelledError(), err);
@@ -170,7 +194,9 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
     if (!result) {
         return fail(result.error(), err);
     }
-    if (auto status = job::writeJobOutputs(spec, *result); !status) {
+    // Checks the token last before the outputs are moved into place: after that the run ends
+    // as it would have, its outputs whole.
+    if (auto status = job::writeJobOutputs(spec, *result, &cancel); !status) {
         return fail(status.error(), err);
     }
     if (programToStdout) {
@@ -201,10 +227,33 @@ int runAnalyse(const BatchOptions& options, std::istream& in, std::ostream& out,
     return kExitOk;
 }
 
-int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& err) {
+// Both files or neither, and no folder of this run's left empty (as a job's outputs).
+Status writeReproduction(const std::filesystem::path& folder,
+                         const job::ReproductionResult& result) {
+    if (folder.empty()) {
+        return {};
+    }
+    auto created = CreatedFolder::create(folder);
+    if (!created) {
+        return std::unexpected(created.error());
+    }
+    OutputSet outputs;
+    for (const auto& [name, text] : {std::pair{"reproduce.json", job::reproductionJsonText(result)},
+                                     std::pair{"reproduce.csv", job::reproductionCsv(result)}}) {
+        if (auto status = outputs.add(folder / name, text); !status) {
+            return status;
+        }
+    }
+    if (auto status = outputs.publish(); !status) {
+        return status;
+    }
+    created->keep();
+    return {};
+}
+
+int runReproduce(const BatchOptions& options, const CancelToken& cancel, std::ostream& out,
+                 std::ostream& err) {
     BatchProgress progress(err, options.quiet, options.progress);
-    CancelToken cancel;
-    InterruptCancels interrupts(cancel);
     auto result = job::runReproduction(options.reproduction, progress, cancel);
     if (cancel.isCancelled()) {
         return fail(cancelledError(), err);
@@ -212,18 +261,11 @@ int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& e
     if (!result) {
         return fail(result.error(), err);
     }
-    const auto& folder = options.job.outputDir;
-    if (!folder.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(folder, ec);
-        const std::pair<const char*, std::string> files[] = {
-            {"reproduce.json", job::reproductionJsonText(*result)},
-            {"reproduce.csv", job::reproductionCsv(*result)}};
-        for (const auto& [name, text] : files) {
-            if (auto status = writeFileAtomically(folder / name, text); !status) {
-                return fail(status.error(), err);
-            }
-        }
+    if (cancel.isCancelled()) {
+        return fail(cancelledError(), err);
+    }
+    if (auto status = writeReproduction(options.job.outputDir, *result); !status) {
+        return fail(status.error(), err);
     }
     if (!options.quiet) {
         out << job::reproductionSummary(*result);
@@ -233,7 +275,32 @@ int runReproduce(const BatchOptions& options, std::ostream& out, std::ostream& e
 
 } // namespace
 
+Result<std::string> readStandardInput(std::istream& in, std::size_t limit) {
+    std::string text;
+    std::array<char, 1 << 16> chunk{};
+    while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
+        const auto got = static_cast<std::size_t>(in.gcount());
+        if (text.size() + got > limit) {
+            return std::unexpected(io::nc::programTooLarge("stdin"));
+        }
+        if (text.size() + got > text.capacity()) { // doubling, but never past the cap
+            text.reserve(std::min(limit, std::max(2 * text.capacity(), text.size() + got)));
+        }
+        text.append(chunk.data(), got);
+    }
+    return text;
+}
+
+void installBatchInterruptHandlers() {
+    setInterruptHandlers(nullptr, nullptr);
+}
+
 int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err, std::istream& in) {
+    CancelToken cancel;
+    InterruptCancels interrupts(cancel);
+    if (cancel.isCancelled()) { // a signal before the run started
+        return fail(cancelledError(), err);
+    }
     switch (options.mode) {
     case BatchOptions::Mode::Help:
         out << options.helpText;
@@ -246,11 +313,11 @@ int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err, 
             << ")\nbuilt with " << BLADEAXIS_LIBRARIES << '\n';
         return kExitOk;
     case BatchOptions::Mode::Generate:
-        return runGenerate(options, out, err);
+        return runGenerate(options, cancel, out, err);
     case BatchOptions::Mode::Analyse:
-        return runAnalyse(options, in, out, err);
+        return runAnalyse(options, cancel, in, out, err);
     case BatchOptions::Mode::Reproduce:
-        return runReproduce(options, out, err);
+        return runReproduce(options, cancel, out, err);
     }
     return kExitInternal;
 }
@@ -259,7 +326,10 @@ int runBatchCommandLine(const std::vector<std::string>& arguments, std::ostream&
                         std::ostream& err, std::istream& in) {
     auto options = parseBatchOptions(arguments);
     if (!options) {
-        err << "bladeaxis: " << options.error().message << "\nRun with --help for usage.\n";
+        // A job file's error names its file and line (the command line's have no place).
+        const SourceLocation& where = options.error().where;
+        err << "bladeaxis: " << (where.empty() ? "" : where.toString() + ": ")
+            << options.error().message << "\nRun with --help for usage.\n";
         return kExitUsage;
     }
     if (&err == &std::cerr && isatty(STDERR_FILENO) == 1 && !options->quiet) {

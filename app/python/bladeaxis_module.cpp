@@ -308,7 +308,25 @@ class Outcome {
 
 // --- run_job -------------------------------------------------------------------------------
 
-// A dict (any mapping) as a job file's JSON. pathlib paths among the values are written as
+// A path value of a dict job (bytes or os.PathLike) as the str a job file holds. JSON is UTF-8
+// text: a name that is not UTF-8 cannot be given in a job and is refused naming its key (it went
+// through as an escaped lone surrogate and came back as "invalid JSON in the job file", and a
+// bytes path made json.dumps report a "Circular reference").
+py::object pathText(const py::handle& key, const py::handle& value) {
+    const py::module_ os = py::module_::import("os");
+    const py::object text = os.attr("fsdecode")(value);
+    try {
+        text.attr("encode")("utf-8");
+    } catch (const py::error_already_set&) {
+        throw py::value_error("job[" + py::repr(key).cast<std::string>() + "]: the path " +
+                              py::repr(os.attr("fsencode")(value)).cast<std::string>() +
+                              " is not UTF-8, which a job (JSON) cannot hold; link to the file "
+                              "under a UTF-8 name");
+    }
+    return text;
+}
+
+// A dict (any mapping) as a job file's JSON. Path values (pathlib, bytes) are written as
 // strings; NaN and infinity are refused here rather than written as invalid JSON.
 std::string jobJson(const py::handle& job) {
     py::dict spec; // a copy, so the caller's dict does not gain a "schema" key
@@ -316,9 +334,14 @@ std::string jobJson(const py::handle& job) {
     if (!spec.contains("schema")) {
         spec["schema"] = kJobSchema;
     }
-    const py::object fspath = py::module_::import("os").attr("fspath");
-    const py::object text = py::module_::import("json").attr("dumps")(
-        spec, py::arg("default") = fspath, py::arg("allow_nan") = false);
+    const py::object pathLike = py::module_::import("os").attr("PathLike");
+    for (const auto& [key, value] : py::dict(spec)) {
+        if (py::isinstance<py::bytes>(value) || py::isinstance(value, pathLike)) {
+            spec[key] = pathText(key, value);
+        }
+    }
+    const py::object text =
+        py::module_::import("json").attr("dumps")(spec, py::arg("allow_nan") = false);
     return text.cast<std::string>();
 }
 

@@ -126,6 +126,28 @@ Status validateKnots(std::span<const std::size_t> knots, std::size_t n) {
     return {};
 }
 
+// The filter resamples the whole pass every millisecond: its memory follows the cycle time, not
+// the program's size, so a 10-block program with one far-off point would take gigabytes.
+Status checkFilterLength(std::span<const double> s, double feed) {
+    constexpr double kStep = 1e-3;
+    const double samples = (s.back() - s.front()) / feed / kStep;
+    if (samples <= static_cast<double>(kMaxFilterSamples)) {
+        return {};
+    }
+    const auto hours = [](double count) {
+        return std::to_string(static_cast<long long>(std::llround(count * kStep / 3600.0)));
+    };
+    return makeError(
+        ErrorCode::Geometry,
+        "the controller filter would resample " + hours(samples) + " h of motion (" +
+            std::to_string(static_cast<long long>(std::llround(samples / 1e6))) +
+            " million 1 ms samples at the feed), more than its limit of " +
+            std::to_string(kMaxFilterSamples / 1'000'000) + " million (" +
+            hours(static_cast<double>(kMaxFilterSamples)) +
+            " h): check the program for a far-off point or a very low feed, or use the spline "
+            "derivatives (--derivatives spline; \"derivatives\": \"spline\" in a job file)");
+}
+
 // The controller-like filter (the default method, docs/figures.md): the axis at constant feed
 // every millisecond, smoothed by the window twice. Velocity, acceleration and jerk are central
 // differences of the smoothed positions (an end repeats its neighbour, as filterAxis's), taken
@@ -461,6 +483,9 @@ Result<AxisSeries> differentiateOne(const SharedFit& fit, std::span<const double
     }
     switch (fit.method) {
     case DerivativeMethod::Filtered:
+        if (Status bounded = checkFilterLength(fit.s, fit.feed); !bounded) {
+            return std::unexpected(std::move(bounded.error()));
+        }
         filteredDerivatives(fit.s, position, fit.feed, fit.filterSeconds, series);
         break;
     case DerivativeMethod::FiniteDifference:

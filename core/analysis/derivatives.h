@@ -16,12 +16,19 @@ namespace bladeaxis::analysis {
 // returns the series with velocity and acceleration, the peaks (the jerk's too), percentiles at
 // feed F (mm/s) and the range of the positions.
 // Errors: InvalidArgument (sizes differ, s not strictly increasing, F not positive),
-// Geometry (a non-finite value, or derivatives that overflow).
+// Geometry (a non-finite value, derivatives that overflow, a filtered pass longer than
+// kMaxFilterSamples milliseconds).
 // filterSeconds is the window of DerivativeMethod::Filtered (ignored otherwise); its peaks and
 // percentiles are taken over the whole 1 ms series, its per-sample values interpolated at the
 // sample times.
 // knots (DerivativeMethod::Spline only): ascending sample indices with the first and the last
 // (motionKnots); the spline is fitted through them and evaluated at every sample. Empty: all.
+// The most samples DerivativeMethod::Filtered resamples an axis into (one per millisecond of
+// the pass at its feed): 50 million, about 13.9 hours of motion and 800 MB per axis under way.
+// A longer pass (a far-off point, a very low feed) is refused (Geometry) naming this limit and
+// the spline derivatives, which take the program's own samples, instead of exhausting memory.
+inline constexpr std::size_t kMaxFilterSamples = 50'000'000;
+
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,
                                      double feed, DerivativeMethod method,
                                      double filterSeconds = 0.008,

@@ -58,6 +58,46 @@ Result<std::string> readTextFile(const fs::path& path) {
     return content;
 }
 
+bool hasNulCharacter(const fs::path& path) {
+    return path.native().find('\0') != std::string::npos;
+}
+
+namespace {
+
+// Where a path ends up once every link on the way is followed; a name not yet there keeps its
+// own last part under its folder's resolved place.
+fs::path resolvedPlace(const fs::path& path) {
+    std::error_code ec;
+    return fs::weakly_canonical(fs::absolute(followLinks(path), ec).lexically_normal(), ec);
+}
+
+} // namespace
+
+bool isSameDestination(const fs::path& a, const fs::path& b) {
+    struct stat first {};
+    struct stat second {};
+    const bool firstExists = ::stat(a.c_str(), &first) == 0;
+    const bool secondExists = ::stat(b.c_str(), &second) == 0;
+    if (firstExists && secondExists) {
+        const auto stream = [](const struct stat& s) {
+            return S_ISCHR(s.st_mode) || S_ISFIFO(s.st_mode);
+        };
+        return !stream(first) && first.st_dev == second.st_dev && first.st_ino == second.st_ino;
+    }
+    return firstExists == secondExists && resolvedPlace(a) == resolvedPlace(b);
+}
+
+fs::path temporaryNameIn(const fs::path& folder) {
+    static constexpr std::string_view kLetters =
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+    std::random_device device;
+    std::string name = ".ba-";
+    for (int i = 0; i < 6; ++i) {
+        name += kLetters[device() % kLetters.size()];
+    }
+    return folder / name;
+}
+
 bool isSameFile(const fs::path& a, const fs::path& b) {
     std::error_code ec;
     return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
@@ -118,10 +158,8 @@ int openTemporary(const fs::path& path, mode_t mode, fs::path& named) {
     if (fd >= 0 || (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL)) {
         return fd;
     }
-    std::random_device device;
     for (int attempt = 0; attempt < 16; ++attempt) {
-        named =
-            folderOf(path) / ("." + path.filename().string() + ".tmp" + std::to_string(device()));
+        named = temporaryNameIn(folderOf(path));
         const int sibling = ::open(named.c_str(), O_CREAT | O_EXCL | O_RDWR | O_CLOEXEC, mode);
         if (sibling >= 0 || errno != EEXIST) {
             return sibling;
@@ -134,10 +172,8 @@ int openTemporary(const fs::path& path, mode_t mode, fs::path& named) {
 // fresh sibling name that the rename then moves over `path`.
 bool nameTemporary(int fd, const fs::path& path, fs::path& named) {
     const std::string self = "/proc/self/fd/" + std::to_string(fd);
-    std::random_device device;
     for (int attempt = 0; attempt < 16; ++attempt) {
-        named =
-            folderOf(path) / ("." + path.filename().string() + ".tmp" + std::to_string(device()));
+        named = temporaryNameIn(folderOf(path));
         if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, named.c_str(), AT_SYMLINK_FOLLOW) == 0) {
             return true;
         }
@@ -315,6 +351,10 @@ std::size_t StagedFile::size() const {
 
 const fs::path& StagedFile::target() const {
     return m_state->requested;
+}
+
+const fs::path& StagedFile::resolvedTarget() const {
+    return m_state->target;
 }
 
 Status StagedFile::commit() {

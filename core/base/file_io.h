@@ -18,7 +18,7 @@ Result<std::string> readTextFile(const std::filesystem::path& path);
 // Writes `content` so that `path` holds either its old content or the whole new one, never a
 // part, even when the process is killed or the disk fills up:
 // - a regular file (or a new name) is written to an unnamed temporary file in the same folder
-//   (O_TMPFILE; a named `.name.tmpN` sibling where the file system lacks it), synced, given the
+//   (O_TMPFILE; a named `.ba-XXXXXX` sibling where the file system lacks it), synced, given the
 //   old file's permission bits, renamed over `path`, and the folder synced;
 // - a symbolic link is followed: its target is replaced as above and the link stays a link;
 // - a character device or a pipe (`/dev/stdout`, a FIFO) is written directly: it holds no old
@@ -53,7 +53,7 @@ class MappedText {
 };
 
 // The content of a regular file written in pieces before it is given its name: it is an
-// unnamed temporary file in the target's folder (a `.name.tmpN` sibling where the file system
+// unnamed temporary file in the target's folder (a `.ba-XXXXXX` sibling where the file system
 // cannot make one unnamed) until commit() moves it over the target exactly as
 // writeFileAtomically does. Dropped uncommitted, nothing of it remains, also when the process is
 // killed (an unnamed file). A job writes a large output here while it runs instead of holding
@@ -80,6 +80,8 @@ class StagedFile {
     Status append(std::string_view content);
     std::size_t size() const;
     const std::filesystem::path& target() const;
+    // The file the content replaces: target() with its links followed.
+    const std::filesystem::path& resolvedTarget() const;
     // Syncs the content and moves it over the target. Once committed the file stays readable
     // here; a second commit names it again (the same bytes).
     Status commit();
@@ -95,5 +97,20 @@ class StagedFile {
 
 // True when both paths name the same existing file (after resolving links).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// True when writing to `a` and to `b` would write the same file: the same existing file (also
+// through links and hard links), or, for a name not yet there, the same place once links in its
+// folders are followed. A character device or a pipe (`/dev/null`, a FIFO) holds nothing a
+// second write could replace and is never the same.
+bool isSameDestination(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// True when `path` holds a NUL character: the system reads a path up to its first NUL, so
+// "victim.json\0.nc" would name victim.json.
+bool hasNulCharacter(const std::filesystem::path& path);
+
+// A fresh name for a temporary file in `folder`: `.ba-` and six random letters or digits. Its
+// length does not depend on the target's, so a target with the longest name a file system
+// allows (255 bytes) can still be written through a temporary beside it.
+std::filesystem::path temporaryNameIn(const std::filesystem::path& folder);
 
 } // namespace bladeaxis

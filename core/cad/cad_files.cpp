@@ -1,5 +1,6 @@
 #include "core/cad/cad_files.h"
 
+#include "core/base/file_io.h"
 #include "core/cad/detail/occt_shape.h"
 
 #include <BRepBuilderAPI_Transform.hxx>
@@ -303,8 +304,9 @@ Status writeCadFile(const CadShape& shape, const fs::path& path, CadFormat forma
         return makeError(ErrorCode::InvalidArgument, "nothing to write: the shape has no face",
                          where);
     }
-    fs::path temporary = path;
-    temporary += ".tmp";
+    // A short name beside the target, so a target with the longest legal name can be written.
+    const fs::path temporary =
+        temporaryNameIn(path.has_parent_path() ? path.parent_path() : fs::path("."));
     Status written = catchOcct(ErrorCode::WriteFailed, path.string(),
                                [&] { return writeWithOcct(shape, temporary, format, unit); });
     std::error_code ec;

@@ -33,7 +33,28 @@ Result<blade::BladeSpec> bladeSpecFor(const std::string& profile) {
     return spec;
 }
 
-Result<blade::HelicalPathSpec> pathSpecFor(const GenerateRequest& request) {
+// A fixed head (table_a, table_b) holds the tool at tilt 0, which the program must then state:
+// the default 5 deg tilt wrote a program the same machine refused. A tilt asked of such a
+// machine is refused rather than dropped.
+Status fixedTilt(const GenerateRequest& request, const kinematics::MachineModel& machine,
+                 blade::HelicalPathSpec& spec) {
+    if (machine.hasB()) {
+        return {};
+    }
+    if (request.tiltDeg && *request.tiltDeg != 0.0) {
+        const std::string letter(1, machine.letter(kinematics::AxisId::B));
+        return makeError(ErrorCode::InvalidArgument, "--tilt-deg: the machine (" + machine.name +
+                                                         ") has a fixed head, its " + letter +
+                                                         " is 0; expected no --tilt-deg "
+                                                         "or 0, got " +
+                                                         formatShortest(*request.tiltDeg));
+    }
+    spec.tiltB0 = 0.0;
+    return {};
+}
+
+Result<blade::HelicalPathSpec> pathSpecFor(const GenerateRequest& request,
+                                           const kinematics::MachineModel& machine) {
     blade::HelicalPathSpec spec = blade::demoPathSpec();
     if (request.toolRadius) {
         spec.toolRadius = *request.toolRadius;
@@ -55,6 +76,9 @@ Result<blade::HelicalPathSpec> pathSpecFor(const GenerateRequest& request) {
     }
     if (request.tiltDeg) {
         spec.tiltB0 = units::degToRad(*request.tiltDeg);
+    }
+    if (auto fixed = fixedTilt(request, machine, spec); !fixed) {
+        return std::unexpected(fixed.error());
     }
     if (request.chordalTolerance) {
         spec.chordalTolerance = *request.chordalTolerance;
@@ -90,7 +114,7 @@ Result<GeneratedProgram> generateProgram(const GenerateRequest& request,
     if (!bladeSpec) {
         return std::unexpected(bladeSpec.error());
     }
-    auto pathSpec = pathSpecFor(request);
+    auto pathSpec = pathSpecFor(request, machine);
     if (!pathSpec) {
         return std::unexpected(pathSpec.error());
     }

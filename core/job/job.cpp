@@ -12,6 +12,7 @@
 #include "core/cad/blade_surface.h"
 #include "core/geometry/angles.h"
 #include "core/job/demo_program.h"
+#include "core/job/output_paths.h"
 #include "core/job/tool_radius.h"
 #include "core/kinematics/kinematics.h"
 #include "core/kinematics/machine_file.h"
@@ -644,6 +645,10 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel,
                          const OriginalReadyHook& originalReady) {
     const auto start = std::chrono::steady_clock::now();
+    // Before anything runs: outputs that would overwrite each other or an input.
+    if (auto refused = refuseSharedPaths(spec); !refused) {
+        return std::unexpected(refused.error());
+    }
     progress.progress(0.0, "loading the machine");
     auto machine = loadMachine(spec);
     if (!machine) {

@@ -145,8 +145,11 @@ std::vector<std::filesystem::path> protectedInputsOf(const JobSpec& spec);
 // Writes the re-scheduled program to spec.outputProgram (moving a staged one into place), and
 // report.json, axes.csv and layers.csv (and demo_blade.nc for a demo job; compare.json, compare.csv
 // and report.html for a comparison) into spec.outputDir, each atomically; refuses to overwrite the
-// input program.
-Status writeJobOutputs(const JobSpec& spec, const JobResult& result);
+// input program. All are published or none (see OutputSet): every file is staged first, then
+// moved into place; an output folder the call created is removed again when it fails. With
+// `cancel`, a cancel requested by the time every file is staged writes nothing (Cancelled).
+Status writeJobOutputs(const JobSpec& spec, const JobResult& result,
+                       const CancelToken* cancel = nullptr);
 
 // Per layer of the re-scheduled pass: A reversals and peak A velocity/acceleration before and
 // after (the figures of report.json's layers); empty without a re-scheduling.

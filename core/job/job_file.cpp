@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cctype>
 #include <optional>
+#include <span>
+#include <string_view>
 #include <utility>
 
 namespace bladeaxis::job {
@@ -48,6 +50,8 @@ class JobReader {
     Status analysisOptions(const Json& root, JobSpec& spec) const;
     Status programReading(const Json& root, JobSpec& spec) const;
     Status confineOutputs(const Json& root, const JobSpec& spec) const;
+    Status knownKeys(const Json& object, std::span<const std::string_view> known,
+                     std::string_view where) const;
     Status layerEdits(const Json& list, JobSpec& spec) const;
     Result<scheduling::LayerOverride> layerEdit(const Json& object) const;
     Result<std::vector<Vec2>> keyPoints(const Json& list) const;
@@ -60,6 +64,11 @@ Result<fs::path> JobReader::pathValue(const Json& root, const char* key) const {
     const Json& value = root.at(key);
     if (!value.is_string() || value.get<std::string>().empty()) {
         return fail(key, "expected a file path as a string");
+    }
+    // "victim.json\u0000.nc" would be cut at the NUL by the system and name victim.json.
+    if (value.get<std::string>().find('\0') != std::string::npos) {
+        return fail(key, "a path with a NUL character (\\u0000), which the system would cut "
+                         "short at the NUL");
     }
     const fs::path path = value.get<std::string>();
     return path.is_absolute() ? path : m_path.parent_path() / path;
@@ -94,13 +103,14 @@ std::string lowerExtension(const fs::path& path) {
 // extension). Outputs given on the command line are the user's own choice and replace these.
 Status JobReader::confineOutputs(const Json& root, const JobSpec& spec) const {
     const fs::path folder = m_path.has_parent_path() ? m_path.parent_path() : fs::path(".");
-    for (const auto& [key, path] : {std::pair{"output_program", &spec.outputProgram},
-                                    std::pair{"output_dir", &spec.outputDir}}) {
+    for (const auto& [key, path] :
+         {std::pair{"output_program", &spec.outputProgram}, std::pair{"output_cl", &spec.outputCl},
+          std::pair{"output_dir", &spec.outputDir}}) {
         if (root.contains(key) && !isInside(*path, folder)) {
             return fail(key, "a job file writes only inside its own folder (" + folder.string() +
                                  "), not to " + path->string() +
-                                 "; give the output on the command line (-o, --out) to write "
-                                 "elsewhere");
+                                 "; give the output on the command line (-o, --cl-output, "
+                                 "--out) to write elsewhere");
         }
     }
     std::error_code ec;
@@ -111,6 +121,89 @@ Status JobReader::confineOutputs(const Json& root, const JobSpec& spec) const {
                                           ", which is not a program like the input (" +
                                           input.filename().string() +
                                           "); give -o on the command line to replace it");
+    }
+    return {};
+}
+
+namespace {
+
+// Every key of a job file (docs/job-file.md) and of one of its layer edits.
+constexpr std::string_view kJobKeys[] = {"schema",
+                                         "program",
+                                         "machine",
+                                         "cad",
+                                         "output_program",
+                                         "output_cl",
+                                         "output_dir",
+                                         "demo",
+                                         "analyse_only",
+                                         "compare",
+                                         "compare_optimum",
+                                         "tool_radius_mm",
+                                         "preset",
+                                         "parameters",
+                                         "cad_translate_mm",
+                                         "cad_rotate_deg",
+                                         "stick_out_mm",
+                                         "holder_radius_mm",
+                                         "holder_length_mm",
+                                         "layer_edits",
+                                         "feed_reference",
+                                         "feed_mm_min",
+                                         "derivatives",
+                                         "filter_ms",
+                                         "angle_unit",
+                                         "dialect",
+                                         "columns",
+                                         "b_tolerance_deg",
+                                         "channel_tolerance_deg"};
+constexpr std::string_view kLayerEditKeys[] = {"layer",    "preset",        "margin_deg",
+                                               "eps_rule", "lead_fraction", "key_points"};
+
+// Edits (insertions, deletions, substitutions) from a to b: how close a mistyped key is.
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) {
+        row[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] =
+                std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0U : 1U)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// "; did you mean \"output_cl\"?" for a key within a third of its length of a known one.
+std::string suggestion(std::string_view key, std::span<const std::string_view> known) {
+    const auto nearest = std::ranges::min_element(
+        known, {}, [key](std::string_view candidate) { return editDistance(key, candidate); });
+    if (nearest == known.end() ||
+        editDistance(key, *nearest) > std::max<std::size_t>(2, key.size() / 3)) {
+        return "";
+    }
+    return "; did you mean \"" + std::string(*nearest) + "\"?";
+}
+
+} // namespace
+
+// A key the reader does not know was ignored, so a misspelt "output_programm" wrote nothing
+// and a key a newer version reads was silently dropped: it is refused at its line.
+Status JobReader::knownKeys(const Json& object, std::span<const std::string_view> known,
+                            std::string_view where) const {
+    if (!object.is_object()) {
+        return {};
+    }
+    for (const auto& [key, value] : object.items()) {
+        if (std::ranges::find(known, key) == known.end()) {
+            return fail(key, "unknown key in " + std::string(where) + " (docs/job-file.md)" +
+                                 suggestion(key, known));
+        }
     }
     return {};
 }
@@ -266,6 +359,9 @@ Result<scheduling::LayerOverride> JobReader::layerEdit(const Json& object) const
         !object.at("layer").is_number_unsigned()) {
         return fail("layer_edits", "expected objects with \"layer\": a layer number");
     }
+    if (auto status = knownKeys(object, kLayerEditKeys, "a layer edit"); !status) {
+        return std::unexpected(status.error());
+    }
     edit.layer = object.at("layer").get<std::size_t>();
     if (object.contains("preset")) {
         const Json& preset = object.at("preset");
@@ -332,10 +428,13 @@ Status JobReader::read(const Json& root, JobSpec& spec) const {
     if (!schemaNamed) {
         return fail("schema", std::string("expected \"schema\": \"") + kSchema + "\"");
     }
+    if (auto status = knownKeys(root, kJobKeys, "a job file"); !status) {
+        return status;
+    }
     for (const auto& [key, target] :
          {std::pair{"program", &spec.program}, std::pair{"machine", &spec.machineFile},
           std::pair{"cad", &spec.cad.file}, std::pair{"output_program", &spec.outputProgram},
-          std::pair{"output_dir", &spec.outputDir}}) {
+          std::pair{"output_cl", &spec.outputCl}, std::pair{"output_dir", &spec.outputDir}}) {
         if (root.contains(key)) {
             auto path = pathValue(root, key);
             if (!path) {

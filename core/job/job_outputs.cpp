@@ -1,6 +1,7 @@
 #include "core/analysis/lost_motion.h"
 #include "core/base/file_io.h"
 #include "core/base/number_io.h"
+#include "core/base/output_set.h"
 #include "core/base/units.h"
 #include "core/base/version.h"
 #include "core/io/cl/apt_writer.h"
@@ -8,6 +9,7 @@
 #include "core/job/cycle_time_models.h"
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
+#include "core/job/output_paths.h"
 #include "core/report/analysis_report.h"
 #include "core/report/compare_report.h"
 #include "core/report/schedule_report.h"
@@ -329,17 +331,24 @@ nlohmann::json reportJson(const JobResult& result, const JobSpec* spec) {
 
 namespace {
 
-Status writeOutputCl(const JobSpec& spec, const JobResult& result,
-                     const std::vector<fs::path>& inputs) {
+// Refusals that need no file: checked before any output folder is made or file staged.
+Status refuseOutputsOfThisResult(const JobSpec& spec, const JobResult& result) {
+    if (!spec.outputProgram.empty() && !result.rescheduled) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "an output program needs re-scheduling; it was not run",
+                         {spec.outputProgram.string()});
+    }
+    const bool writesToolpath = !spec.outputProgram.empty() || !spec.outputCl.empty();
+    if (writesToolpath && result.cadCheck && result.rescheduled) {
+        return refuseIfColliding(*result.cadCheck, result.program.path().sourceFile,
+                                 spec.cad.force);
+    }
+    return {};
+}
+
+Status stageOutputCl(const JobSpec& spec, const JobResult& result, OutputSet& outputs) {
     if (spec.outputCl.empty()) {
         return {};
-    }
-    if (result.cadCheck && result.rescheduled) {
-        if (auto refused = refuseIfColliding(*result.cadCheck, result.program.path().sourceFile,
-                                             spec.cad.force);
-            !refused) {
-            return refused;
-        }
     }
     auto text = rescheduledClText(result);
     if (!text) {
@@ -347,41 +356,26 @@ Status writeOutputCl(const JobSpec& spec, const JobResult& result,
         error.where = {spec.outputCl.string()};
         return std::unexpected(error);
     }
-    return writeFileAtomically(spec.outputCl, *text, inputs);
+    return outputs.add(spec.outputCl, *text);
 }
 
-// The re-scheduled program is written first: a report never describes a program that is not
-// on disk. The input is never a target (writeFileAtomically refuses it, also through links).
-Status writeOutputProgram(const JobSpec& spec, const JobResult& result,
-                          const std::vector<fs::path>& inputs) {
+// The re-scheduled program is published first: a report never describes a program that is not
+// on disk. The input is never a target (the set refuses it, also through links).
+Status stageOutputProgram(const JobSpec& spec, const JobResult& result, OutputSet& outputs) {
     if (spec.outputProgram.empty()) {
-        return writeOutputCl(spec, result, inputs);
+        return {};
     }
-    if (!result.rescheduled) {
-        return makeError(ErrorCode::InvalidArgument,
-                         "an output program needs re-scheduling; it was not run",
-                         {spec.outputProgram.string()});
+    if (result.rescheduled->stagedProgram) {
+        outputs.adopt(result.rescheduled->stagedProgram);
+        return {};
     }
-    if (result.cadCheck) {
-        if (auto refused = refuseIfColliding(*result.cadCheck, result.program.path().sourceFile,
-                                             spec.cad.force);
-            !refused) {
-            return refused;
-        }
-    }
-    const Status written =
-        result.rescheduled->stagedProgram
-            ? result.rescheduled->stagedProgram->commit()
-            : writeFileAtomically(spec.outputProgram, result.rescheduled->programText, inputs);
-    if (!written) {
-        return written;
-    }
-    return writeOutputCl(spec, result, inputs);
+    return outputs.add(spec.outputProgram, result.rescheduled->programText);
 }
 
 // The demo blade as real CAD, written through OpenCASCADE, so the demo's outputs include the
-// surface the clearance check used (and the GUI or any CAD system can open it).
-Status writeDemoCad(const JobSpec& spec, const JobResult& result) {
+// surface the clearance check used (and the GUI or any CAD system can open it). OpenCASCADE
+// writes only to a path: to a temporary beside the folder's files, taken into the set from there.
+Status stageDemoCad(const JobSpec& spec, const JobResult& result, OutputSet& outputs) {
     if (!spec.demo || !result.cadCheck) {
         return {};
     }
@@ -395,24 +389,20 @@ Status writeDemoCad(const JobSpec& spec, const JobResult& result) {
         }
         blade = std::move(*placed);
     }
-    return cad::writeCadFile(blade, spec.outputDir / "demo_blade.step", cad::CadFormat::Step);
-}
-
-Status createOutputFolder(const JobSpec& spec) {
-    if (spec.outputDir.empty()) {
-        return {};
-    }
+    const fs::path temporary = temporaryNameIn(spec.outputDir);
+    Status written = cad::writeCadFile(blade, temporary, cad::CadFormat::Step);
+    auto text = written ? readTextFile(temporary) : Result<std::string>(std::string());
     std::error_code ec;
-    fs::create_directories(spec.outputDir, ec);
-    if (ec) {
-        return makeError(ErrorCode::WriteFailed, "cannot create the output folder: " + ec.message(),
-                         {spec.outputDir.string()});
+    fs::remove(temporary, ec);
+    if (!written || !text) {
+        Error error = written ? text.error() : written.error();
+        error.where = {(spec.outputDir / "demo_blade.step").string()};
+        return std::unexpected(error);
     }
-    return {};
+    return outputs.add(spec.outputDir / "demo_blade.step", *text);
 }
 
-Status writeComparison(const JobSpec& spec, const JobResult& result,
-                       const std::vector<fs::path>& inputs) {
+Status stageComparison(const JobSpec& spec, const JobResult& result, OutputSet& outputs) {
     const compare::Comparison& comparison = *result.comparison;
     const std::string name = fs::path(result.program.path().sourceFile).filename().string();
     const std::pair<const char*, std::string> files[] = {
@@ -422,7 +412,7 @@ Status writeComparison(const JobSpec& spec, const JobResult& result,
         {"compare.csv", report::compareCsv(comparison)},
         {"report.html", report::compareHtml(comparison, name)}};
     for (const auto& [file, text] : files) {
-        if (auto status = writeFileAtomically(spec.outputDir / file, text, inputs); !status) {
+        if (auto status = outputs.add(spec.outputDir / file, text); !status) {
             return status;
         }
     }
@@ -456,22 +446,20 @@ std::string withClearanceColumns(const std::string& csv, const cad::ClearanceRep
     return out;
 }
 
-Status writeReportFolder(const JobSpec& spec, const JobResult& result,
-                         const std::vector<fs::path>& inputs) {
+Status stageReportFolder(const JobSpec& spec, const JobResult& result, OutputSet& outputs) {
     if (spec.demo) {
-        if (auto status =
-                writeFileAtomically(spec.outputDir / kDemoProgramName, result.programText());
+        if (auto status = outputs.add(spec.outputDir / kDemoProgramName, result.programText());
             !status) {
             return status;
         }
-        if (auto status = writeDemoCad(spec, result); !status) {
+        if (auto status = stageDemoCad(spec, result, outputs); !status) {
             return status;
         }
     }
     const auto records =
         std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
-    if (auto status = writeFileAtomically(spec.outputDir / "axes.csv",
-                                          report::axesCsv(result.original, records), inputs);
+    if (auto status =
+            outputs.add(spec.outputDir / "axes.csv", report::axesCsv(result.original, records));
         !status) {
         return status;
     }
@@ -480,18 +468,46 @@ Status writeReportFolder(const JobSpec& spec, const JobResult& result,
         if (result.cadCheck && result.cadCheck->rescheduled) {
             csv = withClearanceColumns(csv, *result.cadCheck->rescheduled);
         }
-        if (auto status = writeFileAtomically(spec.outputDir / "layers.csv", csv, inputs);
-            !status) {
+        if (auto status = outputs.add(spec.outputDir / "layers.csv", csv); !status) {
             return status;
         }
     }
     if (result.comparison) {
-        if (auto status = writeComparison(spec, result, inputs); !status) {
+        if (auto status = stageComparison(spec, result, outputs); !status) {
             return status;
         }
     }
-    return writeFileAtomically(spec.outputDir / "report.json", reportJsonText(result, &spec),
-                               inputs);
+    return outputs.add(spec.outputDir / "report.json", reportJsonText(result, &spec));
+}
+
+// Every output staged, then all published or none: a job that cannot write one of its files
+// leaves neither the others nor an output folder it made.
+Status stageAndPublish(const JobSpec& spec, const JobResult& result, const CancelToken* cancel) {
+    // Made first: the program's folder may lie in it (-o out/new.nc --out out/report).
+    auto folder = CreatedFolder::create(spec.outputDir);
+    if (!folder) {
+        return std::unexpected(folder.error());
+    }
+    OutputSet outputs(protectedInputsOf(spec));
+    if (auto status = stageOutputProgram(spec, result, outputs); !status) {
+        return status;
+    }
+    if (auto status = stageOutputCl(spec, result, outputs); !status) {
+        return status;
+    }
+    if (!spec.outputDir.empty()) {
+        if (auto status = stageReportFolder(spec, result, outputs); !status) {
+            return status;
+        }
+    }
+    if (cancel != nullptr && cancel->isCancelled()) { // the last point where nothing is out
+        return makeError(ErrorCode::Cancelled, "interrupted: nothing was written");
+    }
+    if (auto status = outputs.publish(); !status) {
+        return status;
+    }
+    folder->keep();
+    return {};
 }
 
 } // namespace
@@ -507,7 +523,7 @@ std::vector<fs::path> protectedInputsOf(const JobSpec& spec) {
     return inputs;
 }
 
-Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
+Status writeJobOutputs(const JobSpec& spec, const JobResult& result, const CancelToken* cancel) {
     // Refused before anything is written: a job that ran without an output folder (and so
     // released the samples these files are made of) given one only now.
     if (!spec.outputDir.empty() &&
@@ -517,17 +533,14 @@ Status writeJobOutputs(const JobSpec& spec, const JobResult& result) {
                          "axes.csv and layers.csv need the samples the job released once it had "
                          "taken its figures: run it with the output folder it writes");
     }
-    const std::vector<fs::path> inputs = protectedInputsOf(spec);
-    if (auto status = createOutputFolder(spec); !status) {
-        return status;
+    // Again here: the GUI and the API name their outputs after the job ran.
+    if (auto refused = refuseSharedPaths(spec); !refused) {
+        return refused;
     }
-    if (auto status = writeOutputProgram(spec, result, inputs); !status) {
-        return status;
+    if (auto refused = refuseOutputsOfThisResult(spec, result); !refused) {
+        return refused;
     }
-    if (spec.outputDir.empty()) {
-        return {};
-    }
-    return writeReportFolder(spec, result, inputs);
+    return stageAndPublish(spec, result, cancel);
 }
 
 std::string reportJsonText(const JobResult& result, const JobSpec* spec) {

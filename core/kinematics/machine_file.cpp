@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -17,6 +18,21 @@ namespace {
 using Json = nlohmann::json;
 
 constexpr const char* kSchema = "bladeaxis-machine/1";
+
+// The largest length a machine file may give (an offset, the pivot, a linear travel limit), in
+// mm: ten metres is beyond any machine that turns a blade, and keeps every position the chain
+// computes far inside the digits a program's coordinates carry (a 1e10 mm offset came back
+// from the written program as "does not read back", an internal error).
+constexpr double kMaxMachineLengthMm = 10000.0;
+
+std::string lengthRange() {
+    return "[-" + std::to_string(static_cast<int>(kMaxMachineLengthMm)) + ", " +
+           std::to_string(static_cast<int>(kMaxMachineLengthMm)) + "] mm";
+}
+
+bool isMachineLength(double value) {
+    return std::abs(value) <= kMaxMachineLengthMm;
+}
 
 // Machine files are small; locating a key by its first quoted occurrence gives the reader a
 // line to look at, which nlohmann::json does not keep for values.
@@ -123,6 +139,10 @@ Result<AxisLimits> MachineReader::axis(const Json& axes, char letter, bool rotar
         if (!(*max > *min)) {
             return fail(path + "." + maxKey, maxKey, "expected max > min");
         }
+        if (!rotary && !(isMachineLength(*min) && isMachineLength(*max))) {
+            const std::string& bad = isMachineLength(*min) ? maxKey : minKey;
+            return fail(path + "." + bad, bad, "expected a length in " + lengthRange());
+        }
         limits.hasTravel = true;
         limits.min = *min * scale;
         limits.max = *max * scale;
@@ -176,6 +196,11 @@ Status MachineReader::chain(const Json& root, MachineModel& machine) const {
     if (!pivot) {
         return std::unexpected(pivot.error());
     }
+    if (!isMachineLength(*pivot)) {
+        return fail("kinematics.pivot_length_mm", "pivot_length_mm",
+                    "expected a length in " + lengthRange() + ", got " +
+                        object.at("pivot_length_mm").dump());
+    }
     chain.pivotLength = *pivot;
     for (const auto& [key, target] : {std::pair{"table_offset_mm", &chain.tableOffset},
                                       std::pair{"head_offset_mm", &chain.headOffset}}) {
@@ -186,6 +211,11 @@ Status MachineReader::chain(const Json& root, MachineModel& machine) const {
         if (!value.is_array() || value.size() != 3 || !value[0].is_number() ||
             !value[1].is_number() || !value[2].is_number()) {
             return fail(std::string("kinematics.") + key, key, "expected [x, y, z] in mm");
+        }
+        if (!std::ranges::all_of(value,
+                                 [](const Json& v) { return isMachineLength(v.get<double>()); })) {
+            return fail(std::string("kinematics.") + key, key,
+                        "expected each of [x, y, z] in " + lengthRange() + ", got " + value.dump());
         }
         // Given in machine coordinates; the chain works in the engine's frame.
         *target = machine.toEngineFrame(

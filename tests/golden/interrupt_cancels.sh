@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Ctrl+C during a batch job: exit code 7, and neither the program nor the report folder written.
+# Ctrl+C during a batch job: exit code 7, and neither the program nor the report folder written;
+# SIGTERM during generation: exit code 7 and no program.
 # Usage: interrupt_cancels.sh BLADEAXIS WORKDIR
 set -uo pipefail
 bladeaxis="$1"
@@ -22,4 +23,17 @@ if [[ -e "$work/out.nc" || -e "$work/report" ]]; then
     exit 1
 fi
 grep -q "interrupted: nothing was written" "$work/stderr.txt" || { cat "$work/stderr.txt"; exit 1; }
-echo "interrupted job exited 7 and wrote nothing"
+# SIGTERM while a program is generated ended the process by the signal (143): it is a cancel too.
+"$bladeaxis" --batch --generate "$work/generated.nc" --revolutions 30 --pitch 0.5 -q \
+    2>"$work/generate_stderr.txt" &
+generate=$!
+sleep 1 # the generation takes seconds; a signal before main() runs would be the system's
+kill -TERM "$generate"
+wait "$generate"
+code=$?
+if [[ $code -ne 7 || -e "$work/generated.nc" ]]; then
+    echo "expected exit code 7 and no program after SIGTERM during generation, got $code:" \
+        "$(cat "$work/generate_stderr.txt"; ls "$work")"
+    exit 1
+fi
+echo "interrupted job and generation exited 7 and wrote nothing"

@@ -111,6 +111,33 @@ def test_write_outputs_writes_what_the_job_names(tmp_path):
     assert without_timing(report) == without_timing(outcome.report)
 
 
+def test_output_cl_is_written_as_documented(tmp_path):
+    outcome = bladeaxis.run_job({"demo": True, "output_cl": "demo.cl"}, base_dir=tmp_path)
+    outcome.write_outputs()
+    assert "GOTO/" in (tmp_path / "demo.cl").read_text()
+
+
+def test_an_unknown_key_is_refused_with_the_nearest_known_one():
+    with pytest.raises(bladeaxis.BladeAxisError) as raised:
+        bladeaxis.run_job({"demo": True, "output_programm": "x.nc"})
+    assert raised.value.exit_code == 2 and raised.value.code == "InvalidArgument"
+    assert 'did you mean "output_program"?' in str(raised.value)
+
+
+def test_a_bytes_path_is_read_as_a_path(tmp_path):
+    with pytest.raises(bladeaxis.BladeAxisError) as raised:
+        bladeaxis.run_job({"program": os.fsencode(tmp_path / "no_such_blade.nc"),
+                           "tool_radius_mm": 4})
+    assert raised.value.exit_code == 3 and raised.value.code == "FileNotFound"
+
+
+def test_a_path_that_is_not_utf8_is_refused_naming_its_key(tmp_path):
+    name = pathlib.Path(os.fsdecode(os.fsencode(tmp_path) + b"/blade\xff.nc"))
+    with pytest.raises(ValueError) as raised:
+        bladeaxis.run_job({"program": name, "tool_radius_mm": 4})
+    assert "job['program']" in str(raised.value) and "not UTF-8" in str(raised.value)
+
+
 def test_missing_program_is_exit_code_3(tmp_path):
     with pytest.raises(bladeaxis.BladeAxisError) as raised:
         bladeaxis.run_job({"program": "no_such_blade.nc", "tool_radius_mm": 4}, base_dir=tmp_path)

@@ -29,7 +29,7 @@ bool onlyEndsTheProgram(const detail::ScannedBlock& block) {
 }
 
 // Record offsets are 32-bit to keep the per-record data small.
-constexpr std::size_t kMaxTextBytes = std::numeric_limits<std::uint32_t>::max();
+constexpr std::size_t kMaxTextBytes = kMaxProgramBytes;
 
 Error parseErrorAt(std::string_view fileName, int line, std::string message) {
     return Error{ErrorCode::Parse, std::move(message), {std::string(fileName), line, 1}, {}};
@@ -273,8 +273,7 @@ std::size_t interpretLines(GcodeProgram& program, std::string_view text,
 Status prepareProgram(std::string_view text, std::string_view fileName, const ReadOptions& options,
                       GcodeProgram& program) {
     if (text.size() > kMaxTextBytes) {
-        return std::unexpected(
-            parseErrorAt(fileName, 1, "file too large: expected at most 4 GiB of G-code"));
+        return std::unexpected(programTooLarge(fileName));
     }
     if (text.empty()) {
         return std::unexpected(
@@ -405,6 +404,13 @@ Result<GcodeProgram> readGcodeFile(const std::filesystem::path& path,
         return std::unexpected(std::move(text.error()));
     }
     return parseOwnedText(std::move(*text), path.string(), machine, options, {});
+}
+
+Error programTooLarge(std::string_view fileName) {
+    return Error{ErrorCode::Parse,
+                 "file too large: expected at most 4 GiB of G-code",
+                 {std::string(fileName), 1, 1},
+                 {}};
 }
 
 } // namespace bladeaxis::io::nc

@@ -46,6 +46,11 @@ namespace bladeaxis::io::nc {
 // The most errors collected before parsing stops.
 inline constexpr int kMaxParseErrors = 20;
 
+// The largest program read (4 GiB less one byte: line offsets are 32-bit), from a file or a
+// stream, and the error past it (Parse, at `fileName`:1).
+inline constexpr std::size_t kMaxProgramBytes = 0xFFFF'FFFFU;
+Error programTooLarge(std::string_view fileName);
+
 Result<GcodeProgram> parseGcode(std::string_view text, std::string_view fileName,
                                 const kinematics::MachineModel& machine,
                                 const ReadOptions& options = {});

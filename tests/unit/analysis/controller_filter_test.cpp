@@ -81,5 +81,28 @@ TEST(ControllerFilter, WiderWindowLowersThePeakAcceleration) {
     EXPECT_LT(wide->peakAcceleration, narrow->peakAcceleration);
 }
 
+// A 10-block program with one Z3000000. took 4.7 GB (Z3.6e8 or a feed of 0.1 mm/min: bad_alloc,
+// exit 1): the filter resamples the pass every millisecond, so its memory follows the cycle time.
+TEST(ControllerFilter, APassLongerThanItsSampleLimitIsRefusedNamingTheLimitAndTheSplineMethod) {
+    const std::vector<double> s{0.0, 10.0, 3.6e8 + 10.0};
+    const std::vector<double> q{0.0, 1.0, 3.6e8};
+    const double feed = 0.1 / 60.0; // mm/s: 2e14 ms of motion, beyond any memory
+    const auto filtered = differentiateAxis(s, q, feed, DerivativeMethod::Filtered, 0.008);
+    ASSERT_FALSE(filtered.has_value());
+    EXPECT_EQ(filtered.error().code, ErrorCode::Geometry);
+    EXPECT_NE(filtered.error().message.find("limit of 50 million"), std::string::npos)
+        << filtered.error().message;
+    EXPECT_NE(filtered.error().message.find("--derivatives spline"), std::string::npos);
+    const auto spline = differentiateAxis(s, q, feed, DerivativeMethod::Spline);
+    EXPECT_TRUE(spline.has_value()) << "the way out the message names works";
+}
+
+TEST(ControllerFilter, APassWithinItsSampleLimitIsStillFiltered) {
+    const double seconds = static_cast<double>(kMaxFilterSamples) * 1e-3 / 1000.0; // a 1000th
+    const std::vector<double> s{0.0, seconds * 10.0};
+    const std::vector<double> q{0.0, 1.0};
+    EXPECT_TRUE(differentiateAxis(s, q, 10.0, DerivativeMethod::Filtered, 0.008).has_value());
+}
+
 } // namespace
 } // namespace bladeaxis::analysis

@@ -132,5 +132,28 @@ TEST_F(StagedFiles, MappedTextGivesPagesBackAndStillReadsTheSameBytes) {
     EXPECT_EQ(mapped->text(), content); // the pages come back from the file
 }
 
+// The longest names a file system takes (241 to 255 bytes) were refused with "File name too
+// long": the temporary beside them was named after them and longer still.
+TEST_F(StagedFiles, AnOutputWithTheLongestLegalNameIsWrittenThroughAShortTemporary) {
+    for (const std::size_t length : {241U, 250U, 255U}) {
+        const fs::path target = m_dir / std::string(length, 'n');
+        ASSERT_TRUE(writeFileAtomically(target, "old\n"));
+        const Status replaced = writeFileAtomically(target, "new\n");
+        ASSERT_TRUE(replaced) << replaced.error().toString();
+        EXPECT_EQ(readTextFile(target).value_or(""), "new\n");
+    }
+    EXPECT_EQ(entriesInFolder(), 3U) << "no temporary left behind";
+}
+
+// Where a file system cannot make unnamed files, a killed run leaves its temporary: a short
+// hidden name that says whose it is, whatever the target's name.
+TEST_F(StagedFiles, ATemporaryNameIsShortAndHiddenWhateverTheTarget) {
+    const fs::path name = temporaryNameIn(m_dir);
+    EXPECT_EQ(name.parent_path(), m_dir);
+    EXPECT_TRUE(name.filename().string().starts_with(".ba-"));
+    EXPECT_EQ(name.filename().string().size(), 10U);
+    EXPECT_NE(temporaryNameIn(m_dir), name) << "random";
+}
+
 } // namespace
 } // namespace bladeaxis

@@ -191,8 +191,9 @@ TEST(BatchCli, AnOutputNamingTheMachineFileIsRefusedAndTheFileKept) {
     const auto before = std::filesystem::file_size(machine);
     const CliRun result =
         run({"--batch", "--demo", "--machine", machine.string(), "-o", machine.string()});
-    EXPECT_EQ(result.code, kExitWrite) << result.err;
-    EXPECT_NE(result.err.find("refusing to overwrite the input file"), std::string::npos)
+    // Refused before the job runs, as the bad command line it is (the writer would refuse too).
+    EXPECT_EQ(result.code, kExitUsage) << result.err;
+    EXPECT_NE(result.err.find("-o and --machine name the same file"), std::string::npos)
         << result.err;
     EXPECT_EQ(std::filesystem::file_size(machine), before);
 }
@@ -320,6 +321,19 @@ TEST(BatchCli, StickOutShorterThanTheBallIsAUsageErrorNamingTheOption) {
     EXPECT_NE(result.err.find("--stick-out (10 mm) must exceed the ball diameter"),
               std::string::npos)
         << result.err;
+}
+
+// A stream without end on standard input (4.5 GB of NUL) took 8.4 GB and ended in exit 1; it is
+// capped as a file is, with the file's message (the cap is 4 GiB; a small one here).
+TEST(BatchCli, StandardInputLongerThanTheCapIsRefusedAsAFileTooLarge) {
+    std::istringstream endless(std::string(5000, '\0'));
+    const auto refused = readStandardInput(endless, 4096);
+    ASSERT_FALSE(refused.has_value());
+    EXPECT_EQ(exitCodeFor(refused.error()), kExitInput);
+    EXPECT_EQ(refused.error().toString(),
+              "stdin:1:1: parse error: file too large: expected at most 4 GiB of G-code");
+    std::istringstream exact(std::string(4096, 'x'));
+    EXPECT_EQ(readStandardInput(exact, 4096).value_or("").size(), 4096U);
 }
 
 } // namespace

@@ -183,7 +183,14 @@ TEST_F(RescheduleOutputs, RefusesToOverwriteTheInputAndLeavesItUnchanged) {
     JobSpec spec = gcodeSpec();
     spec.program = m_input;
     spec.outputProgram = m_dir / "." / "input.nc"; // the same file under another spelling
-    auto result = run(spec);
+    const auto refused = run(spec);
+    ASSERT_FALSE(refused.has_value()) << "refused before the job runs";
+    EXPECT_EQ(refused.error().code, ErrorCode::InvalidArgument);
+    // Named only once the job has run (the GUI's export, the API's write_program): the writer
+    // refuses it as well.
+    JobSpec withoutOutput = spec;
+    withoutOutput.outputProgram.clear();
+    auto result = run(withoutOutput);
     ASSERT_TRUE(result.has_value()) << result.error().toString();
     auto status = writeJobOutputs(spec, *result);
     ASSERT_FALSE(status.has_value());

@@ -123,7 +123,11 @@ TEST_F(StagedOutput, AnOutputNamingTheInputIsRefusedBeforeAnythingIsWritten) {
     const std::string before = *readTextFile(m_spec.program);
     const auto result = run(m_spec);
     ASSERT_FALSE(result.has_value());
-    EXPECT_EQ(result.error().code, ErrorCode::WriteFailed);
+    // Refused as the bad argument it is, naming both (docs/reliability.md, Writes).
+    EXPECT_EQ(result.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(result.error().message.find("output_program and program name the same file"),
+              std::string::npos)
+        << result.error().message;
     EXPECT_EQ(*readTextFile(m_spec.program), before);
     EXPECT_EQ(filesInFolder(), std::vector<std::string>{"blade.nc"});
 }

@@ -169,6 +169,39 @@ INSTANTIATE_TEST_SUITE_P(
         BadMachineCase{"travel reversed", kTravelReversed.c_str(),
                        "axes.A.max_deg: expected max > min"}));
 
+// A table offset of 1e10 mm was taken, and the job ended in "internal error: the re-scheduled
+// program does not read back" (exit 1): a length beyond any machine is the file's error.
+TEST(MachineFile, ALengthBeyondTenMetresIsRefusedNamingTheKeyAndItsLine) {
+    const std::string linear = R"({"velocity_mm_s": 1, "acceleration_mm_s2": 1, "jerk_mm_s3": 1)";
+    const std::string rotary =
+        R"({"velocity_deg_s": 1, "acceleration_deg_s2": 1, "jerk_deg_s3": 1})";
+    const auto machine = [&](const std::string& kinematics, const std::string& x) {
+        return "{\"schema\": \"bladeaxis-machine/1\",\n\"kinematics\": {\"type\": \"table_a\"" +
+               kinematics + "},\n\"axes\": {\"X\": " + linear + x + "},\n\"Y\": " + linear +
+               "}, \"Z\": " + linear + "}, \"A\": " + rotary + "}}";
+    };
+    const std::pair<std::string, std::string> cases[] = {
+        {machine(",\n\"table_offset_mm\": [0, 1e10, 0]", ""), "m.json:3: machine file error: "
+                                                              "kinematics.table_offset_mm"},
+        {machine(",\n\"head_offset_mm\": [0, 0, -10001]", ""), "m.json:3: machine file error: "
+                                                               "kinematics.head_offset_mm"},
+        {machine(",\n\"pivot_length_mm\": 1e10", ""), "m.json:3: machine file error: "
+                                                      "kinematics.pivot_length_mm"},
+        {machine("", ", \"min_mm\": -1e12, \"max_mm\": 100"), "axes.X.min_mm"}};
+    for (const auto& [json, expected] : cases) {
+        auto parsed = parseMachineJson(json, "m.json");
+        ASSERT_FALSE(parsed.has_value()) << json;
+        EXPECT_EQ(parsed.error().code, ErrorCode::MachineFile);
+        EXPECT_NE(parsed.error().toString().find(expected), std::string::npos)
+            << parsed.error().toString();
+        EXPECT_NE(parsed.error().message.find("[-10000, 10000] mm"), std::string::npos)
+            << parsed.error().message;
+    }
+    auto edge =
+        parseMachineJson(machine(",\n\"table_offset_mm\": [0, -10000, 10000]", ""), "m.json");
+    EXPECT_TRUE(edge.has_value()) << edge.error().toString();
+}
+
 TEST(MachineFile, ErrorNamesTheLineOfTheOffendingKey) {
     const std::string json =
         "{\n\"schema\": \"bladeaxis-machine/1\",\n\"kinematics\": {\"type\": \"x\"}\n}";

@@ -156,6 +156,10 @@ def run_case(args, index):
         shutil.rmtree(folder, ignore_errors=True)
 
 
+def summary(codes) -> str:
+    return "exit codes: " + ", ".join(f"{c}: {n}" for c, n in sorted(codes.items()))
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("bladeaxis")
@@ -177,11 +181,16 @@ def main() -> int:
                                                      range(args.cases)):
             codes[code] += 1
             peak = max(peak, rss)
+            done = sum(codes.values())
+            if done % 1000 == 0:  # a long run's partial figures stay readable
+                print(f"{done} cases, {time.monotonic() - started:.0f} s: " + summary(codes) +
+                      f"; largest peak {peak:.0f} MB; {len(failures)} failure(s)",
+                      file=sys.stderr, flush=True)
             if failure:
                 failures.append(f"case {index}: {failure}")
                 print(failures[-1], file=sys.stderr, flush=True)
-    print(f"{args.cases} cases in {time.monotonic() - started:.0f} s (seed {args.seed}); "
-          f"exit codes: " + ", ".join(f"{c}: {n}" for c, n in sorted(codes.items())) +
+    print(f"{args.cases} cases in {time.monotonic() - started:.0f} s (seed {args.seed}); " +
+          summary(codes) +
           f"; largest peak memory of a case {peak:.0f} MB; {len(failures)} failure(s)")
     return 1 if failures else 0
 

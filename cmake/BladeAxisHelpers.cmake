@@ -60,3 +60,36 @@ function(bladeaxis_add_benchmark name)
     bladeaxis_set_warnings(${name})
     set_property(GLOBAL APPEND PROPERTY BLADEAXIS_BENCHMARKS ${name})
 endfunction()
+
+# bladeaxis_harden(<target>...)
+# Debian's hardening flags on what the packages ship, in Release builds (dpkg-buildflags
+# "hardening=+all" minus what the toolchain already does): _FORTIFY_SOURCE=2 (checked string
+# and memory functions; needs the optimiser), -fstack-protector-strong, PIE, and full RELRO
+# (-z relro -z now) on what is linked. A sanitizer or fuzzing build gets no _FORTIFY_SOURCE:
+# AddressSanitizer intercepts the same functions, and the fortified variants hide errors from
+# it. BLADEAXIS_HARDENING=OFF leaves every flag out.
+function(bladeaxis_harden)
+    if(NOT BLADEAXIS_HARDENING)
+        return()
+    endif()
+    set(release $<CONFIG:Release,RelWithDebInfo,MinSizeRel>)
+    set(sanitized FALSE)
+    if(BLADEAXIS_FUZZ OR CMAKE_CXX_FLAGS MATCHES "-fsanitize")
+        set(sanitized TRUE)
+    endif()
+    foreach(target IN LISTS ARGN)
+        get_target_property(type ${target} TYPE)
+        if(type STREQUAL "INTERFACE_LIBRARY") # headers only: nothing is compiled
+            continue()
+        endif()
+        if(NOT sanitized)
+            target_compile_options(${target} PRIVATE
+                $<${release}:-U_FORTIFY_SOURCE> $<${release}:-D_FORTIFY_SOURCE=2>)
+        endif()
+        target_compile_options(${target} PRIVATE $<${release}:-fstack-protector-strong>)
+        set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+        if(type MATCHES "EXECUTABLE|SHARED_LIBRARY|MODULE_LIBRARY")
+            target_link_options(${target} PRIVATE $<${release}:LINKER:-z,relro,-z,now>)
+        endif()
+    endforeach()
+endfunction()

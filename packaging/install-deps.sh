@@ -11,8 +11,11 @@ packages=(
     libvtk9-dev
     libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-visualization-dev
     xvfb xauth locales clang-format
-    # packaging and its tests: dpkg-shlibdeps, desktop-entry check, manual-page rendering
-    dpkg-dev desktop-file-utils groff-base man-db
+    # packaging and its tests: dpkg-shlibdeps, desktop-entry check, manual-page rendering,
+    # the Debian policy check of the packages, the desktop's MIME database as GLib and
+    # xdg-mime (File::MimeInfo) read it
+    dpkg-dev desktop-file-utils groff-base man-db lintian
+    shared-mime-info libglib2.0-bin xdg-utils libfile-mimeinfo-perl
     # the Python module and the report.json schema check
     pybind11-dev python3-dev python3-numpy python3-pytest python3-jsonschema
     # LinuxCNC as a client of the written programs: rs274 in make test, the planner in make controller-check

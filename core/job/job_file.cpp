@@ -592,7 +592,10 @@ Status readJobFile(const fs::path& path, JobSpec& spec) {
 }
 
 std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
-    Json json;
+    // Keys in the order written: "schema" first, where the desktop's MIME magic looks for it
+    // (packaging/bladeaxis-mime.xml searches the first 256 bytes), then the job as a reader
+    // follows it. nlohmann::json would sort them and put "schema" after the layer edits.
+    nlohmann::ordered_json json;
     json["schema"] = kSchema;
     auto relative = [&](const fs::path& path) {
         return path.lexically_proximate(relativeTo).generic_string();
@@ -627,7 +630,7 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
         json["tool_radius_mm"] = *spec.toolRadius;
     }
     json["preset"] = spec.presetName;
-    Json parameters = Json::object();
+    nlohmann::ordered_json parameters = nlohmann::ordered_json::object();
     for (const ParameterInfo& info : scheduleParameterSchema()) {
         const std::string text = info.get(spec.parameters);
         if (info.kind == ParameterInfo::Kind::Number || info.kind == ParameterInfo::Kind::Integer) {
@@ -667,7 +670,7 @@ std::string jobJsonText(const JobSpec& spec, const fs::path& relativeTo) {
     if (!spec.outputDir.empty()) {
         json["output_dir"] = relative(spec.outputDir);
     }
-    return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    return json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 } // namespace bladeaxis::job

@@ -74,6 +74,29 @@ TEST(LayerEditsJobFile, EditsRoundTripExactly) {
     EXPECT_FALSE(read.layerEdits[1].preset.has_value());
 }
 
+// Issue 41: the desktop recognises a job file by its content (packaging/bladeaxis-mime.xml looks
+// for "schema": "bladeaxis-job/ in the first 256 bytes), so a saved job, however many edits and
+// keys it holds, starts with its schema; before, the keys were sorted and it came last but one.
+TEST(JobFile, Issue41SavedJobStartsWithItsSchema) {
+    JobSpec spec;
+    spec.program = "/data/blade.nc";
+    spec.cad.file = "/data/cad/blade.step";
+    spec.compare = true;
+    spec.reschedule = false;
+    for (std::size_t layer = 0; layer < 40; ++layer) {
+        scheduling::LayerOverride edit;
+        edit.layer = layer;
+        edit.keyPoints = {{0.0, 0.0}, {1.0, 0.5}, {2.0, 1.0}};
+        spec.layerEdits.push_back(edit);
+    }
+    const std::string text = jobJsonText(spec, "/data");
+    EXPECT_EQ(text.rfind("{\n  \"schema\": \"bladeaxis-job/", 0), 0u) << text.substr(0, 256);
+    JobSpec read;
+    const Status parsed = parseJobJson(text, "/data/job.json", read);
+    ASSERT_TRUE(parsed.has_value()) << parsed.error().toString();
+    EXPECT_EQ(jobJsonText(read, "/data"), text);
+}
+
 TEST(JobFile, BladeCadAndItsPlacementRoundTrip) {
     JobSpec spec;
     spec.program = "/data/blade.nc";

@@ -183,12 +183,12 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
     cad->add_option("--cad-translate", raw.cadTranslate,
                     "Move the CAD blade by X Y Z mm into the program's workpiece frame")
         ->expected(3)
-        ->type_name("FLOAT x 3");
+        ->type_name("FLOAT");
     cad->add_option("--cad-rotate-deg", raw.cadRotate,
                     "Rotate the CAD blade by RX RY RZ degrees about the X, then Y, then Z axis "
                     "of the workpiece frame (x = rotary axis), before --cad-translate")
         ->expected(3)
-        ->type_name("FLOAT x 3");
+        ->type_name("FLOAT");
     cad->add_option("--stick-out", raw.stickOut.text, "Tool tip to holder face, mm (default 50)")
         ->type_name("FLOAT");
     cad->add_option("--holder-radius", raw.holderRadius.text, "Holder radius, mm (default 20)")
@@ -237,12 +237,10 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
                  "Print report.json to standard output instead of the summary, and a refusal as "
                  "a JSON error object; not with -o - or --cl-output -");
     cli.add_flag("-q,--quiet", raw.quiet, "Print nothing but errors");
-    auto* progress = cli.add_flag(
-        "--progress", raw.progress,
-        "Show the running stage on standard error (the default when it is a terminal)");
+    cli.add_flag("--progress", raw.progress,
+                 "Show the running stage on standard error (the default when it is a terminal)");
     cli.add_flag("--no-progress", raw.noProgress,
-                 "Never show the running stage, not even on a terminal")
-        ->excludes(progress);
+                 "Never show the running stage, not even on a terminal");
     cli.add_flag("--version", raw.version, "Print the version and exit");
     // For the build, which installs its output as bladeaxis.1; not listed in --help.
     cli.add_flag("--man", raw.manPage, "Print the manual page (roff) and exit")->group("");
@@ -509,6 +507,10 @@ Result<BatchOptions> interpretOptions(const RawOptions& raw, std::string helpTex
     }
     if (auto status = refuseSharedStandardOutput(raw); !status) {
         return std::unexpected(status.error());
+    }
+    if (raw.progress && raw.noProgress) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "--progress and --no-progress exclude each other");
     }
     BatchOptions options;
     options.helpText = std::move(helpText);

@@ -244,7 +244,10 @@ TEST(CliHabits, NoProgressIsAnOptionThatExcludesProgress) {
     ASSERT_TRUE(options.has_value()) << options.error().message;
     EXPECT_TRUE(options->noProgress);
     EXPECT_FALSE(options->progress);
-    EXPECT_EQ(run({"--batch", "--demo", "--progress", "--no-progress"}).code, kExitUsage);
+    const CliRun both = run({"--batch", "--demo", "--progress", "--no-progress"});
+    EXPECT_EQ(both.code, kExitUsage);
+    EXPECT_NE(both.err.find("--progress and --no-progress exclude each other"), std::string::npos)
+        << both.err;
 }
 
 // On a terminal the error was printed over the progress line ("\r 70% ...bladeaxis: ..."):
@@ -272,6 +275,7 @@ TEST(CliHabits, NumericOptionsShowANumberTypeInTheHelp) {
         EXPECT_NE(result.out.find(option), std::string::npos) << option;
     }
     EXPECT_EQ(result.out.find("--tool-radius TEXT"), std::string::npos);
+    EXPECT_EQ(result.out.find("x 3 x 3"), std::string::npos);
 }
 
 } // namespace

@@ -13,6 +13,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -38,8 +39,16 @@ int main(int argc, char** argv) {
     bladeaxis::app::installBatchInterruptHandlers();
     bladeaxis::returnLargeBlocksToTheSystem();
     bladeaxis::backLargeBlocksWithHugePages();
-    const std::vector<std::string> arguments =
-        bladeaxis::app::expandSubcommand(std::vector<std::string>(argv, argv + argc));
+    const std::vector<std::string> given(argv, argv + argc);
+    const auto exists = [](const std::string& path) {
+        std::error_code ec;
+        return std::filesystem::exists(path, ec);
+    };
+    if (auto problem = bladeaxis::app::mistypedSubcommand(given, exists)) {
+        std::cerr << "bladeaxis: " << *problem << '\n';
+        return bladeaxis::kExitUsage;
+    }
+    const std::vector<std::string> arguments = bladeaxis::app::expandSubcommand(given);
     if (!wantsBatch(arguments)) {
         std::signal(SIGINT, SIG_DFL);
         std::signal(SIGTERM, SIG_DFL);

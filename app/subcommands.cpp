@@ -1,5 +1,8 @@
 #include "app/subcommands.h"
 
+#include "core/base/nearest_name.h"
+
+#include <algorithm>
 #include <array>
 #include <initializer_list>
 
@@ -12,8 +15,9 @@ struct Subcommand {
     std::initializer_list<std::string_view> flags;
 };
 
-// "analyze" is accepted too: half the CAM world spells it so.
-const std::array<Subcommand, 7> kSubcommands{{
+// "analyze" is accepted too: half the CAM world spells it so. "help" and "version" run the
+// headless program, which needs no display.
+const std::array<Subcommand, 9> kSubcommands{{
     {"reschedule", {"--batch"}},
     {"analyse", {"--batch", "--analyse-only"}},
     {"analyze", {"--batch", "--analyse-only"}},
@@ -21,6 +25,8 @@ const std::array<Subcommand, 7> kSubcommands{{
     {"generate", {"--batch", "--generate"}},
     {"reproduce", {"--batch", "--reproduce"}},
     {"gui", {}},
+    {"help", {"--help"}},
+    {"version", {"--version"}},
 }};
 
 } // namespace
@@ -33,7 +39,9 @@ Commands (shorthand for the flags, which stay):
   compare PROGRAM             re-schedule and compare every method (--batch --compare)
   generate OUT                write a synthetic blade program (--batch --generate OUT)
   reproduce                   the comparison over a synthetic family (--batch --reproduce)
-  gui [PROGRAM | JOB.json]    open the window (the default without --batch))";
+  gui [PROGRAM | JOB.json]    open the window (the default without --batch)
+  help                        this help (--help)
+  version                     the version (--version))";
 }
 
 std::vector<std::string> expandSubcommand(const std::vector<std::string>& arguments) {
@@ -50,6 +58,27 @@ std::vector<std::string> expandSubcommand(const std::vector<std::string>& argume
         return expanded;
     }
     return arguments;
+}
+
+std::optional<std::string>
+mistypedSubcommand(const std::vector<std::string>& arguments,
+                   const std::function<bool(const std::string&)>& fileExists) {
+    if (arguments.size() < 2 || arguments[1].empty() || arguments[1].front() == '-') {
+        return std::nullopt;
+    }
+    const std::string& word = arguments[1];
+    std::array<std::string_view, kSubcommands.size()> names{};
+    std::ranges::transform(kSubcommands, names.begin(),
+                           [](const Subcommand& command) { return command.name; });
+    if (std::ranges::find(names, word) != names.end() || fileExists(word)) {
+        return std::nullopt;
+    }
+    const auto nearest = nearestName(word, names);
+    if (!nearest) {
+        return std::nullopt;
+    }
+    return "unknown command '" + word + "'; did you mean `" + std::string(*nearest) +
+           "`? (a program file of that name is given as ./" + word + ")";
 }
 
 } // namespace bladeaxis::app

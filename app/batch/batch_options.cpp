@@ -2,6 +2,7 @@
 
 #include "app/batch/man_page.h"
 #include "app/subcommands.h"
+#include "core/base/nearest_name.h"
 #include "core/base/number_io.h"
 #include "core/base/output_set.h"
 #include "core/base/units.h"
@@ -81,7 +82,7 @@ struct RawOptions {
     std::uint64_t seed = 1;
     bool seedGiven = false;
     bool batch = false, demo = false, json = false, quiet = false, version = false,
-         progress = false, manPage = false;
+         progress = false, noProgress = false, manPage = false;
     bool analyseOnly = false;
     bool compare = false;
     bool sweep = false;
@@ -109,6 +110,22 @@ std::string forHelp(const std::string& value) {
     return formatShortest(std::round(*number * scale) / scale);
 }
 
+// The value's type as CLI11 names it in --help (the values are read as text, which it would
+// show as TEXT, and checked by the schema).
+std::string helpTypeName(job::ParameterInfo::Kind kind) {
+    switch (kind) {
+    case job::ParameterInfo::Kind::Number:
+        return "FLOAT";
+    case job::ParameterInfo::Kind::Integer:
+        return "INT";
+    case job::ParameterInfo::Kind::Flag:
+        return "BOOLEAN";
+    case job::ParameterInfo::Kind::Choice:
+        break;
+    }
+    return "TEXT";
+}
+
 void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
     auto* group = cli.add_option_group(
         "Scheduling", "Parameters of the S-theta re-scheduling (docs/method.md, docs/job-file.md)");
@@ -116,7 +133,8 @@ void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
                       "Write the re-scheduled program here; - writes it to standard output (the "
                       "summary then goes to standard error)");
     group->add_option("--cl-output", raw.outputCl,
-                      "Also write the re-scheduled toolpath as CL data (APT) here");
+                      "Also write the re-scheduled toolpath as CL data (APT) here; - writes it to "
+                      "standard output (the summary then goes to standard error)");
     group->add_option("--preset", raw.preset, "faithful (the paper's rules) or best (default)")
         ->check(CLI::IsMember({"faithful", "best"}));
     group->add_option("--job", raw.jobFile,
@@ -143,10 +161,12 @@ void defineScheduleOptions(CLI::App& cli, RawOptions& raw) {
         }
         help += " (best: " + forHelp(info.get(scheduling::bestPreset())) +
                 ", faithful: " + forHelp(info.get(scheduling::faithfulPreset())) + ")";
-        group->add_option_function<std::string>(
-            optionName(info.key),
-            [&raw, key = info.key](const std::string& value) { raw.parameters[key] = value; },
-            help);
+        group
+            ->add_option_function<std::string>(
+                optionName(info.key),
+                [&raw, key = info.key](const std::string& value) { raw.parameters[key] = value; },
+                help)
+            ->type_name(helpTypeName(info.kind));
     }
 }
 
@@ -162,20 +182,25 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
                     "that gouges or collides anywhere is refused (exit 5)");
     cad->add_option("--cad-translate", raw.cadTranslate,
                     "Move the CAD blade by X Y Z mm into the program's workpiece frame")
-        ->expected(3);
+        ->expected(3)
+        ->type_name("FLOAT");
     cad->add_option("--cad-rotate-deg", raw.cadRotate,
                     "Rotate the CAD blade by RX RY RZ degrees about the X, then Y, then Z axis "
                     "of the workpiece frame (x = rotary axis), before --cad-translate")
-        ->expected(3);
-    cad->add_option("--stick-out", raw.stickOut.text, "Tool tip to holder face, mm (default 50)");
-    cad->add_option("--holder-radius", raw.holderRadius.text, "Holder radius, mm (default 20)");
-    cad->add_option("--holder-length", raw.holderLength.text, "Holder length, mm (default 60)");
+        ->expected(3)
+        ->type_name("FLOAT");
+    cad->add_option("--stick-out", raw.stickOut.text, "Tool tip to holder face, mm (default 50)")
+        ->type_name("FLOAT");
+    cad->add_option("--holder-radius", raw.holderRadius.text, "Holder radius, mm (default 20)")
+        ->type_name("FLOAT");
+    cad->add_option("--holder-length", raw.holderLength.text, "Holder length, mm (default 60)")
+        ->type_name("FLOAT");
     cad->add_flag("--force", raw.force,
                   "Write the program even if the clearance check finds gouges or collisions");
     cli.add_option("--machine", raw.machine,
                    "Machine file (JSON); default: built-in blade machine");
-    cli.add_option("--tool-radius", raw.toolRadius.text,
-                   "Ball radius R in mm (overrides the file)");
+    cli.add_option("--tool-radius", raw.toolRadius.text, "Ball radius R in mm (overrides the file)")
+        ->type_name("FLOAT");
     cli.add_option("--angle-unit", raw.angleUnit,
                    "Unit of the A/B words of a G-code program: deg or rad (needed when the file "
                    "could be either; written programs keep it)")
@@ -191,9 +216,11 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
                    "pass; B is then snapped to the median (default 0.01)");
     cli.add_option("--channel-tolerance-deg", raw.channelTolerance.text,
                    "Largest distance of the CAM orientation outside the feasible channel "
-                   "(default 30)");
+                   "(default 30)")
+        ->type_name("FLOAT");
     cli.add_option("--out", raw.out, "Output folder for report.json, axes.csv and layers.csv");
-    cli.add_option("--feed", raw.feed.text, "Evaluate at this constant feed, mm/min");
+    cli.add_option("--feed", raw.feed.text, "Evaluate at this constant feed, mm/min")
+        ->type_name("FLOAT");
     cli.add_option("--feed-reference", raw.feedReference, "Path parameter: tip or centre")
         ->check(CLI::IsMember({"tip", "centre"}));
     cli.add_option(
@@ -204,29 +231,39 @@ void defineOptions(CLI::App& cli, RawOptions& raw) {
         ->check(CLI::IsMember({"spline", "raw-spline", "fd", "filter"}));
     cli.add_option("--filter-ms", raw.filterMs.text,
                    "Smoothing time of --derivatives filter (the default figures' controller), ms "
-                   "(default 8)");
-    cli.add_flag("--json", raw.json, "Print report.json to standard output instead of the summary");
+                   "(default 8)")
+        ->type_name("FLOAT");
+    cli.add_flag("--json", raw.json,
+                 "Print report.json to standard output instead of the summary, and a refusal as "
+                 "a JSON error object; not with -o - or --cl-output -");
     cli.add_flag("-q,--quiet", raw.quiet, "Print nothing but errors");
     cli.add_flag("--progress", raw.progress,
                  "Show the running stage on standard error (the default when it is a terminal)");
+    cli.add_flag("--no-progress", raw.noProgress,
+                 "Never show the running stage, not even on a terminal");
     cli.add_flag("--version", raw.version, "Print the version and exit");
     // For the build, which installs its output as bladeaxis.1; not listed in --help.
     cli.add_flag("--man", raw.manPage, "Print the manual page (roff) and exit")->group("");
     auto* generate = cli.add_option_group("Generation", "Write a synthetic blade program");
     generate->add_option("--generate", raw.generate,
-                         "Write a generated helical blade program here");
+                         "Write a generated helical blade program here; - writes it to standard "
+                         "output");
     generate
         ->add_option("--profile", raw.profile, "naca-high-camber, naca-weak, symmetric, turbine")
         ->check(CLI::IsMember({"naca-high-camber", "naca-weak", "symmetric", "turbine"}));
     generate->add_option("--format", raw.format, "gcode or apt")
         ->check(CLI::IsMember({"gcode", "apt"}));
-    generate->add_option("--revolutions", raw.revolutions.text, "Number of revolutions");
-    generate->add_option("--pitch", raw.pitch.text,
-                         "Advance along the rotary axis per revolution, mm");
-    generate->add_option("--lead-deg", raw.lead.text, "Lead angle of the original CAM orientation");
-    generate->add_option("--tilt-deg", raw.tilt.text, "Fixed B tilt");
-    generate->add_option("--tolerance", raw.tolerance.text,
-                         "Chordal tolerance on the ball centre, mm");
+    generate->add_option("--revolutions", raw.revolutions.text, "Number of revolutions")
+        ->type_name("FLOAT");
+    generate
+        ->add_option("--pitch", raw.pitch.text, "Advance along the rotary axis per revolution, mm")
+        ->type_name("FLOAT");
+    generate->add_option("--lead-deg", raw.lead.text, "Lead angle of the original CAM orientation")
+        ->type_name("FLOAT");
+    generate->add_option("--tilt-deg", raw.tilt.text, "Fixed B tilt")->type_name("FLOAT");
+    generate
+        ->add_option("--tolerance", raw.tolerance.text, "Chordal tolerance on the ball centre, mm")
+        ->type_name("FLOAT");
     generate->add_option("--seed", raw.seed, "Random seed (lead-angle noise, family members)");
     auto* study = cli.add_option_group("Reproduction", "The comparison on a synthetic family");
     study->add_flag("--reproduce", raw.reproduce,
@@ -395,6 +432,33 @@ Status checkFileValues(const RawOptions& raw) {
     return {};
 }
 
+// Standard output carries one thing a script reads, or the reader could not tell them apart:
+// the program (-o -), the CL data (--cl-output -) or the JSON report (--json). Two of them are
+// refused rather than one moved elsewhere silently. `--out` names a folder of three files,
+// which standard output cannot hold.
+Status refuseSharedStandardOutput(const RawOptions& raw) {
+    if (raw.out == "-") {
+        return makeError(ErrorCode::InvalidArgument,
+                         "--out: names a folder for report.json, axes.csv and layers.csv, which "
+                         "standard output (-) cannot hold; --json prints report.json there");
+    }
+    std::vector<std::string> users;
+    for (const auto& [name, used] :
+         {std::pair{"-o -", raw.outputProgram == "-"},
+          std::pair{"--cl-output -", raw.outputCl == "-"}, std::pair{"--json", raw.json}}) {
+        if (used) {
+            users.emplace_back(name);
+        }
+    }
+    if (users.size() < 2) {
+        return {};
+    }
+    return makeError(ErrorCode::InvalidArgument,
+                     users[0] + " and " + users[1] +
+                         " would both write to standard output, where a reader could not tell "
+                         "them apart; give one of them a file (--out DIR writes report.json)");
+}
+
 // Each path by the option that gave it, or by its key in the job file.
 job::PathNames pathNamesOf(const RawOptions& raw) {
     const std::string inJob = " in " + raw.jobFile;
@@ -440,6 +504,13 @@ Result<BatchOptions> interpret(const RawOptions& raw, std::string helpText) {
 Result<BatchOptions> interpretOptions(const RawOptions& raw, std::string helpText) {
     if (auto status = checkFileValues(raw); !status) {
         return std::unexpected(status.error());
+    }
+    if (auto status = refuseSharedStandardOutput(raw); !status) {
+        return std::unexpected(status.error());
+    }
+    if (raw.progress && raw.noProgress) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "--progress and --no-progress exclude each other");
     }
     BatchOptions options;
     options.helpText = std::move(helpText);
@@ -489,6 +560,7 @@ Result<BatchOptions> interpretOptions(const RawOptions& raw, std::string helpTex
     options.printJson = raw.json;
     options.quiet = raw.quiet;
     options.progress = raw.progress && !raw.quiet;
+    options.noProgress = raw.noProgress;
     options.generate.profile = raw.profile;
     options.generate.format = raw.format;
     options.generate.seed = raw.seed;
@@ -514,6 +586,40 @@ Result<BatchOptions> interpretOptions(const RawOptions& raw, std::string helpTex
     return options;
 }
 
+// Every long option's name ("--tool-radius"), of the command and of its option groups, which
+// CLI11 keeps as subcommands of their own.
+void collectLongNames(const CLI::App& app, std::vector<std::string>& names) {
+    for (const CLI::Option* option : app.get_options()) {
+        for (const std::string& name : option->get_lnames()) {
+            names.push_back("--" + name);
+        }
+    }
+    for (const CLI::App* group : app.get_subcommands([](const CLI::App*) { return true; })) {
+        collectLongNames(*group, names);
+    }
+}
+
+// CLI11 reports an unknown option as the words it could not place, in an order of its own
+// ("not expected: 3 --tool-radus"); the first unknown --word is named instead, with the
+// option it most likely meant.
+std::optional<std::string> unknownOptionMessage(const CLI::App& cli,
+                                                const std::vector<std::string>& arguments) {
+    std::vector<std::string> names;
+    collectLongNames(cli, names);
+    const std::vector<std::string_view> known(names.begin(), names.end());
+    for (std::size_t index = 1; index < arguments.size() && arguments[index] != "--"; ++index) {
+        const std::string& argument = arguments[index];
+        const std::string name = argument.substr(0, argument.find('='));
+        if (!name.starts_with("--") || std::ranges::find(known, name) != known.end()) {
+            continue;
+        }
+        const auto nearest = nearestName(name, known);
+        return "unknown option " + name +
+               (nearest ? "; did you mean " + std::string(*nearest) + "?" : std::string());
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 Result<BatchOptions> parseBatchOptions(const std::vector<std::string>& arguments) {
@@ -531,6 +637,9 @@ Result<BatchOptions> parseBatchOptions(const std::vector<std::string>& arguments
         options.mode = BatchOptions::Mode::Help;
         options.helpText = cli.help();
         return options;
+    } catch (const CLI::ExtrasError& error) {
+        return makeError(ErrorCode::InvalidArgument,
+                         unknownOptionMessage(cli, arguments).value_or(error.what()));
     } catch (const CLI::ParseError& error) {
         return makeError(ErrorCode::InvalidArgument, error.what());
     }

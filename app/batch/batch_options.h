@@ -27,6 +27,7 @@ struct BatchOptions {
     // Stage and percentage on standard error, rewritten in place: on when standard error is a
     // terminal, or with --progress (a long --compare is otherwise silent for its duration).
     bool progress = false;
+    bool noProgress = false; // --no-progress: not even on a terminal (a CI log that is one)
     std::string helpText;
     std::string manPageText; // with --man: bladeaxis.1, written by the build
 };

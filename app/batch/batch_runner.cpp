@@ -1,9 +1,11 @@
 #include "app/batch/batch_runner.h"
 
+#include "app/batch/error_json.h"
 #include "app/batch/exit_codes.h"
 #include "core/base/file_io.h"
 #include "core/base/output_set.h"
 #include "core/base/version.h"
+#include "core/job/cad_check.h"
 
 #include <algorithm>
 #include <array>
@@ -22,8 +24,8 @@ namespace bladeaxis::app {
 namespace {
 
 // Warnings go to standard error as they come; with `showProgress` the running stage too, as
-// one line rewritten in place ("  70% comparing with the other methods"), cleared at the end
-// and before each warning.
+// one line rewritten in place ("  70% comparing with the other methods"), cleared at the end,
+// before each warning and before an error (endLine), which would otherwise be printed over it.
 class BatchProgress final : public ProgressSink {
   public:
     BatchProgress(std::ostream& err, bool quiet, bool showProgress = false)
@@ -54,6 +56,8 @@ class BatchProgress final : public ProgressSink {
             m_err << "warning: " << message << '\n';
         }
     }
+
+    void endLine() { clearLine(); }
 
   private:
     void clearLine() {
@@ -121,33 +125,23 @@ Error cancelledError() {
     return Error{ErrorCode::Cancelled, "interrupted: nothing was written", {}, {}};
 }
 
-int fail(const Error& error, std::ostream& err) {
-    err << "bladeaxis: " << error.toString() << '\n';
-    return exitCodeFor(error);
-}
+// Standard output carries what a script reads (the program, CL data, or --json's report);
+// standard error every message for a person, the progress line included.
+struct Streams {
+    std::ostream& out;
+    std::ostream& err;
+    BatchProgress& progress;
+    bool jsonErrors = false; // --json: a refusal is also a JSON object on standard output
+};
 
-int runGenerate(const BatchOptions& options, const CancelToken& cancel, std::ostream& out,
-                std::ostream& err) {
-    auto machine = job::loadMachine(options.job);
-    if (!machine) {
-        return fail(machine.error(), err);
+int fail(const Error& error, const Streams& io) {
+    io.progress.endLine();
+    io.err << "bladeaxis: " << error.toString() << '\n';
+    const ExitCode code = exitCodeFor(error);
+    if (io.jsonErrors) {
+        io.out << errorJsonText(error, code) << std::flush;
     }
-    auto generated = job::generateProgram(options.generate, *machine);
-    if (!generated) {
-        return fail(generated.error(), err);
-    }
-    if (cancel.isCancelled()) { // the generation does not stop early; its program is not written
-        return fail(cancelledError(), err);
-    }
-    const std::filesystem::path inputs[] = {options.job.machineFile};
-    if (auto status = writeFileAtomically(options.generateOutput, generated->text, inputs);
-        !status) {
-        return fail(status.error(), err);
-    }
-    if (!options.quiet) {
-        out << "wrote " << options.generateOutput.string() << '\n';
-    }
-    return kExitOk;
+    return code;
 }
 
 // A stream that did not take the whole of what was written (a full disk, /dev/full, a reader that
@@ -160,22 +154,85 @@ Error streamFailure(const std::string& what) {
                  {}};
 }
 
-// A program named `-` is read from standard input, and `-o -` writes the re-scheduled program
-// to standard output (the summary then goes to standard error), so BladeAxis can sit in a
-// post-processor's pipe. The program goes out only once every other output is written, so a
-// refused or failed job leaves standard output empty.
+// `--generate -` writes the program to standard output, like `-o -`.
+int runGenerate(const BatchOptions& options, const CancelToken& cancel, const Streams& io) {
+    auto machine = job::loadMachine(options.job);
+    if (!machine) {
+        return fail(machine.error(), io);
+    }
+    auto generated = job::generateProgram(options.generate, *machine);
+    if (!generated) {
+        return fail(generated.error(), io);
+    }
+    if (cancel.isCancelled()) { // the generation does not stop early; its program is not written
+        return fail(cancelledError(), io);
+    }
+    if (options.generateOutput == "-") {
+        io.out << generated->text << std::flush;
+        return io.out ? kExitOk : fail(streamFailure("the generated program"), io);
+    }
+    const std::filesystem::path inputs[] = {options.job.machineFile};
+    if (auto status = writeFileAtomically(options.generateOutput, generated->text, inputs);
+        !status) {
+        return fail(status.error(), io);
+    }
+    if (!options.quiet) {
+        io.out << "wrote " << options.generateOutput.string() << '\n';
+    }
+    return kExitOk;
+}
+
+// Refused before anything is written: the tool of a program or CL data going to standard
+// output gouges or collides (without --force). A file output is refused by writeJobOutputs;
+// a stream output is not a file it writes, so the same refusal is made here.
+Status refuseCollidingStreamOutput(const job::JobSpec& spec, const job::JobResult& result) {
+    if (!result.cadCheck || !result.rescheduled) {
+        return {};
+    }
+    return job::refuseIfColliding(*result.cadCheck, result.program.path().sourceFile,
+                                  spec.cad.force);
+}
+
+// The program or the CL data, whichever `-` names (the options allow one of them at most).
+Status writeStreamOutput(const job::JobResult& result, bool program, std::ostream& out) {
+    if (!result.rescheduled) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "an output program needs re-scheduling; it was not run");
+    }
+    std::string clText;
+    if (!program) {
+        auto text = job::rescheduledClText(result);
+        if (!text) {
+            return std::unexpected(text.error());
+        }
+        clText = std::move(*text);
+    }
+    out << (program ? result.rescheduled->programText : clText) << std::flush;
+    if (!out) {
+        return std::unexpected(
+            streamFailure(program ? "the re-scheduled program" : "the re-scheduled CL data"));
+    }
+    return {};
+}
+
+// A program named `-` is read from standard input, and `-o -` (or `--cl-output -`) writes the
+// re-scheduled program (or CL data) to standard output; the summary then goes to standard
+// error. The options refuse two things on standard output (--json with either). The stream
+// output goes out only once every other output is written, so a refused or failed job leaves
+// standard output empty.
 int runAnalyse(const BatchOptions& options, CancelToken& cancel, std::istream& in,
-               std::ostream& out, std::ostream& err) {
+               const Streams& io) {
     job::JobSpec spec = options.job;
     if (!spec.demo && spec.program == "-") {
         auto text = readStandardInput(in);
         if (!text) {
-            return fail(text.error(), err);
+            return fail(text.error(), io);
         }
         spec.programText = std::move(*text);
         spec.program = "stdin";
     }
     const bool programToStdout = spec.outputProgram == "-";
+    const bool clToStdout = spec.outputCl == "-";
     if (programToStdout) {
         spec.outputProgram.clear();
     }
@@ -184,41 +241,40 @@ int runAnalyse(const BatchOptions& options, CancelToken& cancel, std::istream& i
     // samples the figures are taken from, but by the outputs the job keeps them for itself.
     spec.stageOutputProgram = true;
     spec.dropInputText = true;
-    spec.releaseSamplesOnceRead = true;
-    std::ostream& summary = programToStdout ? err : out;
-    BatchProgress progress(err, options.quiet, options.progress);
-    auto result = job::runJob(spec, progress, cancel);
+    spec.releaseSamplesOnceRead = !clToStdout; // CL data are made from the kept tool axes
+    if (clToStdout) {
+        spec.outputCl.clear();
+    }
+    std::ostream& summary = programToStdout || clToStdout ? io.err : io.out;
+    auto result = job::runJob(spec, io.progress, cancel);
     if (cancel.isCancelled()) {
-        return fail(cancelledError(), err);
+        return fail(cancelledError(), io);
     }
     if (!result) {
-        return fail(result.error(), err);
+        return fail(result.error(), io);
+    }
+    const bool toStdout = programToStdout || clToStdout;
+    if (auto refused = toStdout ? refuseCollidingStreamOutput(spec, *result) : Status{}; !refused) {
+        return fail(refused.error(), io);
     }
     // Checks the token last before the outputs are moved into place: after that the run ends
     // as it would have, its outputs whole.
     if (auto status = job::writeJobOutputs(spec, *result, &cancel); !status) {
-        return fail(status.error(), err);
+        return fail(status.error(), io);
     }
-    if (programToStdout) {
-        if (!result->rescheduled) {
-            return fail(Error{ErrorCode::InvalidArgument,
-                              "an output program needs re-scheduling; it was not run",
-                              {},
-                              {}},
-                        err);
-        }
-        out << result->rescheduled->programText << std::flush;
-        if (!out) {
-            return fail(streamFailure("the re-scheduled program"), err);
+    if (toStdout) {
+        if (auto status = writeStreamOutput(*result, programToStdout, io.out); !status) {
+            return fail(status.error(), io);
         }
     }
     if (options.printJson) {
         // The same report.json as --out writes (the spec names the preset and the edited layers).
-        summary << job::reportJsonText(*result, &options.job) << std::flush;
-        if (!summary) {
-            return fail(streamFailure("the JSON report"), err);
+        io.out << job::reportJsonText(*result, &options.job) << std::flush;
+        if (!io.out) {
+            return fail(streamFailure("the JSON report"), io);
         }
     } else if (!options.quiet) {
+        io.progress.endLine();
         summary << job::formatSummary(*result);
         if (!options.job.outputDir.empty()) {
             summary << "outputs      " << options.job.outputDir.string() << '\n';
@@ -251,26 +307,29 @@ Status writeReproduction(const std::filesystem::path& folder,
     return {};
 }
 
-int runReproduce(const BatchOptions& options, const CancelToken& cancel, std::ostream& out,
-                 std::ostream& err) {
-    BatchProgress progress(err, options.quiet, options.progress);
-    auto result = job::runReproduction(options.reproduction, progress, cancel);
+int runReproduce(const BatchOptions& options, const CancelToken& cancel, const Streams& io) {
+    auto result = job::runReproduction(options.reproduction, io.progress, cancel);
     if (cancel.isCancelled()) {
-        return fail(cancelledError(), err);
+        return fail(cancelledError(), io);
     }
     if (!result) {
-        return fail(result.error(), err);
-    }
-    if (cancel.isCancelled()) {
-        return fail(cancelledError(), err);
+        return fail(result.error(), io);
     }
     if (auto status = writeReproduction(options.job.outputDir, *result); !status) {
-        return fail(status.error(), err);
+        return fail(status.error(), io);
     }
     if (!options.quiet) {
-        out << job::reproductionSummary(*result);
+        io.progress.endLine();
+        io.out << job::reproductionSummary(*result);
     }
     return kExitOk;
+}
+
+// A command line that asks for JSON (--json anywhere) gets its refusal as JSON too, even when
+// the rest of it could not be read.
+bool asksForJson(const std::vector<std::string>& arguments) {
+    const auto end = std::ranges::find(arguments, "--");
+    return std::find(arguments.begin(), end, "--json") != end;
 }
 
 } // namespace
@@ -298,8 +357,10 @@ void installBatchInterruptHandlers() {
 int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err, std::istream& in) {
     CancelToken cancel;
     InterruptCancels interrupts(cancel);
+    BatchProgress progress(err, options.quiet, options.progress);
+    const Streams io{out, err, progress, options.printJson};
     if (cancel.isCancelled()) { // a signal before the run started
-        return fail(cancelledError(), err);
+        return fail(cancelledError(), io);
     }
     switch (options.mode) {
     case BatchOptions::Mode::Help:
@@ -313,11 +374,11 @@ int runBatch(const BatchOptions& options, std::ostream& out, std::ostream& err, 
             << ")\nbuilt with " << BLADEAXIS_LIBRARIES << '\n';
         return kExitOk;
     case BatchOptions::Mode::Generate:
-        return runGenerate(options, cancel, out, err);
+        return runGenerate(options, cancel, io);
     case BatchOptions::Mode::Analyse:
-        return runAnalyse(options, cancel, in, out, err);
+        return runAnalyse(options, cancel, in, io);
     case BatchOptions::Mode::Reproduce:
-        return runReproduce(options, cancel, out, err);
+        return runReproduce(options, cancel, io);
     }
     return kExitInternal;
 }
@@ -330,9 +391,14 @@ int runBatchCommandLine(const std::vector<std::string>& arguments, std::ostream&
         const SourceLocation& where = options.error().where;
         err << "bladeaxis: " << (where.empty() ? "" : where.toString() + ": ")
             << options.error().message << "\nRun with --help for usage.\n";
+        if (asksForJson(arguments)) {
+            out << errorJsonText(options.error(), kExitUsage) << std::flush;
+        }
         return kExitUsage;
     }
-    if (&err == &std::cerr && isatty(STDERR_FILENO) == 1 && !options->quiet) {
+    // On a terminal the running stage is shown unless asked not to (--no-progress, -q).
+    if (&err == &std::cerr && isatty(STDERR_FILENO) == 1 && !options->quiet &&
+        !options->noProgress) {
         options->progress = true;
     }
     return runBatch(*options, out, err, in);

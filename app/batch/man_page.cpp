@@ -99,6 +99,15 @@ std::string manPage(const CLI::App& cli, const ManPageText& text) {
             << escaped(group->get_description()) << '\n';
         writeOptions(out, *group, true);
     }
+    out << ".SH STANDARD OUTPUT\n"
+        << "Standard output carries only what a script reads: the program (\\fB\\-o \\-\\fR), "
+           "the CL data (\\fB\\-\\-cl\\-output \\-\\fR), the JSON report "
+           "(\\fB\\-\\-json\\fR), or else the summary; two of the three are refused (exit 2). "
+           "Errors, warnings, the progress line, and the summary when standard output carries "
+           "the program or CL data, go to standard error. With "
+           "\\fB\\-\\-json\\fR a refusal is also printed to standard output as a JSON object "
+           "{\"error\": {\"code\", \"exit_code\", \"file\", \"line\", \"column\", "
+           "\"message\", \"more\"}} (docs/cam\\-integration.md).\n";
     out << ".SH EXIT STATUS\n";
     writeVerbatim(out, text.exitCodes);
     out << ".SH FILES\n"

@@ -1,6 +1,7 @@
 #include "core/job/job_file.h"
 
 #include "core/base/file_io.h"
+#include "core/base/nearest_name.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
 #include "core/job/parameter_schema.h"
@@ -160,34 +161,10 @@ constexpr std::string_view kJobKeys[] = {"schema",
 constexpr std::string_view kLayerEditKeys[] = {"layer",    "preset",        "margin_deg",
                                                "eps_rule", "lead_fraction", "key_points"};
 
-// Edits (insertions, deletions, substitutions) from a to b: how close a mistyped key is.
-std::size_t editDistance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) {
-        row[j] = j;
-    }
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t above = row[j];
-            row[j] =
-                std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0U : 1U)});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
-
-// "; did you mean \"output_cl\"?" for a key within a third of its length of a known one.
+// "; did you mean \"output_cl\"?" for a key near a known one (core/base/nearest_name.h).
 std::string suggestion(std::string_view key, std::span<const std::string_view> known) {
-    const auto nearest = std::ranges::min_element(
-        known, {}, [key](std::string_view candidate) { return editDistance(key, candidate); });
-    if (nearest == known.end() ||
-        editDistance(key, *nearest) > std::max<std::size_t>(2, key.size() / 3)) {
-        return "";
-    }
-    return "; did you mean \"" + std::string(*nearest) + "\"?";
+    const auto nearest = nearestName(key, known);
+    return nearest ? "; did you mean \"" + std::string(*nearest) + "\"?" : "";
 }
 
 } // namespace

@@ -1,6 +1,8 @@
 #include "core/kinematics/machine_file.h"
 
 #include "core/base/file_io.h"
+#include "core/base/json_key_lines.h"
+#include "core/base/nearest_name.h"
 #include "core/base/units.h"
 
 #include <nlohmann/json.hpp>
@@ -10,6 +12,9 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
+#include <ranges>
+#include <span>
+#include <vector>
 
 namespace bladeaxis::kinematics {
 
@@ -34,20 +39,38 @@ bool isMachineLength(double value) {
     return std::abs(value) <= kMaxMachineLengthMm;
 }
 
-// Machine files are small; locating a key by its first quoted occurrence gives the reader a
-// line to look at, which nlohmann::json does not keep for values.
-int lineOfKey(std::string_view text, std::string_view key) {
-    const std::string quoted = "\"" + std::string(key) + "\"";
-    const std::size_t at = text.find(quoted);
-    if (at == std::string_view::npos) {
-        return 0;
+std::vector<std::string> splitPath(std::string_view dotted) {
+    std::vector<std::string> segments;
+    for (const auto segment : std::views::split(dotted, '.')) {
+        segments.emplace_back(segment.begin(), segment.end());
     }
-    int line = 1;
-    for (std::size_t i = 0; i < at; ++i) {
-        line += text[i] == '\n' ? 1 : 0;
-    }
-    return line;
+    return segments;
 }
+
+std::string joinPath(const std::vector<std::string>& segments) {
+    std::string dotted;
+    for (const std::string& segment : segments) {
+        dotted += (dotted.empty() ? "" : ".") + segment;
+    }
+    return dotted;
+}
+
+// The keys each object of a machine file may hold (docs/machine-file.md). A key outside them
+// was ignored, so "max_mmm" silently dropped the travel check: it is refused.
+constexpr std::string_view kTopKeys[] = {
+    "schema",          "name",      "kinematics", "axes", "integer_words", "least_input_increment",
+    "feed_per_minute", "controller"};
+constexpr std::string_view kKinematicsKeys[] = {
+    "type", "pivot_length_mm", "table_offset_mm", "head_offset_mm", "a_sign", "b_sign"};
+constexpr std::string_view kLinearAxisKeys[] = {
+    "min_mm", "max_mm", "velocity_mm_s", "acceleration_mm_s2", "jerk_mm_s3", "backlash_mm"};
+constexpr std::string_view kRotaryAxisKeys[] = {
+    "min_deg", "max_deg", "velocity_deg_s", "acceleration_deg_s2", "jerk_deg_s3", "backlash_deg"};
+constexpr std::string_view kTableAxisKeys[] = {
+    "min_deg",      "max_deg", "velocity_deg_s", "acceleration_deg_s2", "jerk_deg_s3",
+    "backlash_deg", "mode"};
+constexpr std::string_view kIncrementKeys[] = {"mm", "inch", "deg"};
+constexpr std::string_view kControllerKeys[] = {"planner"};
 
 class MachineReader {
   public:
@@ -56,14 +79,18 @@ class MachineReader {
     Result<MachineModel> read(const Json& root);
 
   private:
-    std::unexpected<Error> fail(std::string_view path, std::string_view key,
-                                const std::string& what) const {
-        return makeError(ErrorCode::MachineFile, std::string(path) + ": " + what,
-                         {m_file, lineOfKey(m_text, key), 0});
+    // `path` is the value's JSON path, "axes.Z.max_mm": its key's line is the one named.
+    std::unexpected<Error> fail(std::string_view path, const std::string& what) const {
+        return failAt(splitPath(path), what);
     }
+    std::unexpected<Error> failAt(const std::vector<std::string>& path,
+                                  const std::string& what) const;
+    Status knownKeys(const Json& object, const std::vector<std::string>& path,
+                     std::span<const std::string_view> known) const;
     Result<double> number(const Json& object, std::string_view path, const char* key,
                           std::optional<double> fallback, bool positive) const;
     Result<AxisLimits> axis(const Json& axes, char letter, bool rotary) const;
+    Status axisKeys(const Json& axes, char letter, AxisId id) const;
     Status chain(const Json& root, MachineModel& machine) const;
     Status axes(const Json& root, MachineModel& machine) const;
     Status numberRules(const Json& root, NumberRules& rules) const;
@@ -73,6 +100,32 @@ class MachineReader {
     std::string m_file;
 };
 
+// A missing key has no line of its own: its object's line is named instead.
+std::unexpected<Error> MachineReader::failAt(const std::vector<std::string>& path,
+                                             const std::string& what) const {
+    int line = 0;
+    for (std::size_t length = path.size(); line == 0 && length > 0; --length) {
+        line = lineOfJsonKey(m_text, std::span(path).first(length));
+    }
+    return makeError(ErrorCode::MachineFile, joinPath(path) + ": " + what, {m_file, line, 0});
+}
+
+Status MachineReader::knownKeys(const Json& object, const std::vector<std::string>& path,
+                                std::span<const std::string_view> known) const {
+    for (const auto& [key, unused] : object.items()) {
+        if (std::ranges::find(known, key) != known.end()) {
+            continue;
+        }
+        const auto nearest = nearestName(key, known);
+        std::vector<std::string> keyPath = path;
+        keyPath.push_back(key);
+        return failAt(keyPath, "unknown key in a machine file (docs/machine-file.md)" +
+                                   (nearest ? "; did you mean \"" + std::string(*nearest) + "\"?"
+                                            : std::string()));
+    }
+    return {};
+}
+
 Result<double> MachineReader::number(const Json& object, std::string_view path, const char* key,
                                      std::optional<double> fallback, bool positive) const {
     const std::string fullPath = std::string(path) + "." + key;
@@ -80,15 +133,15 @@ Result<double> MachineReader::number(const Json& object, std::string_view path, 
         if (fallback) {
             return *fallback;
         }
-        return fail(fullPath, key, "missing, expected a number");
+        return fail(fullPath, "missing, expected a number");
     }
     const Json& value = object.at(key);
     if (!value.is_number()) {
-        return fail(fullPath, key, "expected a number, got " + value.dump());
+        return fail(fullPath, "expected a number, got " + value.dump());
     }
     const double number = value.get<double>();
     if (!std::isfinite(number) || (positive && !(number > 0.0))) {
-        return fail(fullPath, key, "expected a positive number, got " + value.dump());
+        return fail(fullPath, "expected a positive number, got " + value.dump());
     }
     return number;
 }
@@ -97,7 +150,7 @@ Result<AxisLimits> MachineReader::axis(const Json& axes, char letter, bool rotar
     const std::string name(1, letter);
     const std::string path = "axes." + name;
     if (!axes.contains(name) || !axes.at(name).is_object()) {
-        return fail(path, name, "missing, expected an object with the axis limits");
+        return fail(path, "missing, expected an object with the axis limits");
     }
     const Json& object = axes.at(name);
     // Linear axes in mm, rotary in degrees in the file; converted to rad here.
@@ -123,7 +176,7 @@ Result<AxisLimits> MachineReader::axis(const Json& axes, char letter, bool rotar
     limits.jerk = *jerk * scale;
     limits.backlash = *backlash * scale;
     if (*backlash < 0.0) {
-        return fail(path + "." + backlashKey, backlashKey, "expected a number >= 0");
+        return fail(path + "." + backlashKey, "expected a number >= 0");
     }
     const std::string minKey = key("min");
     const std::string maxKey = key("max");
@@ -137,17 +190,44 @@ Result<AxisLimits> MachineReader::axis(const Json& axes, char letter, bool rotar
             return std::unexpected(max.error());
         }
         if (!(*max > *min)) {
-            return fail(path + "." + maxKey, maxKey, "expected max > min");
+            return fail(path + "." + maxKey, "expected max > min");
         }
         if (!rotary && !(isMachineLength(*min) && isMachineLength(*max))) {
             const std::string& bad = isMachineLength(*min) ? maxKey : minKey;
-            return fail(path + "." + bad, bad, "expected a length in " + lengthRange());
+            return fail(path + "." + bad, "expected a length in " + lengthRange());
         }
         limits.hasTravel = true;
         limits.min = *min * scale;
         limits.max = *max * scale;
     }
     return limits;
+}
+
+// A linear axis takes _mm keys, a rotary one _deg keys; only the table turns modulo.
+Status MachineReader::axisKeys(const Json& axes, char letter, AxisId id) const {
+    const std::string name(1, letter);
+    if (!axes.contains(name) || !axes.at(name).is_object()) {
+        return {}; // axis() names what is missing
+    }
+    using Keys = std::span<const std::string_view>;
+    const Keys known = !isRotary(id)     ? Keys(kLinearAxisKeys)
+                       : id == AxisId::A ? Keys(kTableAxisKeys)
+                                         : Keys(kRotaryAxisKeys);
+    // "min_deg" on a linear axis is three edits from "min_mm": the unit's counterpart is named.
+    const Keys otherUnit = isRotary(id) ? Keys(kLinearAxisKeys) : Keys(kRotaryAxisKeys);
+    for (const auto& [key, unused] : axes.at(name).items()) {
+        const auto counterpart = std::ranges::find(otherUnit, key);
+        if (counterpart != otherUnit.end()) {
+            const std::string_view meant =
+                known[static_cast<std::size_t>(counterpart - otherUnit.begin())];
+            return failAt({"axes", name, key},
+                          std::string(isRotary(id) ? "a rotary axis takes _deg keys"
+                                                   : "a linear axis takes _mm keys") +
+                              " (docs/machine-file.md); did you mean \"" + std::string(meant) +
+                              "\"?");
+        }
+    }
+    return knownKeys(axes.at(name), {"axes", name}, known);
 }
 
 struct LayoutDescription {
@@ -181,13 +261,16 @@ std::string layoutChoices() {
 
 Status MachineReader::chain(const Json& root, MachineModel& machine) const {
     if (!root.contains("kinematics") || !root.at("kinematics").is_object()) {
-        return fail("kinematics", "kinematics", "missing, expected an object");
+        return fail("kinematics", "missing, expected an object");
     }
     const Json& object = root.at("kinematics");
+    if (auto status = knownKeys(object, {"kinematics"}, kKinematicsKeys); !status) {
+        return status;
+    }
     const std::string type = object.value("type", "");
     const std::optional<Layout> layout = layoutNamed(type);
     if (!layout) {
-        return fail("kinematics.type", "type",
+        return fail("kinematics.type",
                     "expected one of " + layoutChoices() + ", got \"" + type + "\"");
     }
     machine.layout = *layout;
@@ -197,9 +280,9 @@ Status MachineReader::chain(const Json& root, MachineModel& machine) const {
         return std::unexpected(pivot.error());
     }
     if (!isMachineLength(*pivot)) {
-        return fail("kinematics.pivot_length_mm", "pivot_length_mm",
-                    "expected a length in " + lengthRange() + ", got " +
-                        object.at("pivot_length_mm").dump());
+        return fail("kinematics.pivot_length_mm", "expected a length in " + lengthRange() +
+                                                      ", got " +
+                                                      object.at("pivot_length_mm").dump());
     }
     chain.pivotLength = *pivot;
     for (const auto& [key, target] : {std::pair{"table_offset_mm", &chain.tableOffset},
@@ -210,11 +293,11 @@ Status MachineReader::chain(const Json& root, MachineModel& machine) const {
         const Json& value = object.at(key);
         if (!value.is_array() || value.size() != 3 || !value[0].is_number() ||
             !value[1].is_number() || !value[2].is_number()) {
-            return fail(std::string("kinematics.") + key, key, "expected [x, y, z] in mm");
+            return fail(std::string("kinematics.") + key, "expected [x, y, z] in mm");
         }
         if (!std::ranges::all_of(value,
                                  [](const Json& v) { return isMachineLength(v.get<double>()); })) {
-            return fail(std::string("kinematics.") + key, key,
+            return fail(std::string("kinematics.") + key,
                         "expected each of [x, y, z] in " + lengthRange() + ", got " + value.dump());
         }
         // Given in machine coordinates; the chain works in the engine's frame.
@@ -232,7 +315,7 @@ Status MachineReader::chain(const Json& root, MachineModel& machine) const {
                             : object.at(key).is_number() ? object.at(key).get<double>()
                                                          : 0.0;
         if (sign != 1.0 && sign != -1.0) {
-            return fail("kinematics." + key, key, "expected 1 or -1");
+            return fail("kinematics." + key, "expected 1 or -1");
         }
         *target = sign > 0.0 ? 1 : -1;
     }
@@ -243,17 +326,23 @@ Status MachineReader::chain(const Json& root, MachineModel& machine) const {
 // A word read with the opposite sign (a table-B machine's X) has its travel mirrored.
 Status MachineReader::axes(const Json& root, MachineModel& machine) const {
     if (!root.contains("axes") || !root.at("axes").is_object()) {
-        return fail("axes", "axes", "missing, expected an object with X, Y, Z and the rotary axes");
+        return fail("axes", "missing, expected an object with X, Y, Z and the rotary axes");
     }
     const std::string tilt(1, machine.letter(AxisId::B));
     if (!machine.hasB() && root.at("axes").contains(tilt)) {
-        return fail("axes." + tilt, tilt,
-                    "the machine has a fixed head: expected no " + tilt + " axis");
+        return fail("axes." + tilt, "the machine has a fixed head: expected no " + tilt + " axis");
+    }
+    constexpr std::string_view kAxisLetters[] = {"X", "Y", "Z", "A", "B"};
+    if (auto status = knownKeys(root.at("axes"), {"axes"}, kAxisLetters); !status) {
+        return status;
     }
     for (AxisId id : kAllAxes) {
         if (id == AxisId::B && !machine.hasB()) {
             // Never binding: the tilt stays 0. The table's dynamics keep every ratio finite.
             continue;
+        }
+        if (auto status = axisKeys(root.at("axes"), machine.letter(id), id); !status) {
+            return status;
         }
         auto limits = axis(root.at("axes"), machine.letter(id), isRotary(id));
         if (!limits) {
@@ -285,7 +374,7 @@ Status MachineReader::numberRules(const Json& root, NumberRules& rules) const {
         } else if (rule == "increments") {
             rules.integerWords = IntegerWords::Increments;
         } else {
-            return fail("integer_words", "integer_words",
+            return fail("integer_words",
                         "expected \"refuse_mixed\", \"units\" or \"increments\", got " +
                             value.dump());
         }
@@ -295,8 +384,11 @@ Status MachineReader::numberRules(const Json& root, NumberRules& rules) const {
     }
     const Json& increments = root.at("least_input_increment");
     if (!increments.is_object()) {
-        return fail("least_input_increment", "least_input_increment",
+        return fail("least_input_increment",
                     "expected an object {\"mm\": 0.001, \"inch\": 0.0001, \"deg\": 0.001}");
+    }
+    if (auto status = knownKeys(increments, {"least_input_increment"}, kIncrementKeys); !status) {
+        return status;
     }
     for (const auto& [key, target] :
          {std::pair{"mm", &rules.incrementMm}, std::pair{"inch", &rules.incrementInch},
@@ -318,21 +410,19 @@ Status MachineReader::controller(const Json& root, ControllerModel& controller) 
     }
     const Json& value = root.at("controller");
     if (!value.is_object()) {
-        return fail("controller", "controller",
+        return fail("controller",
                     "expected an object such as {\"planner\": \"block-by-block\"}, got " +
                         value.dump());
     }
-    for (const auto& [key, unused] : value.items()) {
-        if (key != "planner") {
-            return fail("controller." + key, key, "unknown key: expected \"planner\"");
-        }
+    if (auto status = knownKeys(value, {"controller"}, kControllerKeys); !status) {
+        return status;
     }
     if (value.contains("planner")) {
         const Json& planner = value.at("planner");
         const auto named =
             planner.is_string() ? plannerNamed(planner.get<std::string>()) : std::nullopt;
         if (!named) {
-            return fail("controller.planner", "planner",
+            return fail("controller.planner",
                         "expected \"look-ahead\" or \"block-by-block\", got " + planner.dump());
         }
         controller.planner = *named;
@@ -346,7 +436,10 @@ Result<MachineModel> MachineReader::read(const Json& root) {
                          {m_file, 1, 1});
     }
     if (root.value("schema", "") != kSchema) {
-        return fail("schema", "schema", std::string("expected \"") + kSchema + "\"");
+        return fail("schema", std::string("expected \"") + kSchema + "\"");
+    }
+    if (auto status = knownKeys(root, {}, kTopKeys); !status) {
+        return std::unexpected(status.error());
     }
     MachineModel machine;
     machine.sourceFile = m_file;
@@ -364,7 +457,7 @@ Result<MachineModel> MachineReader::read(const Json& root) {
         const Json& value = root.at("feed_per_minute");
         const std::string meaning = value.is_string() ? value.get<std::string>() : "";
         if (meaning != "path" && meaning != "combined_axes") {
-            return fail("feed_per_minute", "feed_per_minute",
+            return fail("feed_per_minute",
                         "expected \"path\" or \"combined_axes\", got " + value.dump());
         }
         machine.feedMeaning = meaning == "path" ? FeedMeaning::Path : FeedMeaning::CombinedAxes;
@@ -379,7 +472,7 @@ Result<MachineModel> MachineReader::read(const Json& root) {
     } else if (mode == "modulo") {
         machine.aMode = RotaryMode::Modulo;
     } else {
-        return fail("axes." + table + ".mode", "mode",
+        return fail("axes." + table + ".mode",
                     "expected \"continuous\" or \"modulo\", got \"" + mode + "\"");
     }
     return machine;

@@ -132,7 +132,7 @@ const std::string kTravelReversed =
     validAxes(
         R"({"min_deg": 10, "max_deg": -10, "velocity_deg_s": 3, "acceleration_deg_s2": 1, "jerk_deg_s3": 1})") +
     "}";
-const std::string kNoAxes = kHeader + "\"x\": 1}";
+const std::string kNoAxes = kHeader + "\"name\": \"m\"}";
 const std::string kWrongType =
     R"({"schema": "bladeaxis-machine/1", "kinematics": {"type": "head_head"}, )" +
     validAxes(kGoodA) + "}";
@@ -290,6 +290,172 @@ TEST(MachineFileController, RefusesAnUnknownPlannerAndATypo) {
         parseMachineJson(machineWithController(R"({"planer": "look-ahead"})"), "m.json");
     ASSERT_FALSE(typo.has_value());
     EXPECT_NE(typo.error().toString().find("unknown key"), std::string::npos);
+}
+
+// One key a line, so that a test can name the line of each: X, Y and Z all hold "max_mm", and
+// an error in Z's must name Z's line (34), not X's (20) (a value on line 55 was reported at 47).
+std::string lineByLineMachine() {
+    std::string text = R"({
+  "schema": "bladeaxis-machine/1",
+  "name": "one key a line",
+  "kinematics": {
+    "type": "table_a_head_b",
+    "pivot_length_mm": 0,
+    "a_sign": 1,
+    "b_sign": 1
+  },
+  "least_input_increment": {
+    "mm": 0.001,
+    "deg": 0.001
+  },
+  "controller": {
+    "planner": "look-ahead"
+  },
+  "axes": {
+    "X": {
+      "min_mm": -1400,
+      "max_mm": 1400,
+      "velocity_mm_s": 500,
+      "acceleration_mm_s2": 3000,
+      "jerk_mm_s3": 30000
+    },
+    "Y": {
+      "min_mm": -330,
+      "max_mm": 330,
+      "velocity_mm_s": 500,
+      "acceleration_mm_s2": 3000,
+      "jerk_mm_s3": 30000
+    },
+    "Z": {
+      "min_mm": -300,
+      "max_mm": 500,
+      "velocity_mm_s": 500,
+      "acceleration_mm_s2": 3000,
+      "jerk_mm_s3": 30000
+    },
+    "A": {
+      "mode": "continuous",
+      "velocity_deg_s": 360,
+      "acceleration_deg_s2": 1800,
+      "jerk_deg_s3": 18000
+    },
+    "B": {
+      "min_deg": -87,
+      "max_deg": 87,
+      "velocity_deg_s": 90,
+      "acceleration_deg_s2": 900,
+      "jerk_deg_s3": 9000
+    }
+  }
+}
+)";
+    return text;
+}
+
+// Replaces the first occurrence of `from` at or after line `line` (1-based) of the text.
+std::string replacedOnLine(std::string text, int line, const std::string& from,
+                           const std::string& to) {
+    std::size_t at = 0;
+    for (int i = 1; i < line; ++i) {
+        at = text.find('\n', at) + 1;
+    }
+    const std::size_t end = text.find('\n', at);
+    const std::size_t found = text.find(from, at);
+    EXPECT_LT(found, end) << from << " is not on line " << line;
+    return text.replace(found, from.size(), to);
+}
+
+TEST(MachineFileLines, TheLineByLineMachineLoads) {
+    const auto machine = parseMachineJson(lineByLineMachine(), "m.json");
+    ASSERT_TRUE(machine.has_value()) << machine.error().toString();
+    EXPECT_TRUE(machine->limit(AxisId::Z).hasTravel);
+}
+
+struct LineCase {
+    int line;
+    std::string from;
+    std::string to;
+    std::string expected; // the whole "file:line: kind: path: ..." prefix
+};
+
+// Each bad value is put on a known line; the error names that line, not the first line that
+// holds the same key in another object.
+TEST(MachineFileLines, EachErrorNamesTheLineOfItsValue) {
+    const LineCase cases[] = {
+        {35, "\"velocity_mm_s\": 500", "\"velocity_mm_s\": -1",
+         "m.json:35: machine file error: axes.Z.velocity_mm_s: expected a positive number"},
+        {33, "-300", "900", "m.json:34: machine file error: axes.Z.max_mm: expected max > min"},
+        {34, "500", "1e6",
+         "m.json:34: machine file error: axes.Z.max_mm: expected a length in [-10000, 10000]"},
+        {27, "\"max_mm\": 330", "\"max_mm\": \"far\"",
+         "m.json:27: machine file error: axes.Y.max_mm: expected a number, got \"far\""},
+        {46, "-87", "87", "m.json:47: machine file error: axes.B.max_deg: expected max > min"},
+        {40, "continuous", "spiral", "m.json:40: machine file error: axes.A.mode: expected"},
+        {15, "look-ahead", "magic", "m.json:15: machine file error: controller.planner"},
+        {12, "0.001", "0", "m.json:12: machine file error: least_input_increment.deg"},
+        {8, "\"b_sign\": 1", "\"b_sign\": 3", "m.json:8: machine file error: kinematics.b_sign"},
+    };
+    for (const LineCase& c : cases) {
+        const auto machine =
+            parseMachineJson(replacedOnLine(lineByLineMachine(), c.line, c.from, c.to), "m.json");
+        ASSERT_FALSE(machine.has_value()) << c.expected;
+        EXPECT_EQ(machine.error().code, ErrorCode::MachineFile);
+        EXPECT_EQ(machine.error().toString().rfind(c.expected, 0), 0U)
+            << "expected: " << c.expected << "\n     got: " << machine.error().toString();
+    }
+}
+
+TEST(MachineFileLines, AMissingKeyNamesTheLineOfItsObject) {
+    const auto machine = parseMachineJson(
+        replacedOnLine(lineByLineMachine(), 37, "\"jerk_mm_s3\": 30000", "\"backlash_mm\": 0"),
+        "m.json");
+    ASSERT_FALSE(machine.has_value());
+    EXPECT_EQ(machine.error().toString().rfind(
+                  "m.json:32: machine file error: axes.Z.jerk_mm_s3: missing", 0),
+              0U)
+        << machine.error().toString();
+}
+
+// A misspelt key was ignored: "max_mmm" dropped the travel check without a word. Every object
+// of the file refuses a key it does not know, at its line, naming the nearest known key.
+TEST(MachineFileLines, AnUnknownKeyInEveryObjectIsRefusedAtItsLineWithTheNearestKnownKey) {
+    const LineCase cases[] = {
+        {3, "\"name\"", "\"nmae\"",
+         "m.json:3: machine file error: nmae: unknown key in a "
+         "machine file (docs/machine-file.md); did you mean \"name\"?"},
+        {6, "\"pivot_length_mm\"", "\"pivot_lenght_mm\"",
+         "m.json:6: machine file error: kinematics.pivot_lenght_mm: unknown key in a machine "
+         "file (docs/machine-file.md); did you mean \"pivot_length_mm\"?"},
+        {11, "\"mm\"", "\"mmm\"",
+         "m.json:11: machine file error: least_input_increment.mmm: unknown key in a machine "
+         "file (docs/machine-file.md); did you mean \"mm\"?"},
+        {15, "\"planner\"", "\"planer\"",
+         "m.json:15: machine file error: controller.planer: unknown key in a machine file "
+         "(docs/machine-file.md); did you mean \"planner\"?"},
+        {32, "\"Z\"", "\"z\"",
+         "m.json:32: machine file error: axes.z: unknown key in a machine "
+         "file (docs/machine-file.md); did you mean \"Z\"?"},
+        {34, "\"max_mm\"", "\"max_mmm\"",
+         "m.json:34: machine file error: axes.Z.max_mmm: unknown key in a machine file "
+         "(docs/machine-file.md); did you mean \"max_mm\"?"},
+        {19, "\"min_mm\"", "\"min_deg\"",
+         "m.json:19: machine file error: axes.X.min_deg: a linear axis takes _mm keys "
+         "(docs/machine-file.md); did you mean \"min_mm\"?"},
+        {43, "\"jerk_deg_s3\"", "\"jerk_deg_s\"",
+         "m.json:43: machine file error: axes.A.jerk_deg_s: unknown key in a machine file "
+         "(docs/machine-file.md); did you mean \"jerk_deg_s3\"?"},
+        // Only the table turns modulo: "mode" on the head's B is not a key of B.
+        {47, "\"max_deg\": 87", "\"mode\": \"modulo\"",
+         "m.json:47: machine file error: axes.B.mode: unknown key in a machine file"},
+    };
+    for (const LineCase& c : cases) {
+        const auto machine =
+            parseMachineJson(replacedOnLine(lineByLineMachine(), c.line, c.from, c.to), "m.json");
+        ASSERT_FALSE(machine.has_value()) << c.expected;
+        EXPECT_EQ(machine.error().code, ErrorCode::MachineFile);
+        EXPECT_EQ(machine.error().toString().rfind(c.expected, 0), 0U)
+            << "expected: " << c.expected << "\n     got: " << machine.error().toString();
+    }
 }
 
 } // namespace

@@ -119,43 +119,45 @@ class ListingEdit final : public QPlainTextEdit {
     void paintEvent(QPaintEvent* event) override {
         {
             QPainter painter(viewport());
-            paintCurrentLine(painter);
-            if (m_owner.shownProgram() == NcListing::Program::Rescheduled) {
-                paintChangedWords(painter, event->rect());
-            }
+            paintUnderText(painter, event->rect());
         }
         QPlainTextEdit::paintEvent(event);
     }
 
   private:
-    QRectF geometryOf(const QTextBlock& block) const {
-        return blockBoundingGeometry(block).translated(contentOffset());
+    // Walks the visible blocks as QPlainTextEdit's own painting does, each block below the
+    // one before: the highlighted block and the changed words of each line.
+    void paintUnderText(QPainter& painter, const QRect& area) const {
+        const bool words = m_owner.shownProgram() == NcListing::Program::Rescheduled;
+        const QTextBlock current = textCursor().block();
+        QPointF offset = contentOffset();
+        for (QTextBlock block = firstVisibleBlock(); block.isValid() && offset.y() <= area.bottom();
+             block = block.next()) {
+            const QRectF geometry = blockBoundingRect(block).translated(offset);
+            offset.ry() += geometry.height();
+            if (block == current) {
+                painter.fillRect(QRectF(0, geometry.top(), viewport()->width(), geometry.height()),
+                                 kCurrentLine);
+            }
+            if (words) {
+                paintChangedWords(painter, block, geometry.topLeft());
+            }
+        }
     }
 
-    void paintCurrentLine(QPainter& painter) const {
-        const QRectF block = geometryOf(textCursor().block());
-        painter.fillRect(QRectF(0, block.top(), viewport()->width(), block.height()), kCurrentLine);
-    }
-
-    void paintChangedWords(QPainter& painter, const QRect& area) const {
-        for (QTextBlock block = firstVisibleBlock(); block.isValid(); block = block.next()) {
-            const QRectF geometry = geometryOf(block);
-            if (geometry.top() > area.bottom()) {
-                break;
-            }
-            const int line = block.blockNumber() + 1;
-            if (!m_owner.lineChanged(line)) {
-                continue;
-            }
-            const int originalLine = m_owner.m_originalLineOf[static_cast<std::size_t>(line) - 1];
-            const std::string_view original =
-                m_owner.lineText(NcListing::Program::Original, originalLine);
-            const QString originalText =
-                QString::fromUtf8(original.data(), static_cast<qsizetype>(original.size()));
-            for (const auto& [start, length] :
-                 NcListing::changedWordSpans(originalText, block.text())) {
-                paintSpan(painter, block, geometry.topLeft(), start, length);
-            }
+    void paintChangedWords(QPainter& painter, const QTextBlock& block, QPointF origin) const {
+        const int line = block.blockNumber() + 1;
+        if (!m_owner.lineChanged(line)) {
+            return;
+        }
+        const int originalLine = m_owner.m_originalLineOf[static_cast<std::size_t>(line) - 1];
+        const std::string_view original =
+            m_owner.lineText(NcListing::Program::Original, originalLine);
+        const QString originalText =
+            QString::fromUtf8(original.data(), static_cast<qsizetype>(original.size()));
+        for (const auto& [start, length] :
+             NcListing::changedWordSpans(originalText, block.text())) {
+            paintSpan(painter, block, origin, start, length);
         }
     }
 
@@ -381,9 +383,12 @@ void NcListing::selectRecord(std::size_t record) {
     if (line < 1 || line > m_edit->document()->blockCount()) {
         return;
     }
+    // A block off screen comes to the middle, with its neighbours on both sides; one on
+    // screen stays where it is.
+    const bool visible = isLineVisible(line);
     m_selecting = true;
     m_edit->setTextCursor(QTextCursor(m_edit->document()->findBlockByNumber(line - 1)));
-    if (!isLineVisible(line)) {
+    if (!visible) {
         m_edit->centerCursor();
     }
     m_selecting = false;

@@ -143,8 +143,8 @@ class MainWindow final : public QMainWindow {
     // the listing and, for a record of the cutting pass, its layer, the tool slider and the tool
     // in the 3D view. The listing's blocks, the 3D pick and the slider select through it.
     void selectRecord(std::size_t record);
-    // The record selected last (listing, 3D pick, tool slider or selectRecord); none after a
-    // new program.
+    // The record selected last (listing, 3D pick, tool slider, plot click or selectRecord);
+    // none after a new program.
     std::optional<std::size_t> selectedRecord() const { return m_selectedRecord; }
     void setDarkPalette(bool dark);
     int selectedLayer() const;
@@ -204,8 +204,19 @@ class MainWindow final : public QMainWindow {
     void showListing(std::string programText, bool newProgram);
     // The pass index of program record `record`; none outside the cutting pass.
     std::optional<std::size_t> passIndexOf(std::size_t record) const;
-    // The tool slider moved: the tool and the listing follow.
+    // The tool slider moved: the tool, the listing and the plots' mark follow.
     void showPassRecord(std::size_t passIndex);
+    // The listing's block and the plots' time line of the selected record.
+    void markSelectedRecord(std::size_t record);
+    // The profile the plots mark times on: the exported program's (the original's without one).
+    const analysis::AxisProfile& plottedProfile() const;
+    static std::optional<double> timeOfPassRecord(const analysis::AxisProfile& profile,
+                                                  std::size_t passIndex);
+    // The pass record of the analysed sample nearest `seconds`; none without samples.
+    static std::optional<std::size_t> passRecordAtTime(const analysis::AxisProfile& profile,
+                                                       double seconds);
+    // A click on a plot: selects the record at that time of the exported program.
+    void selectPlottedTime(double seconds);
     // A layer selected in the table: the listing shows its first block, unless the selected
     // block is one of the layer's (pass records first..last).
     void showLayerInListing(std::size_t first, std::size_t last);

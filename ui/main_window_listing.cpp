@@ -1,14 +1,16 @@
 // The main window's NC listing (issue 38): the program's text in a dock beside the pages,
-// cross-probed with the 3D view, the tool slider and the layer table: a block selects its
-// record everywhere, and a record selected anywhere scrolls the listing to its block.
+// cross-probed with the 3D view, the tool slider, the layer table and the axis plots: a block
+// selects its record everywhere, and a record selected anywhere scrolls the listing to its block.
 
 #include "ui/main_window.h"
 #include "ui/nc_listing.h"
+#include "ui/profile_plots.h"
 #include "ui/toolpath_view.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QSlider>
+#include <algorithm>
 
 namespace bladeaxis::ui {
 
@@ -22,15 +24,17 @@ void MainWindow::buildListingDock() {
     m_listingDock->toggleViewAction()->setObjectName(QStringLiteral("showListing"));
     m_listingDock->toggleViewAction()->setShortcut(QKeySequence(tr("Ctrl+L")));
     connect(m_listing, &NcListing::recordSelected, this, &MainWindow::selectRecord);
+    connect(m_plots, &ProfilePlots::timeClicked, this, &MainWindow::selectPlottedTime);
 }
 
 void MainWindow::showListing(std::string programText, bool newProgram) {
     if (newProgram) {
         m_selectedRecord.reset();
+        m_plots->setMarkedTime(std::nullopt);
     }
     m_listing->setSource(NcListing::sourceOf(*m_result, std::move(programText)));
-    if (m_selectedRecord) {
-        m_listing->selectRecord(*m_selectedRecord);
+    if (m_selectedRecord) { // a re-run for an edit: the new program's times
+        markSelectedRecord(*m_selectedRecord);
     }
 }
 
@@ -46,8 +50,7 @@ void MainWindow::selectRecord(std::size_t record) {
     if (!m_result || record >= m_result->program.path().records.size()) {
         return;
     }
-    m_selectedRecord = record;
-    m_listing->selectRecord(record);
+    markSelectedRecord(record);
     // Approach, retract and rapid blocks are not drawn: only the listing shows them.
     if (const std::optional<std::size_t> passIndex = passIndexOf(record)) {
         selectLayer(m_view3d->layerOfRecord(*passIndex));
@@ -60,8 +63,61 @@ void MainWindow::selectRecord(std::size_t record) {
 void MainWindow::showPassRecord(std::size_t passIndex) {
     m_view3d->showToolAt(passIndex);
     if (m_result && passIndex < m_result->pass.count) {
-        m_selectedRecord = m_result->pass.first + passIndex;
-        m_listing->selectRecord(*m_selectedRecord);
+        markSelectedRecord(m_result->pass.first + passIndex);
+    }
+}
+
+void MainWindow::markSelectedRecord(std::size_t record) {
+    m_selectedRecord = record;
+    m_listing->selectRecord(record);
+    const std::optional<std::size_t> passIndex = passIndexOf(record);
+    m_plots->setMarkedTime(passIndex ? timeOfPassRecord(plottedProfile(), *passIndex)
+                                     : std::nullopt);
+}
+
+const analysis::AxisProfile& MainWindow::plottedProfile() const {
+    return m_result->rescheduled ? m_result->rescheduled->profile : m_result->original;
+}
+
+std::optional<double> MainWindow::timeOfPassRecord(const analysis::AxisProfile& profile,
+                                                   std::size_t passIndex) {
+    const auto& records = profile.sampleRecord;
+    const auto it = std::lower_bound(records.begin(), records.end(), passIndex);
+    if (it == records.end()) {
+        return std::nullopt; // not analysed (a job that released its samples)
+    }
+    return profile.timeAt(static_cast<std::size_t>(it - records.begin()));
+}
+
+std::optional<std::size_t> MainWindow::passRecordAtTime(const analysis::AxisProfile& profile,
+                                                        double seconds) {
+    const std::size_t samples = profile.sampleRecord.size();
+    if (samples == 0) {
+        return std::nullopt;
+    }
+    // Sample times ascend: the first sample at or after `seconds`, or the one before when nearer.
+    std::size_t low = 0, high = samples;
+    while (low < high) {
+        const std::size_t middle = low + (high - low) / 2;
+        if (profile.timeAt(middle) < seconds) {
+            low = middle + 1;
+        } else {
+            high = middle;
+        }
+    }
+    if (low == samples ||
+        (low > 0 && seconds - profile.timeAt(low - 1) < profile.timeAt(low) - seconds)) {
+        --low;
+    }
+    return profile.sampleRecord[low];
+}
+
+void MainWindow::selectPlottedTime(double seconds) {
+    if (!m_result) {
+        return;
+    }
+    if (const std::optional<std::size_t> passIndex = passRecordAtTime(plottedProfile(), seconds)) {
+        selectRecord(m_result->pass.first + *passIndex);
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include "ui/main_window.h"
 #include "ui/nc_listing.h"
+#include "ui/profile_plots.h"
 #include "ui/toolpath_view.h"
 
 #include <QDockWidget>
@@ -172,6 +173,24 @@ class NcListingTest final : public QObject {
         // A block before the pass (approach) is only in the listing.
         m_window->selectRecord(0);
         expectShown(0);
+    }
+
+    // The plots mark the selected record's time on the exported program's time axis, and a
+    // click on a plot selects the record at the time clicked.
+    void thePlotsMarkTheSelectedRecordAndSelectTheOneClicked() {
+        const auto& result = *m_window->result();
+        const auto& profile = result.rescheduled->profile;
+        const std::size_t sample = profile.sampleRecord.size() / 3;
+        const std::size_t passIndex = profile.sampleRecord[sample];
+        m_window->selectRecord(result.pass.first + passIndex);
+        QVERIFY(m_window->plots()->markedTime().has_value());
+        QCOMPARE(*m_window->plots()->markedTime(), profile.timeAt(sample));
+        const std::size_t other = profile.sampleRecord.size() / 5;
+        emit m_window->plots()->timeClicked(profile.timeAt(other) + 1e-9);
+        const std::size_t clicked = result.pass.first + profile.sampleRecord[other];
+        QCOMPARE(m_window->selectedRecord(), std::optional<std::size_t>(clicked));
+        QCOMPARE(m_window->listing()->currentRecord(), std::optional<std::size_t>(clicked));
+        QCOMPARE(m_window->toolSlider()->value(), static_cast<int>(profile.sampleRecord[other]));
     }
 
     // A layer row shows the layer's first block unless the block shown is one of its own.

@@ -141,7 +141,8 @@ class MainWindow final : public QMainWindow {
     QDockWidget* listingDock() const { return m_listingDock; }
     // Selects record `record` of the program (index into its records) everywhere: its block in
     // the listing and, for a record of the cutting pass, its layer, the tool slider and the tool
-    // in the 3D view. The listing's blocks, the 3D pick and the slider select through it.
+    // in the 3D view, and the plots' time line. The listing's blocks, the 3D pick and a plot
+    // click select through it.
     void selectRecord(std::size_t record);
     // The record selected last (listing, 3D pick, tool slider, plot click or selectRecord);
     // none after a new program.

@@ -4,6 +4,7 @@
 // table, and a record selected there (or through the window) scrolls the listing to its block
 // and highlights it. A listing of a large program stays quick to fill and to paint.
 
+#include "app/batch/batch_runner.h"
 #include "ui/main_window.h"
 #include "ui/nc_listing.h"
 #include "ui/profile_plots.h"
@@ -22,6 +23,7 @@
 #include <QTextBlock>
 #include <algorithm>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -259,6 +261,32 @@ class NcListingTest final : public QObject {
                  static_cast<std::size_t>(kBlocks - (kBlocks + 6) / 7));
         QVERIFY2(fill < 5000, qPrintable(QStringLiteral("filled in %1 ms").arg(fill)));
         QVERIFY2(paint < 500, qPrintable(QStringLiteral("painted in %1 ms").arg(paint)));
+    }
+
+    // CL data: the listing reads the rewritten program back for its records' lines (an APT
+    // rewrite may add lines), so each block shown for a record is that record's GOTO. Last: it
+    // replaces the window's job.
+    void anAptProgramMapsItsRecordsToTheirGotoLines() {
+        const std::string program = BLADEAXIS_GUI_OUTPUT_DIR "/listing_blade.apt";
+        std::ostringstream out, err;
+        QCOMPARE(
+            bladeaxis::app::runBatchCommandLine(
+                {"bladeaxis", "--batch", "--generate", program, "--format", "apt", "-q"}, out, err),
+            0);
+        QSignalSpy finished(m_window.get(), &bladeaxis::ui::MainWindow::jobFinished);
+        m_window->runProgram(QString::fromStdString(program));
+        QVERIFY(finished.wait(kJobTimeoutMs));
+        QCOMPARE(finished.front().front().toBool(), true);
+        const auto& result = *m_window->result();
+        const NcListing& listing = *m_window->listing();
+        QCOMPARE(listing.shownProgram(), NcListing::Program::Rescheduled);
+        QVERIFY(listing.changedBlockCount() > result.pass.count / 2);
+        const std::size_t record = result.pass.first + result.pass.count / 2;
+        m_window->selectRecord(record);
+        QCOMPARE(listing.currentRecord(), std::optional<std::size_t>(record));
+        QVERIFY(currentBlockText(listing).startsWith(QStringLiteral("GOTO")));
+        QVERIFY(listing.lineChanged(listing.currentLine()));
+        QVERIFY(listing.isLineVisible(listing.currentLine()));
     }
 
     void cleanupTestCase() { m_window.reset(); }

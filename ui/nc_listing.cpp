@@ -2,18 +2,15 @@
 
 #include "core/io/program.h"
 
+#include <QAbstractListModel>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QListView>
 #include <QLocale>
-#include <QPaintEvent>
 #include <QPainter>
-#include <QPlainTextDocumentLayout>
-#include <QPlainTextEdit>
+#include <QStyledItemDelegate>
 #include <QTabBar>
-#include <QTextBlock>
-#include <QTextDocument>
-#include <QTextLayout>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <map>
@@ -22,7 +19,7 @@ namespace bladeaxis::ui {
 
 namespace {
 
-// Behind each changed word, and behind the highlighted block; translucent so that a changed
+// Behind each changed word, and behind the highlighted line; translucent so that a changed
 // word stays marked on the highlighted block and both read in the dark palette too.
 const QColor kChangedWord(255, 170, 0, 120);
 const QColor kCurrentLine(70, 130, 230, 70);
@@ -92,6 +89,17 @@ std::string_view lineOf(const std::string& text, const std::vector<std::size_t>&
     return std::string_view(text).substr(begin, end - begin);
 }
 
+// The length of the longest line, in characters of a fixed-pitch font (bytes: the words of a
+// program are ASCII).
+int widestLine(const std::string& text, const std::vector<std::size_t>& starts) {
+    std::size_t widest = 0;
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+        const std::size_t end = k + 1 < starts.size() ? starts[k + 1] : text.size();
+        widest = std::max(widest, end - starts[k]);
+    }
+    return static_cast<int>(std::min<std::size_t>(widest, 4096));
+}
+
 // The line of each record of `text` read back as a program of the input's format; empty when
 // it does not read (it did when the job verified it).
 std::vector<int> recordLinesOf(const std::string& text, const job::JobResult& result) {
@@ -109,72 +117,83 @@ std::vector<int> recordLinesOf(const std::string& text, const job::JobResult& re
 
 } // namespace
 
-// The QPlainTextEdit of the listing: paints the highlighted block and, in the re-scheduled
-// program, the changed words of the visible blocks only, under the text.
-class ListingEdit final : public QPlainTextEdit {
+// The shown program's lines as rows, made from the bytes when the view asks for them.
+class ListingModel final : public QAbstractListModel {
   public:
-    ListingEdit(NcListing& owner, QWidget* parent) : QPlainTextEdit(parent), m_owner(owner) {}
+    ListingModel(const NcListing& owner, QObject* parent)
+        : QAbstractListModel(parent), m_owner(owner) {}
 
-  protected:
-    void paintEvent(QPaintEvent* event) override {
-        {
-            QPainter painter(viewport());
-            paintUnderText(painter, event->rect());
+    int rowCount(const QModelIndex& parent = {}) const override {
+        return parent.isValid() ? 0 : m_rows;
+    }
+
+    QVariant data(const QModelIndex& index, int role) const override {
+        if (role != Qt::DisplayRole || !index.isValid()) {
+            return {};
         }
-        QPlainTextEdit::paintEvent(event);
+        return m_owner.lineString(m_owner.shownProgram(), index.row() + 1);
+    }
+
+    // The shown program or its text changed: every row is new.
+    void reset(int rows) {
+        beginResetModel();
+        m_rows = rows;
+        endResetModel();
     }
 
   private:
-    // Walks the visible blocks as QPlainTextEdit's own painting does, each block below the
-    // one before: the highlighted block and the changed words of each line.
-    void paintUnderText(QPainter& painter, const QRect& area) const {
-        const bool words = m_owner.shownProgram() == NcListing::Program::Rescheduled;
-        const QTextBlock current = textCursor().block();
-        QPointF offset = contentOffset();
-        for (QTextBlock block = firstVisibleBlock(); block.isValid() && offset.y() <= area.bottom();
-             block = block.next()) {
-            const QRectF geometry = blockBoundingRect(block).translated(offset);
-            offset.ry() += geometry.height();
-            if (block == current) {
-                painter.fillRect(QRectF(0, geometry.top(), viewport()->width(), geometry.height()),
-                                 kCurrentLine);
+    const NcListing& m_owner;
+    int m_rows = 0;
+};
+
+// Paints a line: the current line's background, the changed words' (in the re-scheduled
+// program), then the text, so that both backgrounds stay under the text.
+class ListingDelegate final : public QStyledItemDelegate {
+  public:
+    ListingDelegate(const NcListing& owner, QObject* parent)
+        : QStyledItemDelegate(parent), m_owner(owner) {}
+
+    // Every row is as wide as the longest line (the list scrolls sideways to it).
+    void setWidestLine(int characters) { m_widest = characters; }
+
+    QSize sizeHint(const QStyleOptionViewItem& option, const QModelIndex&) const override {
+        const QFontMetrics metrics(option.font);
+        return {metrics.horizontalAdvance(QLatin1Char('0')) * m_widest + 2 * kMarginPx,
+                metrics.height()};
+    }
+
+    void paint(QPainter* painter, const QStyleOptionViewItem& option,
+               const QModelIndex& index) const override {
+        const QString text = index.data().toString();
+        const QFontMetricsF metrics(option.font);
+        if (option.state & QStyle::State_HasFocus || index.row() + 1 == m_owner.currentLine()) {
+            painter->fillRect(option.rect, kCurrentLine);
+        }
+        const int line = index.row() + 1;
+        if (m_owner.shownProgram() == NcListing::Program::Rescheduled &&
+            m_owner.lineChanged(line)) {
+            const QString original =
+                m_owner.lineString(NcListing::Program::Original,
+                                   m_owner.m_originalLineOf[static_cast<std::size_t>(line) - 1]);
+            for (const auto& [start, length] : NcListing::changedWordSpans(original, text)) {
+                const qreal left =
+                    option.rect.left() + kMarginPx + metrics.horizontalAdvance(text.left(start));
+                painter->fillRect(QRectF(left, option.rect.top(),
+                                         metrics.horizontalAdvance(text.mid(start, length)),
+                                         option.rect.height()),
+                                  kChangedWord);
             }
-            if (words) {
-                paintChangedWords(painter, block, geometry.topLeft());
-            }
         }
+        painter->setFont(option.font);
+        painter->setPen(option.palette.color(QPalette::Text));
+        painter->drawText(option.rect.adjusted(kMarginPx, 0, 0, 0),
+                          Qt::AlignLeft | Qt::AlignVCenter | Qt::TextExpandTabs, text);
     }
 
-    void paintChangedWords(QPainter& painter, const QTextBlock& block, QPointF origin) const {
-        const int line = block.blockNumber() + 1;
-        if (!m_owner.lineChanged(line)) {
-            return;
-        }
-        const int originalLine = m_owner.m_originalLineOf[static_cast<std::size_t>(line) - 1];
-        const std::string_view original =
-            m_owner.lineText(NcListing::Program::Original, originalLine);
-        const QString originalText =
-            QString::fromUtf8(original.data(), static_cast<qsizetype>(original.size()));
-        for (const auto& [start, length] :
-             NcListing::changedWordSpans(originalText, block.text())) {
-            paintSpan(painter, block, origin, start, length);
-        }
-    }
-
-    static void paintSpan(QPainter& painter, const QTextBlock& block, QPointF origin, int start,
-                          int length) {
-        const QTextLine textLine = block.layout()->lineForTextPosition(start);
-        if (!textLine.isValid()) {
-            return;
-        }
-        const qreal left = textLine.cursorToX(start);
-        const qreal right = textLine.cursorToX(start + length);
-        painter.fillRect(
-            QRectF(left, textLine.y(), right - left, textLine.height()).translated(origin),
-            kChangedWord);
-    }
-
-    NcListing& m_owner;
+  private:
+    static constexpr int kMarginPx = 4;
+    const NcListing& m_owner;
+    int m_widest = 80;
 };
 
 NcListing::Source NcListing::sourceOf(const job::JobResult& result, std::string originalText) {
@@ -232,24 +251,30 @@ NcListing::NcListing(QWidget* parent) : QWidget(parent) {
                           "marked"));
     m_changedLabel = new QLabel(this);
     m_changedLabel->setObjectName(QStringLiteral("listingChangedBlocks"));
-    m_edit = new ListingEdit(*this, this);
-    m_edit->setObjectName(QStringLiteral("listingText"));
-    m_edit->setReadOnly(true);
-    // Read-only text keeps a cursor the arrow keys move, block by block.
-    m_edit->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
-    m_edit->setLineWrapMode(QPlainTextEdit::NoWrap);
-    m_edit->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_model = new ListingModel(*this, this);
+    m_delegate = new ListingDelegate(*this, this);
+    m_view = new QListView(this);
+    m_view->setObjectName(QStringLiteral("listingText"));
+    m_view->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    // Every row the same height: the view places a million rows without measuring them.
+    m_view->setUniformItemSizes(true);
+    m_view->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_view->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    m_view->setModel(m_model);
+    m_view->setItemDelegate(m_delegate);
     auto* top = new QHBoxLayout;
     top->addWidget(m_tabs);
     top->addWidget(m_changedLabel, 1);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(top);
-    layout->addWidget(m_edit, 1);
+    layout->addWidget(m_view, 1);
     connect(m_tabs, &QTabBar::currentChanged, this, [this](int tab) {
         showProgram(tab == kRescheduledTab ? Program::Rescheduled : Program::Original);
     });
-    connect(m_edit, &QPlainTextEdit::cursorPositionChanged, this, &NcListing::onCursorMoved);
+    connect(m_view->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            &NcListing::onCurrentLineChanged);
     clear();
 }
 
@@ -261,22 +286,18 @@ void NcListing::clear() {
 
 void NcListing::setSource(Source source) {
     const std::optional<std::size_t> selected = currentRecord();
-    m_selecting = true; // the documents change under the cursor: nothing was selected
+    m_selecting = true; // the rows change under the current line: nothing was selected
     m_source = std::move(source);
     m_originalStarts = lineStarts(m_source.originalText);
     m_rescheduledStarts = lineStarts(m_source.rescheduledText);
     countChangedBlocks();
-    m_edit->setDocument(nullptr); // an empty document of its own until a program is shown
-    for (QTextDocument*& document : m_documents) {
-        delete std::exchange(document, nullptr);
-    }
     {
         const QSignalBlocker block(m_tabs); // a disabled current tab is not the engineer's choice
         m_tabs->setTabEnabled(kRescheduledTab, hasRescheduled());
     }
     updateChangedLabel();
     m_selecting = false;
-    display(m_preferred);
+    display(m_preferred, true);
     if (selected) {
         selectRecord(*selected);
     }
@@ -329,44 +350,48 @@ std::string_view NcListing::lineText(Program program, int line) const {
                : lineOf(m_source.rescheduledText, m_rescheduledStarts, line);
 }
 
+QString NcListing::lineString(Program program, int line) const {
+    const std::string_view text = lineText(program, line);
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+QString NcListing::lineString(int line) const {
+    return lineString(m_shown, line);
+}
+
+int NcListing::lineCount() const {
+    return m_model->rowCount();
+}
+
 const std::vector<int>& NcListing::shownLines() const {
     return m_shown == Program::Original ? m_source.originalLines : m_source.rescheduledLines;
 }
 
-QTextDocument* NcListing::documentOf(Program program) {
-    QTextDocument*& document = m_documents[program == Program::Original ? 0 : 1];
-    if (document == nullptr) {
-        document = new QTextDocument(this);
-        document->setDocumentLayout(new QPlainTextDocumentLayout(document));
-        document->setUndoRedoEnabled(false); // read-only: no undo history of the whole text
-        document->setDefaultFont(m_edit->font());
-        const std::string& text =
-            program == Program::Original ? m_source.originalText : m_source.rescheduledText;
-        document->setPlainText(QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())));
-    }
-    return document;
-}
-
 void NcListing::showProgram(Program program) {
     m_preferred = program;
-    display(program);
+    display(program, false);
 }
 
-void NcListing::display(Program program) {
+void NcListing::display(Program program, bool newSource) {
     if (program == Program::Rescheduled && !hasRescheduled()) {
         program = Program::Original;
     }
-    if (m_edit->document() == m_documents[program == Program::Original ? 0 : 1]) {
-        return; // shown already
+    if (program == m_shown && !newSource) {
+        return;
     }
-    const std::optional<std::size_t> selected = currentRecord();
+    const std::optional<std::size_t> selected = newSource ? std::nullopt : currentRecord();
     m_shown = program;
     {
         const QSignalBlocker block(m_tabs);
         m_tabs->setCurrentIndex(program == Program::Original ? kOriginalTab : kRescheduledTab);
     }
+    const std::string& text =
+        program == Program::Original ? m_source.originalText : m_source.rescheduledText;
+    const std::vector<std::size_t>& starts =
+        program == Program::Original ? m_originalStarts : m_rescheduledStarts;
+    m_delegate->setWidestLine(widestLine(text, starts));
     m_selecting = true;
-    m_edit->setDocument(documentOf(program));
+    m_model->reset(text.empty() ? 0 : static_cast<int>(starts.size()));
     m_selecting = false;
     if (selected) {
         selectRecord(*selected);
@@ -380,19 +405,19 @@ int NcListing::lineOfRecord(std::size_t record) const {
 
 void NcListing::selectRecord(std::size_t record) {
     const int line = lineOfRecord(record);
-    if (line < 1 || line > m_edit->document()->blockCount()) {
+    if (line < 1 || line > lineCount()) {
         return;
     }
-    // A block off screen comes to the middle, with its neighbours on both sides; one on
-    // screen stays where it is.
+    // A line off screen comes to the middle, with its neighbours on both sides; one on screen
+    // stays where it is.
     const bool visible = isLineVisible(line);
+    const QModelIndex index = m_model->index(line - 1);
     m_selecting = true;
-    m_edit->setTextCursor(QTextCursor(m_edit->document()->findBlockByNumber(line - 1)));
-    if (!visible) {
-        m_edit->centerCursor();
-    }
+    m_view->setCurrentIndex(index);
+    m_view->scrollTo(index, visible ? QAbstractItemView::EnsureVisible
+                                    : QAbstractItemView::PositionAtCenter);
     m_selecting = false;
-    m_edit->viewport()->update();
+    m_view->viewport()->update();
 }
 
 std::optional<std::size_t> NcListing::currentRecord() const {
@@ -407,23 +432,21 @@ std::optional<std::size_t> NcListing::currentRecord() const {
 }
 
 int NcListing::currentLine() const {
-    return m_edit->document()->isEmpty() ? 0 : m_edit->textCursor().blockNumber() + 1;
+    const QModelIndex current = m_view->currentIndex();
+    return current.isValid() ? current.row() + 1 : 0;
 }
 
 bool NcListing::isLineVisible(int line) const {
-    const QTextBlock block = m_edit->document()->findBlockByNumber(line - 1);
-    if (!block.isValid() || !m_edit->isVisible()) {
+    if (line < 1 || line > lineCount() || !m_view->isVisible()) {
         return false;
     }
-    return m_edit->viewport()->rect().contains(m_edit->cursorRect(QTextCursor(block)));
+    const QRect row = m_view->visualRect(m_model->index(line - 1));
+    const QRect area = m_view->viewport()->rect();
+    return row.top() >= area.top() && row.bottom() <= area.bottom();
 }
 
-QPlainTextEdit* NcListing::editor() const {
-    return m_edit;
-}
-
-void NcListing::onCursorMoved() {
-    m_edit->viewport()->update(); // the highlighted block moved
+void NcListing::onCurrentLineChanged() {
+    m_view->viewport()->update(); // the highlighted line moved
     if (m_selecting) {
         return;
     }

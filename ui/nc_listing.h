@@ -4,10 +4,10 @@
 // blocks. A block (line) maps to the record it programs through the records' source lines, so
 // the listing and the other views select the same point.
 //
-// Shop programs have up to a million lines: the texts are held once as bytes, a program's
-// document is made only when it is first shown, and the changed words are found and painted for
-// the visible lines only, while the listing paints (a QSyntaxHighlighter would format every
-// block of the document when it is attached).
+// Shop programs have up to a million lines: the texts are held once as bytes with the offsets
+// of their lines, and a list view asks for the visible lines only; the changed words are found
+// and painted for those lines as they are painted. (A QTextDocument of a million lines takes
+// seconds and about 560 MB to fill, and a QSyntaxHighlighter formats every block of it.)
 
 #include "core/job/job.h"
 
@@ -19,13 +19,13 @@
 #include <vector>
 
 class QLabel;
-class QPlainTextEdit;
+class QListView;
 class QTabBar;
-class QTextDocument;
 
 namespace bladeaxis::ui {
 
-class ListingEdit;
+class ListingModel;
+class ListingDelegate;
 
 class NcListing final : public QWidget {
     Q_OBJECT
@@ -70,30 +70,34 @@ class NcListing final : public QWidget {
     // Whether line `line` (1-based) of the re-scheduled program differs from its original line.
     bool lineChanged(int line) const;
 
-    // Puts the cursor on record `record`'s line of the shown program, scrolled into view and
-    // highlighted, without emitting recordSelected (the caller selected it).
+    // Makes record `record`'s line of the shown program current of the shown program, scrolled into
+    // view and highlighted, without emitting recordSelected (the caller selected it).
     void selectRecord(std::size_t record);
     // The record of the highlighted line; none when that line programs no record.
     std::optional<std::size_t> currentRecord() const;
-    // The highlighted (cursor's) line, 1-based; 0 when empty.
+    // The highlighted (current) line, 1-based; 0 when none.
     int currentLine() const;
+    int lineCount() const;
+    // The text of line `line` (1-based) of the shown program.
+    QString lineString(int line) const;
     // Whether the whole of line `line` of the shown program is inside the visible area.
     bool isLineVisible(int line) const;
     // The line of record `record` in the shown program; 0 when there is none.
     int lineOfRecord(std::size_t record) const;
-    QPlainTextEdit* editor() const;
+    // The list of the shown program's lines, one row per line.
+    QListView* view() const { return m_view; }
     QTabBar* programTabs() const { return m_tabs; }
     QLabel* changedLabel() const { return m_changedLabel; }
 
   signals:
-    // The engineer put the cursor on a line that programs record `record`.
+    // The engineer made a line that programs record `record` current (click, arrow keys).
     void recordSelected(std::size_t record);
 
   private:
     const std::vector<int>& shownLines() const;
-    void display(Program program);
-    QTextDocument* documentOf(Program program);
-    void onCursorMoved();
+    // Shows `program`; `newSource`: its rows are new although it was shown.
+    void display(Program program, bool newSource);
+    void onCurrentLineChanged();
     void countChangedBlocks();
     void updateChangedLabel();
 
@@ -101,19 +105,22 @@ class NcListing final : public QWidget {
     // Per line of the re-scheduled program (index line - 1): the original line it rewrites, 0
     // when none (a line the rewrite inserted, or a line without a record).
     std::vector<int> m_originalLineOf;
-    // Byte offset of each line's start in each text, for comparing lines without documents.
+    // Byte offset of each line's start in each text.
     std::vector<std::size_t> m_originalStarts, m_rescheduledStarts;
     std::size_t m_changedBlocks = 0;
     Program m_shown = Program::Original;
     Program m_preferred = Program::Rescheduled; // the engineer's choice of tab
-    QTextDocument* m_documents[2] = {nullptr, nullptr};
-    bool m_selecting = false; // selectRecord is moving the cursor: no recordSelected
+    bool m_selecting = false; // selectRecord is moving the current line: no recordSelected
     QTabBar* m_tabs = nullptr;
     QLabel* m_changedLabel = nullptr;
-    ListingEdit* m_edit = nullptr;
+    QListView* m_view = nullptr;
+    ListingModel* m_model = nullptr;
+    ListingDelegate* m_delegate = nullptr;
 
-    friend class ListingEdit;
+    friend class ListingModel;
+    friend class ListingDelegate;
     std::string_view lineText(Program program, int line) const;
+    QString lineString(Program program, int line) const;
 };
 
 } // namespace bladeaxis::ui

@@ -13,14 +13,13 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLabel>
-#include <QPlainTextEdit>
+#include <QListView>
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QTabBar>
 #include <QTest>
-#include <QTextBlock>
 #include <algorithm>
 #include <memory>
 #include <sstream>
@@ -50,9 +49,9 @@ std::vector<std::string> linesOf(const std::string& text) {
     return lines;
 }
 
-// The text of the listing's current (highlighted) block.
+// The text of the listing's current (highlighted) line.
 QString currentBlockText(const NcListing& listing) {
-    return listing.editor()->textCursor().block().text();
+    return listing.lineString(listing.currentLine());
 }
 
 } // namespace
@@ -104,10 +103,7 @@ class NcListingTest final : public QObject {
         const auto& result = *m_window->result();
         const std::vector<std::string> original = linesOf(result.programText());
         const std::vector<std::string> rescheduled = linesOf(result.rescheduled->programText);
-        // A final newline ends the document with an empty block.
-        const bool endsWithNewline = result.rescheduled->programText.ends_with('\n');
-        QCOMPARE(listing.editor()->document()->blockCount(),
-                 static_cast<int>(rescheduled.size()) + (endsWithNewline ? 1 : 0));
+        QCOMPARE(listing.lineCount(), static_cast<int>(rescheduled.size()));
         std::size_t changed = 0;
         for (const auto& record : result.program.path().records) {
             const auto line = static_cast<std::size_t>(record.line) - 1;
@@ -138,8 +134,9 @@ class NcListingTest final : public QObject {
         const std::size_t passIndex = result.pass.count / 3;
         const std::size_t record = result.pass.first + passIndex;
         const int line = result.program.path().records[record].line;
-        QPlainTextEdit* edit = m_window->listing()->editor();
-        edit->setTextCursor(QTextCursor(edit->document()->findBlockByNumber(line - 1)));
+        QListView* view = m_window->listing()->view();
+        view->setCurrentIndex(view->model()->index(line - 1, 0)); // as a click or the arrow keys
+        QCOMPARE(m_window->listing()->currentLine(), line);
         QCOMPARE(m_window->selectedRecord(), std::optional<std::size_t>(record));
         QCOMPARE(m_window->toolSlider()->value(), static_cast<int>(passIndex));
         QVERIFY(m_window->view3d()->toolVisible());
@@ -229,10 +226,11 @@ class NcListingTest final : public QObject {
         QCOMPARE(listing.currentRecord(), std::optional<std::size_t>(record));
     }
 
-    // 200,000 blocks: filled, scrolled to the end and painted well within a second or two; the
-    // changed words are found for the visible blocks only, as they are painted.
+    // A million blocks (a large shop program): filled, scrolled to the end and painted within
+    // a few seconds on a loaded machine; the rows and their changed words are made for the
+    // visible lines only, as they are painted.
     void aLargeListingStaysResponsive() {
-        constexpr int kBlocks = 200'000;
+        constexpr int kBlocks = 1'000'000;
         NcListing::Source source;
         source.originalText.reserve(kBlocks * 40);
         source.rescheduledText.reserve(kBlocks * 40);
@@ -254,13 +252,13 @@ class NcListingTest final : public QObject {
         QCoreApplication::processEvents();
         const qint64 fill = clock.restart();
         listing.selectRecord(kBlocks - 10);
-        listing.editor()->viewport()->repaint();
+        listing.view()->viewport()->repaint();
         const qint64 paint = clock.elapsed();
         QVERIFY(listing.isLineVisible(kBlocks - 9));
         QCOMPARE(listing.changedBlockCount(),
                  static_cast<std::size_t>(kBlocks - (kBlocks + 6) / 7));
-        QVERIFY2(fill < 5000, qPrintable(QStringLiteral("filled in %1 ms").arg(fill)));
-        QVERIFY2(paint < 500, qPrintable(QStringLiteral("painted in %1 ms").arg(paint)));
+        QVERIFY2(fill < 3000, qPrintable(QStringLiteral("filled in %1 ms").arg(fill)));
+        QVERIFY2(paint < 300, qPrintable(QStringLiteral("painted in %1 ms").arg(paint)));
     }
 
     // CL data: the listing reads the rewritten program back for its records' lines (an APT

@@ -20,7 +20,7 @@ namespace bladeaxis::ui {
 namespace {
 
 // Behind each changed word, and behind the highlighted line; translucent so that a changed
-// word stays marked on the highlighted block and both read in the dark palette too.
+// word stays marked on the highlighted line and both read in the dark palette too.
 const QColor kChangedWord(255, 170, 0, 120);
 const QColor kCurrentLine(70, 130, 230, 70);
 
@@ -166,7 +166,7 @@ class ListingDelegate final : public QStyledItemDelegate {
                const QModelIndex& index) const override {
         const QString text = index.data().toString();
         const QFontMetricsF metrics(option.font);
-        if (option.state & QStyle::State_HasFocus || index.row() + 1 == m_owner.currentLine()) {
+        if (index.row() + 1 == m_owner.currentLine()) {
             painter->fillRect(option.rect, kCurrentLine);
         }
         const int line = index.row() + 1;

@@ -36,6 +36,7 @@ void JobThread::run() {
     returnFreedHeapToTheSystem();
     SignalProgressSink sink(*this);
     auto showOriginal = [this](const job::JobResult& partial) {
+        m_programText = partial.programText(); // before the rewrite releases it
         job::DisplayScene scene = job::buildDisplayScene(partial);
         {
             const std::lock_guard lock(m_originalMutex);

@@ -10,6 +10,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 
 namespace bladeaxis::ui {
 
@@ -26,6 +27,9 @@ class JobThread final : public QThread {
     job::DisplayScene takeScene() { return std::move(m_scene); }
     // The program as read, for the 3D view while the job goes on; valid after originalReady.
     job::DisplayScene takeOriginalScene();
+    // The input's text as read, for the NC listing: the job frees its own copy once it has
+    // rewritten the program. Valid once finished() was emitted; moved out, so call once.
+    std::string takeProgramText() { return std::move(m_programText); }
 
   signals:
     void progressed(double fraction, QString stage);
@@ -43,6 +47,7 @@ class JobThread final : public QThread {
     job::DisplayScene m_scene;
     std::mutex m_originalMutex;
     job::DisplayScene m_originalScene;
+    std::string m_programText; // written on the job's thread before finished()
 };
 
 } // namespace bladeaxis::ui

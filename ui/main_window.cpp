@@ -185,6 +185,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     m_undo.setUndoLimit(500);
     buildJobSettingsDock();
+    buildListingDock();
     buildFileMenu();
     buildEditMenu();
     buildViewMenu();
@@ -283,7 +284,7 @@ QWidget* MainWindow::build3dPage() {
     m_toolSlider->setToolTip(tr("Scrub along the toolpath: shows the tool (ball and shank) there"));
     m_toolSlider->setEnabled(false);
     connect(m_toolSlider, &QSlider::valueChanged, this,
-            [this](int record) { m_view3d->showToolAt(static_cast<std::size_t>(record)); });
+            [this](int record) { showPassRecord(static_cast<std::size_t>(record)); });
     // Where the tool is, as the engineer reads it: program line, time and A.
     auto* readout = new QLabel(page);
     readout->setMinimumWidth(readout->fontMetrics().horizontalAdvance(
@@ -291,8 +292,9 @@ QWidget* MainWindow::build3dPage() {
     connect(m_view3d, &ToolpathView::positionReadoutChanged, readout, &QLabel::setText);
     // A click on the toolpath selects the point's layer and moves the tool there.
     connect(m_view3d, &ToolpathView::pointPicked, this, [this](std::size_t passIndex) {
-        selectLayer(m_view3d->layerOfRecord(passIndex));
-        m_toolSlider->setValue(static_cast<int>(passIndex));
+        if (m_result) {
+            selectRecord(m_result->pass.first + passIndex);
+        }
     });
     auto* sliderRow = new QHBoxLayout;
     sliderRow->addWidget(m_toolSlider, 1);
@@ -470,6 +472,7 @@ void MainWindow::startJob(job::JobSpec spec, bool reapply, std::optional<RadiusC
 void MainWindow::onJobFinished() {
     Result<job::JobResult> outcome = m_thread->takeResult();
     job::DisplayScene scene = m_thread->takeScene();
+    std::string programText = m_thread->takeProgramText();
     const bool reapply = m_threadIsReapply;
     m_thread->deleteLater();
     m_thread = nullptr;
@@ -533,6 +536,7 @@ void MainWindow::onJobFinished() {
         }
     }
     m_result = std::move(*outcome);
+    showListing(std::move(programText), !reapply);
     showResult(std::move(scene));
     if (!reapply) {
         m_cadPath = QString::fromStdString(m_spec.cad.file.string());
@@ -693,6 +697,7 @@ void MainWindow::showSelectedLayer(int layer) {
         change != nullptr ? scheduling::layerParameters(m_spec.parameters, *change)
                           : m_spec.parameters;
     const auto& scheduled = m_result->rescheduled->schedule.layers[index];
+    showLayerInListing(scheduled.first, scheduled.last);
     m_editor->setLayer(scheduled, parameters);
     m_plots->setHighlightedSpan(
         layerTimeSpan(m_result->rescheduled->profile, scheduled.first, scheduled.last),

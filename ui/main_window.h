@@ -12,7 +12,9 @@
 #include <QMainWindow>
 #include <QUndoStack>
 #include <array>
+#include <cstddef>
 #include <optional>
+#include <string>
 
 class QAction;
 class QDockWidget;
@@ -39,6 +41,7 @@ class ComparisonTable;
 class JobSettingsPanel;
 class JobThread;
 class LayerSettingsPanel;
+class NcListing;
 class ProfilePlots;
 class ReviewDashboard;
 class SectionView;
@@ -133,6 +136,17 @@ class MainWindow final : public QMainWindow {
     // this program (as the batch's --tool-radius does, with its warning).
     void useProgramToolRadius();
     void confirmGivenToolRadius();
+    // The NC listing dock (View > NC listing): the original or re-scheduled program's text.
+    NcListing* listing() const { return m_listing; }
+    QDockWidget* listingDock() const { return m_listingDock; }
+    // Selects record `record` of the program (index into its records) everywhere: its block in
+    // the listing and, for a record of the cutting pass, its layer, the tool slider and the tool
+    // in the 3D view, and the plots' time line. The listing's blocks, the 3D pick and a plot
+    // click select through it.
+    void selectRecord(std::size_t record);
+    // The record selected last (listing, 3D pick, tool slider, plot click or selectRecord);
+    // none after a new program.
+    std::optional<std::size_t> selectedRecord() const { return m_selectedRecord; }
     void setDarkPalette(bool dark);
     int selectedLayer() const;
     void selectLayer(int layer);
@@ -186,6 +200,27 @@ class MainWindow final : public QMainWindow {
     void buildEditMenu();
     void buildViewMenu();
     void buildHelpMenu();
+    void buildListingDock();
+    // The listing of the result on screen; `programText` is the input's text as read.
+    void showListing(std::string programText, bool newProgram);
+    // The pass index of program record `record`; none outside the cutting pass.
+    std::optional<std::size_t> passIndexOf(std::size_t record) const;
+    // The tool slider moved: the tool, the listing and the plots' mark follow.
+    void showPassRecord(std::size_t passIndex);
+    // The listing's block and the plots' time line of the selected record.
+    void markSelectedRecord(std::size_t record);
+    // The profile the plots mark times on: the exported program's (the original's without one).
+    const analysis::AxisProfile& plottedProfile() const;
+    static std::optional<double> timeOfPassRecord(const analysis::AxisProfile& profile,
+                                                  std::size_t passIndex);
+    // The pass record of the analysed sample nearest `seconds`; none without samples.
+    static std::optional<std::size_t> passRecordAtTime(const analysis::AxisProfile& profile,
+                                                       double seconds);
+    // A click on a plot: selects the record at that time of the exported program.
+    void selectPlottedTime(double seconds);
+    // A layer selected in the table: the listing shows its first block, unless the selected
+    // block is one of the layer's (pass records first..last).
+    void showLayerInListing(std::size_t first, std::size_t last);
     void buildToolBar();
     void buildStatusBar();
     void restoreSettings();
@@ -302,7 +337,10 @@ class MainWindow final : public QMainWindow {
     QDockWidget* m_jobSettingsDock = nullptr;
     ToolpathView* m_view3d = nullptr;
     QSlider* m_toolSlider = nullptr;
-    QToolBar* m_view3dBar = nullptr; // the View menu's 3D actions, above the 3D view
+    NcListing* m_listing = nullptr;
+    QDockWidget* m_listingDock = nullptr;
+    std::optional<std::size_t> m_selectedRecord; // program record index
+    QToolBar* m_view3dBar = nullptr;             // the View menu's 3D actions, above the 3D view
     QDoubleSpinBox* m_toolRadius = nullptr;
     QLabel* m_radiusSource = nullptr;
     QWidget* m_radiusBanner = nullptr;

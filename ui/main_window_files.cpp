@@ -143,6 +143,7 @@ void MainWindow::buildEditMenu() {
 void MainWindow::buildViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_jobSettingsDock->toggleViewAction());
+    view->addAction(m_listingDock->toggleViewAction());
     view->addSeparator();
     m_darkAction = view->addAction(tr("&Dark palette"));
     m_darkAction->setCheckable(true);

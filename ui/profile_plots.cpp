@@ -160,6 +160,7 @@ struct PlotOptions {
     std::array<QString, ProfilePlots::kQuantityCount> titles; // with units
     QString logTitle;                              // the A acceleration's title on the log axis
     std::optional<double> cursor;                  // s: the mouse readout's time line
+    std::optional<double> marked;                  // s: the selected point's time line
     bool logAcceleration = false;                  // A acceleration as |a| on a log axis
     std::optional<std::pair<double, double>> span; // s: the selected layer's time span
     QString spanLabel;
@@ -300,15 +301,24 @@ class PlotPainter {
         m_p.setPen(m_palette.color(QPalette::Text));
         m_p.setBrush(Qt::NoBrush);
         m_p.drawRect(plot);
-        if (options.cursor && *options.cursor >= xRange.low && *options.cursor <= xRange.high) {
-            const double x = plot.left() + (*options.cursor - xRange.low) /
-                                               (xRange.high - xRange.low) * plot.width();
-            m_p.setPen(QPen(m_palette.color(QPalette::Text), 1.0, Qt::DotLine));
-            m_p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-        }
+        drawTimeLine(plot, xRange, options.marked,
+                     QPen(m_palette.color(QPalette::Highlight), 1.5, Qt::SolidLine));
+        drawTimeLine(plot, xRange, options.cursor,
+                     QPen(m_palette.color(QPalette::Text), 1.0, Qt::DotLine));
     }
 
   private:
+    void drawTimeLine(const QRectF& plot, const Range& xRange, std::optional<double> time,
+                      const QPen& pen) {
+        if (!time || *time < xRange.low || *time > xRange.high) {
+            return;
+        }
+        const double x =
+            plot.left() + (*time - xRange.low) / (xRange.high - xRange.low) * plot.width();
+        m_p.setPen(pen);
+        m_p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+    }
+
     // The machine's limit: a red dashed line at +limit and -limit (at the limit alone on the
     // log axis of |a|), labelled at its right end.
     void drawLimit(const QRectF& plot, const Range& range, double limit, bool log,
@@ -465,6 +475,7 @@ class PlotCanvas final : public QWidget {
         PlotPainter plotter(painter, palette());
         PlotOptions options;
         options.cursor = m_cursor;
+        options.marked = m_owner.markedTime();
         options.logAcceleration = m_owner.accelerationLogScale();
         options.logFloor = m_owner.accelerationLogFloor();
         options.exported = m_owner.exportedMethod();
@@ -566,14 +577,29 @@ class PlotCanvas final : public QWidget {
     void mousePressEvent(QMouseEvent* event) override {
         if (event->button() == Qt::LeftButton && plotAt(event->position())) {
             m_dragFrom = event->position().x();
+            m_pressedAt = event->position();
         }
     }
 
-    void mouseReleaseEvent(QMouseEvent*) override { m_dragFrom.reset(); }
+    // A release where the press was (a click, not a pan) says the time under it.
+    void mouseReleaseEvent(QMouseEvent* event) override {
+        m_dragFrom.reset();
+        const bool click = event->button() == Qt::LeftButton && m_pressedAt &&
+                           (event->position() - *m_pressedAt).manhattanLength() <= kClickSlopPx;
+        m_pressedAt.reset();
+        if (const auto at = click ? plotAt(event->position()) : std::nullopt) {
+            const auto& [plot, span] = *at;
+            emit m_owner.timeClicked(span.first + (event->position().x() - plot.left()) /
+                                                      plot.width() * (span.second - span.first));
+        }
+    }
+
+    static constexpr double kClickSlopPx = 3.0; // a press and release closer than this: a click
 
     ProfilePlots& m_owner;
     std::optional<double> m_cursor;   // s
     std::optional<double> m_dragFrom; // px: a left drag pans the time axis
+    std::optional<QPointF> m_pressedAt;
 };
 
 } // namespace detail
@@ -788,6 +814,11 @@ void ProfilePlots::setHighlightedSpan(std::optional<std::pair<double, double>> s
                                       const QString& label) {
     m_span = seconds;
     m_spanLabel = label;
+    m_canvas->update();
+}
+
+void ProfilePlots::setMarkedTime(std::optional<double> seconds) {
+    m_marked = seconds;
     m_canvas->update();
 }
 

@@ -99,6 +99,11 @@ class ProfilePlots final : public QWidget {
     std::optional<std::pair<double, double>> highlightedSpan() const { return m_span; }
     QString highlightedSpanLabel() const { return m_spanLabel; }
 
+    // The selected point's time (s, on the exported program's time axis): a solid line in every
+    // plot; nullopt clears it. A click (without a drag) on a plot says its time (timeClicked).
+    void setMarkedTime(std::optional<double> seconds);
+    std::optional<double> markedTime() const { return m_marked; }
+
     // The time span shown (s), none for the whole pass: the wheel zooms it about the mouse, a
     // left drag pans it, "Fit" shows the whole pass again. Kept within the pass.
     void setTimeWindow(std::optional<std::pair<double, double>> seconds);
@@ -113,6 +118,8 @@ class ProfilePlots final : public QWidget {
 
   signals:
     void methodVisibilityChanged(const QString& method, bool visible);
+    // A left click without a drag on a plot, at `seconds` on its time axis.
+    void timeClicked(double seconds);
 
   protected:
     void changeEvent(QEvent* event) override;
@@ -134,6 +141,7 @@ class ProfilePlots final : public QWidget {
     QCheckBox* m_logBox = nullptr;
     bool m_logAcceleration = true;
     std::optional<std::pair<double, double>> m_span;
+    std::optional<double> m_marked;
     std::optional<std::pair<double, double>> m_timeWindow;
     QString m_spanLabel;
     detail::PlotCanvas* m_canvas = nullptr;

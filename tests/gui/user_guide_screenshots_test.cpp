@@ -10,6 +10,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QImage>
 #include <QPainter>
@@ -37,9 +38,9 @@ constexpr QSize kWindowSize(1366, 768);
 constexpr std::size_t kMinimumColours = 16;
 
 // The screenshots this test takes, by file name; docs/user-guide.md must show exactly these.
-constexpr std::array<const char*, 6> kScreenshots = {"gui-main-window.png",    "gui-review.png",
-                                                     "gui-s-theta-editor.png", "gui-axis-plots.png",
-                                                     "gui-comparison.png",     "gui-3d-view.png"};
+constexpr std::array<const char*, 7> kScreenshots = {
+    "gui-main-window.png", "gui-review.png",  "gui-s-theta-editor.png", "gui-axis-plots.png",
+    "gui-comparison.png",  "gui-3d-view.png", "gui-nc-listing.png"};
 
 QString outputFolder() {
     return QStringLiteral(BLADEAXIS_GUI_OUTPUT_DIR "/user-guide");
@@ -138,6 +139,14 @@ class UserGuideScreenshotsTest final : public QObject {
         slider->setValue(slider->maximum() / 2);
         settle();
         saveScreenshot("gui-3d-view.png", grabWithThreeDFrame(*page, *m_window->view3d()));
+    }
+
+    // The listing at a block of the pass, the re-scheduled program's changed words marked.
+    void savesTheNcListingAtABlockOfThePass() {
+        const auto& result = *m_window->result();
+        m_window->selectRecord(result.pass.first + result.pass.count / 2);
+        settle();
+        saveScreenshot("gui-nc-listing.png", m_window->listingDock()->grab().toImage());
     }
 
     void theGuideShowsExactlyTheScreenshotsThisTestSaves() {

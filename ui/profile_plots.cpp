@@ -480,16 +480,13 @@ class PlotCanvas final : public QWidget {
         options.logFloor = m_owner.accelerationLogFloor();
         options.exported = m_owner.exportedMethod();
         for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
-            options.limits[quantity] =
-                m_owner.limitOf(static_cast<ProfilePlots::Quantity>(quantity));
+            const auto which = static_cast<ProfilePlots::Quantity>(quantity);
+            options.limits[quantity] = m_owner.limitOf(which);
+            options.titles[quantity] = m_owner.quantityTitle(which);
         }
         options.window = m_owner.timeWindow();
         options.span = m_owner.highlightedSpan();
         options.spanLabel = m_owner.highlightedSpanLabel();
-        for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
-            options.titles[quantity] =
-                m_owner.quantityTitle(static_cast<ProfilePlots::Quantity>(quantity));
-        }
         options.logTitle = m_owner.logAccelerationTitle();
         for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
             plotter.draw(cellArea(quantity), quantity, m_owner.curves(), options);

@@ -10,23 +10,10 @@
 #include <filesystem>
 #include <sstream>
 
+#include "cli_run.h"
+
 namespace bladeaxis::app {
 namespace {
-
-struct CliRun {
-    int code;
-    std::string out;
-    std::string err;
-};
-
-CliRun run(std::vector<std::string> arguments, const std::string& standardInput = {}) {
-    arguments.insert(arguments.begin(), "bladeaxis");
-    std::ostringstream out;
-    std::ostringstream err;
-    std::istringstream in(standardInput);
-    const int code = runBatchCommandLine(arguments, out, err, in);
-    return {code, out.str(), err.str()};
-}
 
 std::string demoProgramText() {
     const auto folder = std::filesystem::temp_directory_path() / "bladeaxis_pipe";

@@ -14,26 +14,13 @@
 #include <filesystem>
 #include <sstream>
 
+#include "cli_run.h"
+
 namespace bladeaxis::app {
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
-
-struct CliRun {
-    int code;
-    std::string out;
-    std::string err;
-};
-
-CliRun run(std::vector<std::string> arguments, const std::string& standardInput = {}) {
-    arguments.insert(arguments.begin(), "bladeaxis");
-    std::ostringstream out;
-    std::ostringstream err;
-    std::istringstream in(standardInput);
-    const int code = runBatchCommandLine(arguments, out, err, in);
-    return {code, out.str(), err.str()};
-}
 
 fs::path freshFolder(const std::string& name) {
     const fs::path folder = fs::temp_directory_path() / name;

@@ -12,25 +12,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli_run.h"
+
 namespace bladeaxis::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliRun {
-    int code;
-    std::string out;
-    std::string err;
-};
-
-CliRun run(std::vector<std::string> arguments) {
-    arguments.insert(arguments.begin(), "bladeaxis");
-    std::ostringstream out;
-    std::ostringstream err;
-    std::istringstream in;
-    const int code = runBatchCommandLine(arguments, out, err, in);
-    return {code, out.str(), err.str()};
-}
 
 void writeFile(const fs::path& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;

@@ -10,24 +10,12 @@
 #include <filesystem>
 #include <sstream>
 
+#include "cli_run.h"
+
 namespace bladeaxis::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliRun {
-    int code;
-    std::string err;
-};
-
-CliRun run(std::vector<std::string> arguments) {
-    arguments.insert(arguments.begin(), "bladeaxis");
-    std::ostringstream out;
-    std::ostringstream err;
-    std::istringstream in;
-    const int code = runBatchCommandLine(arguments, out, err, in);
-    return {code, err.str()};
-}
 
 // A generated two-revolution program (`format` apt or gcode) whose ball statement is replaced.
 fs::path programStating(const std::string& name, const std::string& format,

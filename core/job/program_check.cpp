@@ -145,8 +145,9 @@ std::string helicalAdvice(RotaryLetters letters, AngleWordsRead angles) {
                "--angle-unit rad; " +
                machine;
     case AngleWordsRead::GivenRadians:
-        return "--angle-unit rad read " + words + " as radians: check that they are, and " +
-               machine.substr(6);
+        return "--angle-unit rad read " + words +
+               " as radians: check that they are, and that the machine file's rotary axis is "
+               "the program's";
     }
     return machine;
 }

@@ -219,18 +219,7 @@ TEST(BatchCli, GougingOutputIsRefusedNamingTheLineUnlessForced) {
     fs::remove_all(dir);
     ASSERT_EQ(run({"--batch", "--demo", "--out", dir.string()}).code, kExitOk);
     const fs::path output = dir / "out.nc";
-    const std::vector<std::string> arguments{"--batch",
-                                             (dir / "demo_blade.nc").string(),
-                                             "--tool-radius",
-                                             "8",
-                                             "--cad",
-                                             (dir / "demo_blade.step").string(),
-                                             "--cad-translate",
-                                             "0",
-                                             "0",
-                                             "0.3",
-                                             "-o",
-                                             output.string()};
+    const std::vector<std::string> arguments = gougingDemoArguments(dir, output.string());
     const CliRun refused = run(arguments);
     EXPECT_EQ(refused.code, kExitGeometry) << refused.err;
     EXPECT_FALSE(fs::exists(output));

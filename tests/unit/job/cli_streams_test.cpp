@@ -142,18 +142,7 @@ TEST(CliStreams, ClDataGoToStandardOutputWithTheSummaryOnStandardError) {
 TEST(CliStreams, AGougingProgramIsNotWrittenToStandardOutputEither) {
     const fs::path dir = freshFolder("bladeaxis_cli_gouge_stdout");
     ASSERT_EQ(run({"--batch", "--demo", "--out", dir.string()}).code, kExitOk);
-    std::vector<std::string> arguments{"--batch",
-                                       (dir / "demo_blade.nc").string(),
-                                       "--tool-radius",
-                                       "8",
-                                       "--cad",
-                                       (dir / "demo_blade.step").string(),
-                                       "--cad-translate",
-                                       "0",
-                                       "0",
-                                       "0.3",
-                                       "-o",
-                                       "-"};
+    std::vector<std::string> arguments = gougingDemoArguments(dir, "-");
     const CliRun refused = run(arguments);
     EXPECT_EQ(refused.code, kExitGeometry) << refused.err;
     EXPECT_TRUE(refused.out.empty());

@@ -378,6 +378,17 @@ struct LineCase {
     std::string expected; // the whole "file:line: kind: path: ..." prefix
 };
 
+// The line-by-line machine with the case's edit is refused with the case's message, from the
+// start of the message (file:line first).
+void expectRefusedAsCaseSays(const LineCase& c) {
+    const auto machine =
+        parseMachineJson(replacedOnLine(lineByLineMachine(), c.line, c.from, c.to), "m.json");
+    ASSERT_FALSE(machine.has_value()) << c.expected;
+    EXPECT_EQ(machine.error().code, ErrorCode::MachineFile);
+    EXPECT_EQ(machine.error().toString().rfind(c.expected, 0), 0U)
+        << "expected: " << c.expected << "\n     got: " << machine.error().toString();
+}
+
 // Each bad value is put on a known line; the error names that line, not the first line that
 // holds the same key in another object.
 TEST(MachineFileLines, EachErrorNamesTheLineOfItsValue) {
@@ -396,12 +407,7 @@ TEST(MachineFileLines, EachErrorNamesTheLineOfItsValue) {
         {8, "\"b_sign\": 1", "\"b_sign\": 3", "m.json:8: machine file error: kinematics.b_sign"},
     };
     for (const LineCase& c : cases) {
-        const auto machine =
-            parseMachineJson(replacedOnLine(lineByLineMachine(), c.line, c.from, c.to), "m.json");
-        ASSERT_FALSE(machine.has_value()) << c.expected;
-        EXPECT_EQ(machine.error().code, ErrorCode::MachineFile);
-        EXPECT_EQ(machine.error().toString().rfind(c.expected, 0), 0U)
-            << "expected: " << c.expected << "\n     got: " << machine.error().toString();
+        expectRefusedAsCaseSays(c);
     }
 }
 
@@ -449,12 +455,7 @@ TEST(MachineFileLines, AnUnknownKeyInEveryObjectIsRefusedAtItsLineWithTheNearest
          "m.json:47: machine file error: axes.B.mode: unknown key in a machine file"},
     };
     for (const LineCase& c : cases) {
-        const auto machine =
-            parseMachineJson(replacedOnLine(lineByLineMachine(), c.line, c.from, c.to), "m.json");
-        ASSERT_FALSE(machine.has_value()) << c.expected;
-        EXPECT_EQ(machine.error().code, ErrorCode::MachineFile);
-        EXPECT_EQ(machine.error().toString().rfind(c.expected, 0), 0U)
-            << "expected: " << c.expected << "\n     got: " << machine.error().toString();
+        expectRefusedAsCaseSays(c);
     }
 }
 

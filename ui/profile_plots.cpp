@@ -497,27 +497,19 @@ class PlotCanvas final : public QWidget {
         const QPointF position = event->position();
         if (m_dragFrom && (event->buttons() & Qt::LeftButton)) {
             if (const auto at = plotAt(position)) {
-                const auto& [plot, span] = *at;
-                m_owner.panTime(-(position.x() - *m_dragFrom) / plot.width() *
-                                (span.second - span.first));
+                m_owner.panTime(-(position.x() - *m_dragFrom) / at->plot.width() *
+                                (at->span.second - at->span.first));
                 m_dragFrom = position.x();
             }
         }
-        const double duration = visibleDuration(m_owner.curves());
-        const std::pair<double, double> span =
-            m_owner.timeWindow().value_or(std::pair{0.0, duration});
-        for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
-            const QRectF plot = plotRect(cellArea(quantity), QFontMetricsF(font()));
-            if (span.second > span.first && plot.contains(position)) {
-                m_cursor = span.first +
-                           (position.x() - plot.left()) / plot.width() * (span.second - span.first);
-                QToolTip::showText(
-                    event->globalPosition().toPoint(),
-                    m_owner.valuesAt(*m_cursor, static_cast<ProfilePlots::Quantity>(quantity)),
-                    this);
-                update();
-                return;
-            }
+        if (const auto at = plotAt(position)) {
+            m_cursor = at->timeAt(position.x());
+            QToolTip::showText(
+                event->globalPosition().toPoint(),
+                m_owner.valuesAt(*m_cursor, static_cast<ProfilePlots::Quantity>(at->quantity)),
+                this);
+            update();
+            return;
         }
         clearCursor();
     }
@@ -543,15 +535,26 @@ class PlotCanvas final : public QWidget {
         }
     }
 
-    // The plot under `position` and the time span it shows, none outside every plot.
-    std::optional<std::pair<QRectF, std::pair<double, double>>> plotAt(QPointF position) const {
+    // A plot under the mouse: its rectangle, the time span it shows and its quantity.
+    struct PlotHit {
+        QRectF plot;
+        std::pair<double, double> span; // s
+        int quantity = 0;
+        // The time at pixel column `x` of the plot.
+        double timeAt(double x) const {
+            return span.first + (x - plot.left()) / plot.width() * (span.second - span.first);
+        }
+    };
+
+    // The plot under `position`, none outside every plot.
+    std::optional<PlotHit> plotAt(QPointF position) const {
         const double duration = visibleDuration(m_owner.curves());
         const std::pair<double, double> span =
             m_owner.timeWindow().value_or(std::pair{0.0, duration});
         for (int quantity = 0; quantity < ProfilePlots::kQuantityCount; ++quantity) {
             const QRectF plot = plotRect(cellArea(quantity), QFontMetricsF(font()));
             if (span.second > span.first && plot.contains(position)) {
-                return std::pair{plot, span};
+                return PlotHit{plot, span, quantity};
             }
         }
         return std::nullopt;
@@ -564,10 +567,8 @@ class PlotCanvas final : public QWidget {
             event->ignore();
             return;
         }
-        const auto& [plot, span] = *at;
-        const double time = span.first + (event->position().x() - plot.left()) / plot.width() *
-                                             (span.second - span.first);
-        m_owner.zoomTime(event->angleDelta().y() > 0 ? 0.8 : 1.25, time);
+        m_owner.zoomTime(event->angleDelta().y() > 0 ? 0.8 : 1.25,
+                         at->timeAt(event->position().x()));
         event->accept();
     }
 
@@ -585,9 +586,7 @@ class PlotCanvas final : public QWidget {
                            (event->position() - *m_pressedAt).manhattanLength() <= kClickSlopPx;
         m_pressedAt.reset();
         if (const auto at = click ? plotAt(event->position()) : std::nullopt) {
-            const auto& [plot, span] = *at;
-            emit m_owner.timeClicked(span.first + (event->position().x() - plot.left()) /
-                                                      plot.width() * (span.second - span.first));
+            emit m_owner.timeClicked(at->timeAt(event->position().x()));
         }
     }
 

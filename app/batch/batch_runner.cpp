@@ -236,12 +236,10 @@ int runAnalyse(const BatchOptions& options, CancelToken& cancel, std::istream& i
     if (programToStdout) {
         spec.outputProgram.clear();
     }
-    // Nothing reads the program after it is written, nor the input's text but the rewrite: the
-    // one goes to its file as the job runs, the other is read again from its file. Nor are the
-    // samples the figures are taken from, but by the outputs the job keeps them for itself.
-    spec.stageOutputProgram = true;
-    spec.dropInputText = true;
-    spec.releaseSamplesOnceRead = !clToStdout; // CL data are made from the kept tool axes
+    // Nothing reads the result after its outputs are written but the summary: the job keeps what
+    // those outputs need and frees the rest (job::retentionOf). CL data to the standard output
+    // are made from the result once the job has run.
+    spec.detail = clToStdout ? job::ResultDetail::PerSample : job::ResultDetail::Figures;
     if (clToStdout) {
         spec.outputCl.clear();
     }

@@ -6,12 +6,12 @@
 #include "core/analysis/time_optimal_sweep.h"
 #include "core/base/file_io.h"
 #include "core/base/free_storage.h"
-#include "core/base/memory_policy.h"
 #include "core/base/number_io.h"
 #include "core/blade/presets.h"
 #include "core/cad/blade_surface.h"
 #include "core/geometry/angles.h"
 #include "core/job/demo_program.h"
+#include "core/job/job_stages.h"
 #include "core/job/output_paths.h"
 #include "core/job/tool_radius.h"
 #include "core/kinematics/kinematics.h"
@@ -104,35 +104,12 @@ Result<std::vector<kinematics::MachineAxes>> passAxes(std::span<const ClRecord> 
     return axes;
 }
 
-// A stage's share [from, to] of a job's progress. What the stage reports within it reaches the
-// sink only when the whole percent or the stage's text changes: a large read reports about a
-// thousand times.
-class ProgressShare {
-  public:
-    ProgressShare(ProgressSink& sink, double from, double to)
-        : m_sink(sink), m_from(from), m_to(to) {}
-
-    void report(double done, std::string_view stage) {
-        const double fraction = m_from + std::clamp(done, 0.0, 1.0) * (m_to - m_from);
-        const int percent = static_cast<int>(std::floor(100.0 * fraction));
-        if (percent == m_shownPercent && stage == m_shownStage) {
-            return;
-        }
-        m_shownPercent = percent;
-        m_shownStage = stage;
-        m_sink.progress(fraction, stage);
-    }
-
-  private:
-    ProgressSink& m_sink;
-    double m_from, m_to;
-    int m_shownPercent = -1;
-    std::string m_shownStage;
-};
+} // namespace
 
 // The program read and parsed: the document keeps the one copy of the text the writer needs,
-// or with spec.dropInputText none (the rewrite reads the file again).
-Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::MachineModel& machine,
+// or without keep.inputTextInMemory none (the rewrite reads the file again).
+Result<io::LoadedProgram> loadInput(const JobSpec& spec, const Retention& keep,
+                                    const kinematics::MachineModel& machine,
                                     std::optional<double>& toolRadius, const io::ReadWatch& watch) {
     if (spec.demo) {
         auto demo = demoProgram(machine);
@@ -151,7 +128,7 @@ Result<io::LoadedProgram> loadInput(const JobSpec& spec, const kinematics::Machi
     // The file as it was before and after its text was read: the same file, unchanged, is the
     // one a dropped text can be read again from.
     std::optional<FileSnapshot> before;
-    if (spec.dropInputText) {
+    if (!keep.inputTextInMemory) {
         if (auto snapshot = snapshotOf(spec.program)) {
             before = std::move(*snapshot);
         }
@@ -185,6 +162,7 @@ Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel
                          "move of the pass",
                          {result.program.path().sourceFile, pass.front().line, 0});
     }
+    result.pass.toolTip = *toolTip;
     auto axes = passAxes(pass, result.machine, *toolTip, result.program.path().sourceFile);
     if (!axes) {
         return std::unexpected(axes.error());
@@ -220,6 +198,8 @@ Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel
     return {};
 }
 
+namespace {
+
 // A CAD model is placed in the program's workpiece frame; on a machine whose table turns about
 // Y the engine's frame is that one turned a quarter turn about Z (MachineModel::toEngineFrame).
 cad::Placement placementInEngineFrame(const cad::Placement& placement,
@@ -239,6 +219,8 @@ Result<cad::CadShape> bladeShape(const JobSpec& spec, const kinematics::MachineM
     }
     return cad::makeBladeSurface(*blade);
 }
+
+} // namespace
 
 // Why the file gave no radius, in the words of its format.
 std::string radiusSourceHint(io::ProgramFormat format) {
@@ -279,14 +261,6 @@ Status checkToolRadius(std::optional<double> radius, const toolpath::Toolpath& p
 
 bool checksCad(const JobSpec& spec) {
     return !spec.cad.file.empty() || spec.demo;
-}
-
-// Whether the job frees the samples its figures are taken from once taken: when asked, and
-// when none of its own later readers (the comparison, the CAD check, axes.csv and layers.csv)
-// needs them.
-bool releasesSamples(const JobSpec& spec) {
-    return spec.releaseSamplesOnceRead && !spec.compare && !checksCad(spec) &&
-           spec.outputDir.empty();
 }
 
 // The check's spec with the tool it will use, validated before any scheduling: a tool the check
@@ -360,6 +334,8 @@ Status cadCheckInto(JobResult& result, const JobSpec& spec, const CadCheckSpec& 
     return {};
 }
 
+namespace {
+
 // The pass, its axes, the radius and the analysis every method is evaluated with.
 compare::EvaluationContext evaluationContext(const JobResult& result, const JobSpec& spec) {
     compare::EvaluationContext context;
@@ -372,6 +348,8 @@ compare::EvaluationContext evaluationContext(const JobResult& result, const JobS
     context.analysis.toolRadius = context.toolRadius;
     return context;
 }
+
+} // namespace
 
 Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
     if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
@@ -403,16 +381,18 @@ Status compareInto(JobResult& result, const JobSpec& spec, const CancelToken& ca
     return {};
 }
 
-std::span<ClRecord> mutablePass(JobResult& result) {
-    return std::span(result.program.mutablePath().records)
-        .subspan(result.pass.first, result.pass.count);
-}
-
 // The program's letters of the table and the tilt and the tilt's sign, for the program checks'
 // messages.
 RotaryLetters rotaryLetters(const kinematics::MachineModel& machine) {
     return {machine.letter(kinematics::AxisId::A), machine.letter(kinematics::AxisId::B),
             machine.programWord(kinematics::AxisId::B).sign};
+}
+
+namespace {
+
+std::span<ClRecord> mutablePass(JobResult& result) {
+    return std::span(result.program.mutablePath().records)
+        .subspan(result.pass.first, result.pass.count);
 }
 
 AngleWordsRead angleWordsRead(const io::LoadedProgram& program, const io::ReadOptions& read) {
@@ -435,6 +415,8 @@ std::string analysisOnlyNote(const Error& refusal) {
     }
     return note + "; the analysis's figures take the program as read";
 }
+
+} // namespace
 
 // The four-axis condition on B before scheduling: a re-scheduling job refuses a varying tilt
 // (nothing would be right about the written program), an analysis only reports it. Noise within
@@ -479,141 +461,6 @@ Status checkTilt(JobResult& result, const JobSpec& spec, ProgressSink& progress)
     return {};
 }
 
-// What a job that releases its samples keeps of the pass's machine axes once the input is
-// analysed: the A of each record, for the layers' reversals. The input's figures are taken
-// (its lost motion among them), T2 reads no positions, and the re-scheduling starts from A's
-// first value: the machine axes (40 bytes per record) go before the scheduling.
-std::vector<double> releasePassAxes(JobResult& result, bool keepA) {
-    std::vector<double> a;
-    if (keepA) {
-        a.reserve(result.axes->size());
-        for (const kinematics::MachineAxes& axes : *result.axes) {
-            a.push_back(axes.a);
-        }
-    }
-    result.axes.reset();
-    result.original.recordAxes.reset();
-    return a;
-}
-
-// The input's T2 into the result, unless already there. A job that releases its samples awaits
-// it before it frees them, and before the scheduling's channel stage: on five million blocks T2's
-// own arrays (16-24 bytes per sample) beside the tangents and curvature took the peak above 1.5 GB
-// when T2 was slow.
-void waitForInputT2(JobResult& result,
-                    std::future<std::optional<analysis::ConvergedTime>>& timeOptimal) {
-    if (timeOptimal.valid()) {
-        result.timeOptimal = timeOptimal.get();
-    }
-}
-
-// Once the pass is split into layers, before they are scheduled: the input's side of the
-// layers' motion, the last reading of the input profile's derivatives and the pass's axes but
-// for the input's T2 (`timeOptimal`, running since the input was analysed). A job that
-// releases its samples waits for T2 and frees them here, before the scheduling's memory peaks.
-void takeInputLayerMotion(JobResult& result, const JobSpec& spec,
-                          std::span<const scheduling::LayerBounds> layers,
-                          std::vector<double>& passA,
-                          std::future<std::optional<analysis::ConvergedTime>>& timeOptimal) {
-    result.layerMotionBefore = result.axes
-                                   ? report::layerAxisMotion(layers, result.original, *result.axes)
-                                   : report::layerAxisMotion(layers, result.original, passA);
-    freeStorage(passA);
-    if (releasesSamples(spec)) {
-        waitForInputT2(result, timeOptimal);
-        result.original.releaseSampleData();
-        returnFreedHeapToTheSystem();
-    }
-}
-
-// Once the schedule is made, before the new motion is: the input's orientation checked against
-// the layers' channels, the last reading of the layers' curves, which a job that releases its
-// samples frees here.
-Status checkScheduledLayers(JobResult& result, const JobSpec& spec,
-                            scheduling::ScheduleResult& schedule) {
-    const std::span<const ClRecord> pass =
-        std::span(result.program.path().records).subspan(result.pass.first, result.pass.count);
-    Status orientation = checkOrientationInChannel(schedule, pass, result.program.path().sourceFile,
-                                                   spec.check, rotaryLetters(result.machine));
-    if (releasesSamples(spec)) {
-        scheduling::releaseLayerSamples(schedule);
-        // A layer's curves are small blocks the C library would keep for later.
-        returnFreedHeapToTheSystem();
-    }
-    return orientation;
-}
-
-Status rescheduleInto(JobResult& result, const JobSpec& spec, ProgressSink& progress,
-                      const CancelToken& cancel,
-                      std::future<std::optional<analysis::ConvergedTime>>& timeOptimal,
-                      std::vector<double>& passA) {
-    if (!result.toolRadius || !(*result.toolRadius > 0.0)) {
-        return makeError(ErrorCode::InvalidArgument,
-                         "the ball radius is not known: give --tool-radius (" +
-                             radiusSourceHint(result.program.format()) + ")",
-                         {result.program.path().sourceFile});
-    }
-    RescheduleInput input;
-    input.program = &result.program;
-    input.machine = &result.machine;
-    input.passFirst = result.pass.first;
-    input.passCount = result.pass.count;
-    input.startA = result.axes ? result.axes->front().a : passA.front();
-    // The CL output is made from them once the job has run.
-    input.releaseNewToolAxes = releasesSamples(spec) && spec.outputCl.empty();
-    input.toolRadius = result.toolRadius.value_or(0.0);
-    input.parameters = spec.parameters;
-    input.layerEdits = spec.layerEdits;
-    input.analysis = spec.analysis;
-    input.analysis.toolRadius = input.toolRadius;
-    // The new motion's axes are differentiated beside the one-threaded re-read check and then
-    // alone: on every core, as the input's are (the figures do not depend on the threads).
-    input.analysis.threads = spec.parameters.threads;
-    input.analysis.blockTimes =
-        passIsBlockTimed(result.program, result.pass.first, result.pass.count);
-    // Nothing reads the input's text after the rewrite but a demo's outputs, which write the
-    // generated program (demo_blade.nc).
-    if (!spec.demo) {
-        input.rewritten = [&program = result.program] { program.releaseRewriteSources(); };
-        input.rewrittenUpTo = [&program = result.program](std::size_t textEnd,
-                                                          std::size_t blockEnd) {
-            program.releaseRewriteSourcesBefore(textEnd, blockEnd);
-        };
-    }
-    if (spec.stageOutputProgram && !spec.outputProgram.empty() &&
-        StagedFile::isStageable(spec.outputProgram)) {
-        auto staged = StagedFile::open(spec.outputProgram, protectedInputsOf(spec));
-        if (!staged) {
-            return std::unexpected(staged.error());
-        }
-        input.stagedProgram = std::make_shared<StagedFile>(std::move(*staged));
-    }
-    // The input's orientation is checked against the channel as soon as the schedule is made;
-    // its refusal still comes after the re-scheduling's own.
-    Status orientationInChannel;
-    if (releasesSamples(spec)) {
-        input.planePathMade = [&] { waitForInputT2(result, timeOptimal); };
-    }
-    input.layersSplit = [&](std::span<const scheduling::LayerBounds> layers) {
-        takeInputLayerMotion(result, spec, layers, passA, timeOptimal);
-    };
-    input.scheduled = [&](scheduling::ScheduleResult& schedule) {
-        orientationInChannel = checkScheduledLayers(result, spec, schedule);
-    };
-    ProgressShare rescheduling(progress, 0.5, 0.65);
-    input.stageStarted = [&rescheduling](double done, std::string_view stage) {
-        rescheduling.report(done, stage);
-    };
-    auto outcome = reschedule(input, cancel);
-    if (!outcome) {
-        return std::unexpected(outcome.error());
-    }
-    result.rescheduled = std::move(*outcome);
-    return orientationInChannel;
-}
-
-} // namespace
-
 Status appendEditedMethod(JobResult& result, const JobSpec& spec) {
     if (!result.comparison) {
         return {};
@@ -636,138 +483,6 @@ Status appendEditedMethod(JobResult& result, const JobSpec& spec) {
     }
     methods.push_back(std::move(*edited));
     return {};
-}
-
-Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel) {
-    return runJob(spec, progress, cancel, {});
-}
-
-Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel,
-                         const OriginalReadyHook& originalReady) {
-    const auto start = std::chrono::steady_clock::now();
-    // Before anything runs: outputs that would overwrite each other or an input.
-    if (auto refused = refuseSharedPaths(spec); !refused) {
-        return std::unexpected(refused.error());
-    }
-    progress.progress(0.0, "loading the machine");
-    auto machine = loadMachine(spec);
-    if (!machine) {
-        return std::unexpected(machine.error());
-    }
-    const std::string_view readingStage =
-        spec.demo ? "generating the demo blade program" : "reading the program";
-    ProgressShare reading(progress, 0.05, 0.3);
-    reading.report(0.0, readingStage);
-    const io::ReadWatch watch{.cancel = &cancel,
-                              .progress = [&](double read) { reading.report(read, readingStage); }};
-    std::optional<double> generatedRadius;
-    auto program = loadInput(spec, *machine, generatedRadius, watch);
-    if (!program) {
-        return std::unexpected(program.error());
-    }
-    if (auto status = checkCancelled(cancel); !status) {
-        return std::unexpected(status.error());
-    }
-    JobResult result{.machine = *machine,
-                     .program = std::move(*program),
-                     .toolRadius = std::nullopt,
-                     .pass = {},
-                     .axes = {},
-                     .original = {},
-                     .constantFeed = {},
-                     .timeOptimal = std::nullopt,
-                     .blockByBlock = {},
-                     .originalInterpolation = std::nullopt,
-                     .layerMotionBefore = {},
-                     .originalLostMotion = {},
-                     .rescheduled = std::nullopt,
-                     .comparison = std::nullopt,
-                     .cadCheck = std::nullopt,
-                     .warnings = {},
-                     .seconds = 0.0};
-    result.warnings = result.program.path().warnings;
-    if (auto status =
-            checkStatedCutter(result.program, spec.toolRadius, spec.reschedule, result.warnings);
-        !status) {
-        return std::unexpected(status.error());
-    }
-    result.toolRadius = jobToolRadius(spec, generatedRadius, result.program, result.warnings);
-    if (auto status = checkToolRadius(result.toolRadius, result.program.path()); !status) {
-        return std::unexpected(status.error());
-    }
-    for (const std::string& warning : result.warnings) {
-        progress.warning(warning);
-    }
-    std::optional<CadCheckSpec> cadSpec;
-    if (checksCad(spec)) {
-        auto checked = cadCheckSpec(spec, result.toolRadius);
-        if (!checked) {
-            return std::unexpected(checked.error());
-        }
-        cadSpec = std::move(*checked);
-    }
-    progress.progress(0.3, "analysing the original axis motion");
-    const std::size_t warningsBeforeAnalysis = result.warnings.size();
-    if (auto status = analyse(result, spec, cancel); !status) {
-        return std::unexpected(status.error());
-    }
-    // Now, not only in the summary: a refused output prints no summary.
-    for (std::size_t i = warningsBeforeAnalysis; i < result.warnings.size(); ++i) {
-        progress.warning(result.warnings[i]);
-    }
-    std::vector<double> passA =
-        releasesSamples(spec) ? releasePassAxes(result, spec.reschedule) : std::vector<double>{};
-    // T2 needs only the input's profile, which nothing changes from here on: it runs beside the
-    // tilt check and the re-scheduling. The future is declared after the result, so an early
-    // return waits for it before the result goes.
-    auto timeOptimal = std::async(std::launch::async, [&result, &cancel] {
-        return analysis::convergedTimeOptimalOrNone(result.original, result.machine, &cancel);
-    });
-    if (originalReady) {
-        originalReady(result);
-    }
-    if (auto status = checkCancelled(cancel); !status) {
-        return std::unexpected(status.error());
-    }
-    if (auto status = checkTilt(result, spec, progress); !status) {
-        return std::unexpected(status.error());
-    }
-    if (spec.reschedule) {
-        if (auto status = rescheduleInto(result, spec, progress, cancel, timeOptimal, passA);
-            !status) {
-            return std::unexpected(status.error());
-        }
-        for (const std::string& warning : result.rescheduled->schedule.warnings) {
-            progress.warning(warning);
-            result.warnings.push_back(warning);
-        }
-    }
-    waitForInputT2(result, timeOptimal); // unless a job that released its samples took it
-    // A T2 cut short by the token is none, not a path the limits cannot move along.
-    if (auto status = checkCancelled(cancel); !status) {
-        return std::unexpected(status.error());
-    }
-    if (cadSpec) {
-        progress.progress(0.65, spec.demo && spec.cad.file.empty()
-                                    ? "checking the tool against the demo blade's surface"
-                                    : "checking the tool against the blade CAD");
-        if (auto status = cadCheckInto(result, spec, *cadSpec, progress); !status) {
-            return std::unexpected(status.error());
-        }
-    }
-    if (spec.compare) {
-        progress.progress(0.7, "comparing with the other methods");
-        if (auto status = compareInto(result, spec, cancel); !status) {
-            return std::unexpected(status.error());
-        }
-        if (auto status = appendEditedMethod(result, spec); !status) {
-            return std::unexpected(status.error());
-        }
-    }
-    result.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    progress.progress(1.0, "done");
-    return result;
 }
 
 } // namespace bladeaxis::job

@@ -24,6 +24,8 @@
 
 namespace bladeaxis::job {
 
+enum class ResultDetail { Figures, PerSample };
+
 struct JobSpec {
     std::filesystem::path program; // input NC or CL file; ignored when demo is set
     // The program's bytes when they do not come from the file `program` names (standard input
@@ -46,38 +48,27 @@ struct JobSpec {
     // applied on every run; a key-point edit the layer's channel refuses fails the job.
     std::vector<scheduling::LayerOverride> layerEdits;
     std::filesystem::path outputProgram; // the re-scheduled program; empty: not written
-    // Write the re-scheduled program beside outputProgram while the job runs (an unnamed file
-    // until writeJobOutputs moves it into place) instead of keeping its text in memory: the
-    // batch front end, which writes the program and nothing reads it after. The result's
-    // programText is then empty (RescheduleOutcome::writtenText reads the file). Ignored when
-    // outputProgram is empty or cannot be staged (a pipe, a device).
-    bool stageOutputProgram = false;
-    // Free the input's text once it is parsed and have the rewrite read it again from its file
-    // (a G-code program read from a file; the rewrite refuses a file written since): the batch
-    // front end, where nothing else reads the text. About 61 bytes per block less while the
-    // program is scheduled. The result's programText is then empty.
-    bool dropInputText = false;
-    // Free the per-sample data the job takes its figures from once it has taken them, before
-    // the new motion is made and analysed: the schedule's layer curves once the input's
-    // orientation is checked against them (scheduling::releaseLayerSamples, 72 bytes per
-    // record), the input profile's samples (AxisProfile::releaseSampleData, 16 bytes per record
-    // and moving axis, and 12) once its T2 and its layers' motion are taken, the pass's machine
-    // axes but A (40 bytes) once the input is analysed, and the schedule's new tool axes (24)
-    // once the new motion is analysed, unless a CL output is made from them. The batch front
-    // end, where nothing else reads them. The job keeps them all the same when it compares
-    // methods, checks CAD or writes axes.csv and layers.csv (outputDir), which read them.
-    bool releaseSamplesOnceRead = false;
-    std::filesystem::path outputCl; // the re-scheduled toolpath as CL data (APT); empty: none
+    std::filesystem::path outputCl;      // the re-scheduled toolpath as CL data (APT); empty: none
     CadCheckSpec cad; // blade CAD for the clearance check (the demo uses its own surface)
     std::filesystem::path outputDir; // report.json, axes.csv (and the demo program); empty: none
     std::filesystem::path jobFile;   // the job file this spec was read from, if any
+    // What the caller reads of the result besides the outputs named above: the figures alone
+    // (the batch front end, which writes its outputs and ends) or every per-sample array too
+    // (the window's plots, editor and export; the API). The job keeps what this and the named
+    // outputs need (retentionOf) and frees the rest once read for the last time.
+    ResultDetail detail = ResultDetail::PerSample;
 };
+
+// What a job keeps of what its stages make, decided once from its spec: per-sample data that
+// no asked-for output reads goes as soon as the figures are taken from it.
+Retention retentionOf(const JobSpec& spec);
 
 // The part of the program that is analysed: the longest run of consecutive feed records (the
 // helical cutting pass); rapids and short feed moves around it are counted but not analysed.
 struct CuttingPass {
     std::size_t first = 0;
     std::size_t count = 0;
+    bool toolTip = false; // programmed as the tool tip in the workpiece frame (TRAORI, M128)
 };
 
 struct JobResult {
@@ -86,7 +77,7 @@ struct JobResult {
     std::optional<double> toolRadius; // mm, from the spec or the file
     CuttingPass pass;
     // Per record of the pass, A continuous; shared with the original profile, which reads its
-    // positions from them. Null once a job released them (JobSpec::releaseSamplesOnceRead).
+    // positions from them. Null once the input's figures are taken, unless kept.inputSamples.
     analysis::SharedMachineAxes axes;
     analysis::AxisProfile original;
     analysis::ConstantFeedTime constantFeed;
@@ -107,10 +98,11 @@ struct JobResult {
     std::optional<CadCheckResult> cadCheck;        // when CAD is given, and for the demo
     std::vector<std::string> warnings;
     double seconds = 0.0; // wall time of runJob
+    Retention kept;       // what of the per-sample data the job kept (retentionOf its spec)
 
     // The input text (the demo program when generated); held once, by the parsed document.
-    // A re-scheduled job has released it (io::LoadedProgram::releaseRewriteSources) once the
-    // program was rewritten; a demo job keeps it for demo_blade.nc.
+    // A re-scheduling consumes it unless kept.inputTextAfterRewrite (a demo job keeps it for
+    // demo_blade.nc).
     const std::string& programText() const { return program.text(); }
 };
 

@@ -526,9 +526,7 @@ std::vector<fs::path> protectedInputsOf(const JobSpec& spec) {
 Status writeJobOutputs(const JobSpec& spec, const JobResult& result, const CancelToken* cancel) {
     // Refused before anything is written: a job that ran without an output folder (and so
     // released the samples these files are made of) given one only now.
-    if (!spec.outputDir.empty() &&
-        (result.original.sampleDataReleased ||
-         (result.rescheduled && result.rescheduled->schedule.layerSamplesReleased))) {
+    if (!spec.outputDir.empty() && (!result.kept.inputSamples || !result.kept.layerCurves)) {
         return makeError(ErrorCode::Internal,
                          "axes.csv and layers.csv need the samples the job released once it had "
                          "taken its figures: run it with the output folder it writes");

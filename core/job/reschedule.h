@@ -12,6 +12,7 @@
 #include "core/base/progress.h"
 #include "core/io/nc/gcode_writer.h"
 #include "core/io/program.h"
+#include "core/job/progress_share.h"
 #include "core/kinematics/interpolation_deviation.h"
 #include "core/scheduling/schedule.h"
 
@@ -48,7 +49,7 @@ struct RescheduleOutcome {
     // The whole rewritten program; empty when it was staged (stagedProgram).
     std::string programText;
     // The rewritten program written to its output file while the job ran, not yet in place
-    // (RescheduleInput::stagedProgram); writeJobOutputs commits it.
+    // (Retention::writtenText false); writeJobOutputs commits it.
     std::shared_ptr<StagedFile> stagedProgram;
     // Verification (spec §6.5 and the issue's acceptance): ball centres of the re-read output
     // against the input's, and the smallest distance of the new orientation to the raw channel.
@@ -65,55 +66,52 @@ struct RescheduleOutcome {
     Result<std::string> writtenText() const;
 };
 
-struct RescheduleInput {
-    const io::LoadedProgram* program = nullptr;
+// What a job keeps of what its stages make, decided once from the outputs it was asked for
+// (retentionOf): everything else is freed as soon as it has been read for the last time.
+struct Retention {
+    // The input's text in memory while the job runs. Without it a G-code program read from a
+    // file is read again from there by its rewrite (61 bytes per block less while it is
+    // scheduled).
+    bool inputTextInMemory = true;
+    // The input's text and where each block's words stand in it, after the rewrite (a demo's
+    // demo_blade.nc reads it). Without it the rewrite consumes them: it gives back their pages
+    // as it passes them and frees them at its end (61 + 24 bytes per block).
+    bool inputTextAfterRewrite = true;
+    // The input's per-sample motion (the profile's samples, 16 bytes per record and moving
+    // axis, and the pass's machine axes but A, 40 bytes) once its figures are taken.
+    bool inputSamples = true;
+    // The schedule's per-layer curves (72 bytes per record) once the input's orientation is
+    // checked against them.
+    bool layerCurves = true;
+    // The schedule's new tool axes (24 bytes per record) once the new motion is analysed.
+    bool newToolAxes = true;
+    // The written program's text in memory; without it the rewrite appends it to the output
+    // file's staged copy as it goes (65 bytes per block).
+    bool writtenText = true;
+};
+
+// The input's cutting pass and what its rewrite needs to know of it.
+struct PassToRewrite {
+    io::LoadedProgram* program = nullptr; // a rewrite that does not keep the text consumes it
     const kinematics::MachineModel* machine = nullptr;
     std::size_t passFirst = 0;
     std::size_t passCount = 0;
+    // Programmed as the tool tip in the workpiece frame (io::programsToolTip, asked once the
+    // program is read: the answer needs the block sources a rewrite may consume).
+    bool toolTip = false;
     double startA = 0.0; // rad, the input's A at the pass's first record: the new A starts there
-    double toolRadius = 0.0;
-    scheduling::ScheduleParameters parameters;
-    std::vector<scheduling::LayerOverride> layerEdits; // the engineer's edits of single layers
-    analysis::AxisProfileOptions analysis;
-    // Both on in every job; the benchmarks switch them off to time read-schedule-write alone.
-    bool verifyByRereading = true;
-    bool analyseNewMotion = true;
-    // Free the schedule's new tool axes (24 bytes per record) once the new motion's analysis has
-    // read them: for a job whose outputs were all written by the rewrite (nothing makes the
-    // re-scheduled records afterwards: CL output, the CAD check, the comparison, the display).
-    bool releaseNewToolAxes = false;
-    // Called once the scheduling has made its plane path (ScheduleInput::planePathMade).
-    std::function<void()> planePathMade;
-    // Called once the pass is split into layers, before the scheduling's memory peaks, with the
-    // layers' input ranges relative to the pass (ScheduleInput::layersSplit): a job takes the
-    // input's motion per layer here and may release the input's samples.
-    std::function<void(std::span<const scheduling::LayerBounds>)> layersSplit;
-    // Called once the schedule is made, before the inverse kinematics, with the schedule the
-    // outcome keeps. Nothing of the re-scheduling reads the layers' per-sample curves after this
-    // (the new motion is made from the new tool axes), so a job checks the input's orientation
-    // against the channel here and may release them (scheduling::releaseLayerSamples) before
-    // the new motion is made and analysed.
-    std::function<void(scheduling::ScheduleResult&)> scheduled;
-    // Called once the program is rewritten (or its rewrite failed), before it is read back: the
-    // rewrite was the last reader of the input's text, and a job frees it here
-    // (releaseRewriteSources). Nothing of the re-scheduling reads the program's text after this.
-    std::function<void()> rewritten;
-    // Called as a G-code rewrite goes with how far it has read the input (see
-    // io::nc::RewrittenUpTo): a job that frees the text once rewritten gives those pages back at
-    // once (releaseRewriteSourcesBefore), so that the text read and the text written do not
-    // stand side by side at the rewrite's end, where read-schedule-write's memory peaks.
-    // Ignored without `rewritten`: the pages given back read as zeros.
-    io::nc::RewrittenUpTo rewrittenUpTo;
-    // Where the rewritten program goes instead of memory: its text is appended here and freed,
-    // and the re-read check reads it back from the file, mapped, giving its pages back as it
-    // goes. A million-block program's text (65 bytes per record) then does not stand beside the
-    // new motion's analysis, where a job's memory peaks. Null: kept in programText.
+    double toolRadius = 0.0; // mm, the ball whose centres the schedule keeps
+
+    std::span<const toolpath::ClRecord> records() const;
+};
+
+struct RescheduleInput {
+    PassToRewrite pass;
+    analysis::AxisProfileOptions analysis; // of the new motion
+    Retention keep;
+    // The output file the written program is staged to (keep.writtenText false).
     std::shared_ptr<StagedFile> stagedProgram;
-    // Called as each stage of the re-scheduling starts, on the calling thread, with the share
-    // of the re-scheduling done before it and what the stage does ("writing the re-scheduled
-    // program"): a job shows it as its progress. The shares are those of a five-million-block
-    // program, whose re-scheduling takes about 3 s.
-    std::function<void(double done, std::string_view stage)> stageStarted;
+    unsigned threads = 0; // of the inverse kinematics (0 = all)
 };
 
 // Largest ball-centre deviation accepted when the written program is read back: the program's
@@ -132,16 +130,55 @@ bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::
 // or more on millions of blocks, so that an interrupt takes effect at the next stage.
 Status checkCancelled(const CancelToken& cancel);
 
-Result<RescheduleOutcome> reschedule(const RescheduleInput& input, const CancelToken& cancel);
+// The pass as the scheduling reads it: each record's ball centre and tool axis, read when
+// needed, so that no copy of them stands beside the plane path (48 bytes per record).
+scheduling::ScheduleSamples scheduleSamplesOf(std::span<const toolpath::ClRecord> pass,
+                                              double toolRadius);
+
+// The stages after the scheduling, each one's values in and out; reschedule runs them all.
+//
+// The machine axes of the new poses, A unwrapped from the input's first A so that the new
+// program starts where the old one did and A stays continuous.
+Result<std::vector<kinematics::MachineAxes>>
+newMachineAxes(const PassToRewrite& pass, const scheduling::ScheduleResult& schedule,
+               unsigned threads, const CancelToken& cancel);
+
+// Where a rewrite's text goes: whole into the returned string, or in pieces of a few megabytes
+// to a staged output file (the string is then empty), checking the token between pieces.
+struct RewriteTarget {
+    StagedFile* staged = nullptr;
+    // Whether the input's text outlives the rewrite; a rewrite that consumes it gives back its
+    // pages as it passes them and frees it (and the block sources) at its end, also on failure.
+    bool keepInputText = true;
+};
+Result<std::string> rewriteProgram(const PassToRewrite& pass,
+                                   std::span<const kinematics::MachineAxes> axes,
+                                   const scheduling::ScheduleResult& schedule,
+                                   const RewriteTarget& target, const CancelToken& cancel);
+
+// Everything after the scheduling: the new machine axes, the rewritten program (staged or in
+// memory), its verification by re-reading it, the new motion's analysis (beside the rewrite
+// and the re-read) and the checks a written program must pass (channel, centres, modulo steps,
+// travel). The progress share hears each stage start.
+Result<RescheduleOutcome> reschedule(scheduling::ScheduleResult schedule,
+                                     const RescheduleInput& input, ProgressShare& progress,
+                                     const CancelToken& cancel);
 
 // The re-scheduled pass as records: each input record of the pass with its new tip and tool
-// axis, its feed as written, and no machine axes. Made on demand (CL output, the CAD check): a
-// job does not keep a second copy of every record.
+// axis, its feed as written (`feeds`, or the input's when empty), and no machine axes. Made on
+// demand (CL output, the CAD check): a job does not keep a second copy of every record.
+std::vector<toolpath::ClRecord> rescheduledRecords(std::span<const toolpath::ClRecord> pass,
+                                                   const scheduling::ScheduleResult& schedule,
+                                                   double toolRadius,
+                                                   std::span<const double> feeds);
 std::vector<toolpath::ClRecord> rescheduledRecords(std::span<const toolpath::ClRecord> pass,
                                                    const RescheduleOutcome& outcome);
 
 // The re-scheduled pass as the axis analysis reads it: the input records lend their lines (and
 // feeds, unless the written program gives new ones), the schedule its poses.
+analysis::PathSamples rescheduledSamples(std::span<const toolpath::ClRecord> pass,
+                                         const scheduling::ScheduleResult& schedule,
+                                         double toolRadius, std::span<const double> feeds);
 analysis::PathSamples rescheduledSamples(std::span<const toolpath::ClRecord> pass,
                                          const RescheduleOutcome& outcome);
 

@@ -70,14 +70,6 @@ namespace {
 // computed from the same junction value, so anything above round-off is a real step.
 constexpr double kJunctionGapRad = 1e-9;
 
-// Channel stage (§1.5-§2): everything before the layers become independent.
-struct ChannelStage {
-    TangentField tangents;
-    CurvatureAnalysis curvature;
-    LayerSplit split;
-    RawChannel channel;
-};
-
 CurvatureSettings curvatureSettings(const ScheduleParameters& p, const PlanePath& path,
                                     const TangentField& tangents, double radius) {
     // [A] "Layer length" in the §1.6 defaults is not known before the layers exist: the mean
@@ -105,88 +97,46 @@ std::vector<LayerBounds> boundsOf(const LayerSplit& split, const PlanePath& path
     return bounds;
 }
 
-std::unexpected<Error> cancelledError() {
-    return makeError(ErrorCode::Cancelled, "scheduling cancelled");
-}
-
-// Looks at the token after the tangents and after the curvature: at five million points each
-// of this stage's steps takes 0.05-0.15 s.
-Result<ChannelStage> buildChannelStage(const PlanePath& path, const ScheduleParameters& p,
-                                       double radius, const ScheduleInput& input,
-                                       std::vector<std::string>& warnings,
-                                       const CancelToken* cancel) {
-    ChannelStage stage;
-    auto tangents = computeWrappedTangents(path.points, p.tangentChordMinMm,
-                                           p.tangentChordMedianFactor, p.threads);
-    if (!tangents) {
-        return std::unexpected(tangents.error());
-    }
-    if (isCancelled(cancel)) {
-        return cancelledError();
-    }
-    stage.tangents = std::move(*tangents);
-    // The unwrap and the curvature's prefix sums are each one chain through the path, whose
-    // order fixes their rounding, and neither reads the other: on two threads they run at once.
-    CurvatureWeights weights;
-    runBoth(
-        path.points.size(), p.threads, [&field = stage.tangents] { unwrapForwardAngles(field); },
-        [&weights, &path, &stage] {
-            weights = curvatureWeights(path.arcLength, stage.tangents.curvature);
-        });
-    const CurvatureSettings settings = curvatureSettings(p, path, stage.tangents, radius);
-    // Each per-point array goes once read for the last time: the channel is built where the
-    // scheduling's memory peaks (beside the plane path and the input). The curvature becomes
-    // the smoothed one.
-    stage.curvature =
-        analyseCurvature(path.arcLength, std::move(stage.tangents.curvature), std::move(weights),
-                         stage.tangents.turning, settings, p.threads);
-    if (isCancelled(cancel)) {
-        return cancelledError();
-    }
-    stage.split = splitLayers(stage.tangents.forwardAngle, stage.curvature.smoothedCurvature,
-                              stage.curvature.runs, p.basePoint);
-    freeStorage(stage.curvature.smoothedCurvature); // the runs stay: the channel reads them
-    freeStorage(stage.curvature.hysteresis);
-    freeStorage(stage.curvature.state);
-    if (input.layersSplit) {
-        input.layersSplit(boundsOf(stage.split, path));
-    }
-    stage.channel = buildRawChannel(stage.tangents, stage.curvature.runs,
-                                    p.taperHalfAngleRad + p.safetyAngleRad, p.threads);
+// The raw channel of the layers (§2), clipped as the parameters ask.
+RawChannel channelOf(const LayerPlan& plan, const ScheduleParameters& p,
+                     std::vector<std::string>& warnings) {
+    RawChannel channel = buildRawChannel(plan.tangents, plan.curvature.runs,
+                                         p.taperHalfAngleRad + p.safetyAngleRad, p.threads);
     if (p.visibility == Visibility::Global) {
-        const double turns = std::max(1.0, std::abs(stage.tangents.forwardAngle.back() -
-                                                    stage.tangents.forwardAngle.front()) /
-                                               units::kTwoPi);
+        const double turns = std::max(
+            1.0, std::abs(plan.tangents.forwardAngle.back() - plan.tangents.forwardAngle.front()) /
+                     units::kTwoPi);
         const auto reach = static_cast<std::size_t>(
-            std::ceil(0.5 * static_cast<double>(path.points.size()) / turns));
-        clipGlobalVisibility(stage.channel, path.points, reach);
+            std::ceil(0.5 * static_cast<double>(plan.path.points.size()) / turns));
+        clipGlobalVisibility(channel, plan.path.points, reach);
     }
     if (p.leadBand) {
-        clipLeadBand(stage.channel, stage.tangents, p.leadBandMinRad, p.leadBandMaxRad);
+        clipLeadBand(channel, plan.tangents, p.leadBandMinRad, p.leadBandMaxRad);
     }
     if (p.despike) {
-        if (const std::size_t changed = despikeChannel(stage.channel); changed > 0) {
+        if (const std::size_t changed = despikeChannel(channel); changed > 0) {
             warnings.push_back("despiking changed " + std::to_string(changed) +
                                " channel samples (non-conservative)");
         }
     }
-    return stage;
+    return channel;
 }
 
 // Runs every layer; a parallel run writes each result into its own slot, so it is identical
 // to the serial run.
-std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems, const PlanePath& path,
+std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems,
+                                    std::span<const std::uint32_t> firstInput,
                                     std::span<const ScheduleParameters> layerParameters,
                                     const ScheduleParameters& p, const CancelToken* cancel) {
     std::vector<LayerOutcome> outcomes(problems.size());
-    forEachItem(problems.size(), path.firstInput.size(), p.threads, [&](std::size_t k) {
+    forEachItem(problems.size(), firstInput.size(), p.threads, [&](std::size_t k) {
         if (isCancelled(cancel)) {
             return;
         }
         std::vector<std::size_t> inputs;
         inputs.reserve(problems[k].span.last - problems[k].span.first + 1);
         for (std::size_t i = problems[k].span.first; i <= problems[k].span.last; ++i) {
-            inputs.push_back(path.firstInput[i]);
+            inputs.push_back(firstInput[i]);
         }
         outcomes[k] =
             scheduleLayer(std::move(problems[k]), layerParameters[k], std::move(inputs), k);
@@ -251,26 +201,8 @@ struct KeptAxis {
     Vec3 axis;
 };
 
-// The input as the scheduling reads it once the plane path is made: from its arrays, or read
-// again (ScheduleInput::centreAgain, axisAgain) once a handed-over input's arrays were freed.
-struct InputAccess {
-    const ScheduleInput& input;
-    ScheduleInput* handedOver = nullptr; // the same object, when the caller gave it up
-    std::size_t count = 0;
-    bool readAgain = false;
-
-    Vec3 axis(std::size_t i) const { return readAgain ? input.axisAgain(i) : input.axes[i]; }
-    // A handed-over input's axes are freed once read for the last time (at once when they can
-    // be read again).
-    void axesRead() const {
-        if (handedOver != nullptr) {
-            freeStorage(handedOver->axes);
-        }
-    }
-};
-
 std::vector<KeptAxis> axesOfKeptLayers(std::span<const LayerResult> layers,
-                                       const InputAccess& input) {
+                                       const ScheduleSamples& input) {
     std::vector<KeptAxis> kept;
     for (std::size_t k = 0; k < layers.size(); ++k) {
         if (!keepsOriginal(layers[k])) {
@@ -278,28 +210,15 @@ std::vector<KeptAxis> axesOfKeptLayers(std::span<const LayerResult> layers,
         }
         const InputRange inputs = inputsOfLayer(layers, k, input.count);
         for (std::size_t i = inputs.begin; i < inputs.end; ++i) {
-            kept.push_back({i, input.axis(i).normalized()});
+            kept.push_back({i, input.axisAt(i).normalized()});
         }
     }
     return kept;
 }
 
-ReconstructionCheck checkReconstructionOf(const InputAccess& access,
-                                          const ReconstructedPath& rebuilt,
-                                          std::span<const double> thetaAbsolute, double tiltB0,
-                                          unsigned threads) {
-    const ScheduleInput& input = access.input;
-    if (access.readAgain) {
-        return checkReconstruction(input.centreAgain, access.count, rebuilt, thetaAbsolute, tiltB0,
-                                   input.toolRadius, threads);
-    }
-    return checkReconstruction(input.centres, rebuilt, thetaAbsolute, tiltB0, input.toolRadius,
-                               threads);
-}
-
 // result.tiltB0 and result.traversalSign are the plane path's.
-void assemble(ScheduleResult& result, const InputAccess& input, std::vector<LayerOutcome>& outcomes,
-              unsigned threads) {
+void assemble(ScheduleResult& result, const ScheduleSamples& input,
+              std::vector<LayerOutcome>& outcomes, unsigned threads) {
     const std::size_t n = input.count;
     result.layers.reserve(outcomes.size());
     for (LayerOutcome& outcome : outcomes) {
@@ -308,7 +227,6 @@ void assemble(ScheduleResult& result, const InputAccess& input, std::vector<Laye
         result.layers.push_back(std::move(outcome.result));
     }
     const std::vector<KeptAxis> kept = axesOfKeptLayers(result.layers, input);
-    input.axesRead();
     // The original angles are counted and dropped first: beside the new angles and axes they
     // would add 8 bytes per sample where read-schedule-write's memory peaks.
     result.originalReversals =
@@ -321,7 +239,8 @@ void assemble(ScheduleResult& result, const InputAccess& input, std::vector<Laye
     for (const KeptAxis& original : kept) {
         rebuilt.axes[original.input] = original.axis;
     }
-    result.check = checkReconstructionOf(input, rebuilt, thetaAbsolute, result.tiltB0, threads);
+    result.check = checkReconstruction(input.centreAt, n, rebuilt, thetaAbsolute, result.tiltB0,
+                                       input.toolRadius, threads);
     result.newAxes = std::move(rebuilt.axes);
 }
 
@@ -390,122 +309,186 @@ std::vector<double> absoluteAngles(std::span<const LayerResult> layers, std::siz
 
 namespace {
 
-// schedule(), freeing the arrays of a `handedOver` input (the same object as `input`) once
-// read for the last time.
-Result<ScheduleResult> scheduleFrom(const ScheduleInput& input,
-                                    const ScheduleParameters& parameters, const CancelToken* cancel,
-                                    std::span<const LayerOverride> overrides,
-                                    ScheduleInput* handedOver) {
-    if (auto status = validateParameters(parameters); !status) {
-        return std::unexpected(status.error());
-    }
-    if (!std::isfinite(input.toolRadius) || input.toolRadius <= 0.0) {
+Status validateSamples(const ScheduleSamples& samples) {
+    if (!std::isfinite(samples.toolRadius) || samples.toolRadius <= 0.0) {
         return makeError(ErrorCode::InvalidArgument,
-                         "tool radius " + std::to_string(input.toolRadius) + " mm is not > 0");
+                         "tool radius " + std::to_string(samples.toolRadius) + " mm is not > 0");
     }
-    auto path = input.onlyRead() ? preparePlanePath(input.centreAgain, input.axisAgain,
-                                                    input.readCount, parameters.threads)
-                                 : preparePlanePath(input.centres, input.axes, parameters.threads);
-    if (!path) {
-        return std::unexpected(path.error());
+    if (samples.count > 0 && (!samples.centreAt || !samples.axisAt)) {
+        return makeError(ErrorCode::InvalidArgument, "the samples give no centres or axes");
     }
-    InputAccess access{.input = input,
-                       .handedOver = handedOver,
-                       .count = input.size(),
-                       .readAgain = input.onlyRead() || (handedOver != nullptr &&
-                                                         input.centreAgain && input.axisAgain)};
-    if (access.readAgain && handedOver != nullptr) {
-        freeStorage(handedOver->centres);
-        access.axesRead();
-    }
-    if (input.planePathMade) {
-        input.planePathMade();
-    }
-    if (isCancelled(cancel)) { // between the stages that run before the layers, too
-        return cancelledError();
-    }
-    ScheduleResult result;
-    result.warnings = path->warnings;
-    result.tiltB0 = path->tiltB0;
-    result.traversalSign = path->traversalSign;
-    auto stage =
-        buildChannelStage(*path, parameters, input.toolRadius, input, result.warnings, cancel);
-    if (!stage) {
-        return std::unexpected(stage.error());
-    }
-    if (isCancelled(cancel)) {
-        return cancelledError();
-    }
-    for (std::size_t b : stage->split.basePoints) {
-        result.basePoints.push_back(path->firstInput[b]);
-    }
-    const std::size_t layerCount = stage->split.layers.size();
+    return {};
+}
+
+// The layer problems and their parameters, from the plan; what else the plan holds is freed
+// before the problems are built, and the plan's arrays after: read-schedule-write's memory
+// peaks here, and each per-point array freed is 8-24 bytes per point less beside the problems
+// and then the layers' results.
+struct LayerProblems {
+    std::vector<LayerProblem> problems;
+    std::vector<ScheduleParameters> perLayer;
+    DefaultInitVector<std::uint32_t> firstInput; // of the plane path: the layers' inputs
+};
+
+Result<LayerProblems> layerProblemsOf(LayerPlan plan, const ScheduleSamples& samples,
+                                      const ScheduleParameters& parameters,
+                                      std::span<const LayerOverride> overrides,
+                                      std::vector<std::string>& warnings) {
+    const std::size_t layerCount = plan.split.layers.size();
     if (auto valid = validateOverrides(overrides, layerCount, parameters); !valid) {
         return std::unexpected(valid.error());
     }
-    const std::vector<ScheduleParameters> perLayer =
-        parametersPerLayer(parameters, overrides, layerCount);
+    LayerProblems made;
+    made.perLayer = parametersPerLayer(parameters, overrides, layerCount);
     std::vector<double> margins;
     margins.reserve(layerCount);
-    for (const ScheduleParameters& layer : perLayer) {
+    for (const ScheduleParameters& layer : made.perLayer) {
         margins.push_back(layer.marginRad);
     }
-    // The layer problems read the raw channel, the split and the plane path's arc length and
-    // original angle. What else the stages made is freed before the problems are built, and
-    // those after: read-schedule-write's memory peaks here, and each per-point array freed is
-    // 8-24 bytes per point less beside the problems and then the layers' results.
-    const double shortLengthMm = 4.0 * stage->tangents.chordLengthMm;
-    freeStorage(stage->tangents);
-    freeStorage(stage->curvature);
-    freeStorage(path->points);
-    // From the arrays when they are kept: a call through a function per angle costs a third
-    // more.
-    if (access.readAgain) {
-        addOriginalAngles(*path, input.axisAgain, parameters.threads);
-    } else {
-        addOriginalAngles(*path, input.axes, parameters.threads);
+    const RawChannel channel = channelOf(plan, parameters, warnings);
+    const double shortLengthMm = 4.0 * plan.tangents.chordLengthMm;
+    freeStorage(plan.tangents);
+    freeStorage(plan.curvature);
+    freeStorage(plan.path.points);
+    addOriginalAngles(plan.path, samples.axisAt, parameters.threads);
+    made.problems = buildLayerProblems(plan.path, channel, plan.split, margins, shortLengthMm,
+                                       parameters.threads);
+    for (const LayerProblem& problem : made.problems) {
+        warnings.insert(warnings.end(), problem.warnings.begin(), problem.warnings.end());
     }
-    std::vector<LayerProblem> problems = buildLayerProblems(
-        *path, stage->channel, stage->split, margins, shortLengthMm, parameters.threads);
+    made.firstInput = std::move(plan.path.firstInput);
+    return made;
+}
+
+std::unexpected<Error> cancelledError() {
+    return makeError(ErrorCode::Cancelled, "scheduling cancelled");
+}
+
+} // namespace
+
+ScheduleSamples samplesOf(const ScheduleInput& input) {
+    return {.count = input.centres.size(),
+            .centreAt = [&centres = input.centres](std::size_t i) { return centres[i]; },
+            .axisAt = [&axes = input.axes](std::size_t i) { return axes[i]; },
+            .toolRadius = input.toolRadius};
+}
+
+Result<PlanePath> makePlanePath(const ScheduleSamples& samples,
+                                const ScheduleParameters& parameters) {
+    if (auto status = validateParameters(parameters); !status) {
+        return std::unexpected(status.error());
+    }
+    if (auto status = validateSamples(samples); !status) {
+        return std::unexpected(status.error());
+    }
+    return preparePlanePath(samples.centreAt, samples.axisAt, samples.count, parameters.threads);
+}
+
+// Looks at the token after the tangents and after the curvature: at five million points each
+// of this stage's steps takes 0.05-0.15 s.
+Result<LayerPlan> planLayers(PlanePath path, const ScheduleSamples& samples,
+                             const ScheduleParameters& p, const CancelToken* cancel) {
+    auto tangents = computeWrappedTangents(path.points, p.tangentChordMinMm,
+                                           p.tangentChordMedianFactor, p.threads);
+    if (!tangents) {
+        return std::unexpected(tangents.error());
+    }
     if (isCancelled(cancel)) {
         return cancelledError();
     }
-    // From here on the layers read only the plane path's input index.
-    freeStorage(*stage);
-    freeStorage(path->arcLength);
-    freeStorage(path->originalAngle);
-    for (const LayerProblem& problem : problems) {
-        result.warnings.insert(result.warnings.end(), problem.warnings.begin(),
-                               problem.warnings.end());
-    }
-    std::vector<LayerOutcome> outcomes = runLayers(problems, *path, perLayer, parameters, cancel);
+    LayerPlan plan;
+    plan.path = std::move(path);
+    plan.tangents = std::move(*tangents);
+    // The unwrap and the curvature's prefix sums are each one chain through the path, whose
+    // order fixes their rounding, and neither reads the other: on two threads they run at once.
+    CurvatureWeights weights;
+    runBoth(
+        plan.path.points.size(), p.threads,
+        [&field = plan.tangents] { unwrapForwardAngles(field); },
+        [&weights, &plan] {
+            weights = curvatureWeights(plan.path.arcLength, plan.tangents.curvature);
+        });
+    const CurvatureSettings settings =
+        curvatureSettings(p, plan.path, plan.tangents, samples.toolRadius);
+    // Each per-point array goes once read for the last time: the channel is built where the
+    // scheduling's memory peaks (beside the plane path). The curvature becomes the smoothed one.
+    plan.curvature =
+        analyseCurvature(plan.path.arcLength, std::move(plan.tangents.curvature),
+                         std::move(weights), plan.tangents.turning, settings, p.threads);
     if (isCancelled(cancel)) {
         return cancelledError();
     }
-    if (auto applied = applyKeyPointEdits(outcomes, overrides, perLayer); !applied) {
+    plan.split = splitLayers(plan.tangents.forwardAngle, plan.curvature.smoothedCurvature,
+                             plan.curvature.runs, p.basePoint);
+    freeStorage(plan.curvature.smoothedCurvature); // the runs stay: the channel reads them
+    freeStorage(plan.curvature.hysteresis);
+    freeStorage(plan.curvature.state);
+    plan.bounds = boundsOf(plan.split, plan.path);
+    return plan;
+}
+
+Result<ScheduleResult> scheduleLayers(LayerPlan plan, const ScheduleSamples& samples,
+                                      const ScheduleParameters& parameters,
+                                      const CancelToken* cancel,
+                                      std::span<const LayerOverride> overrides) {
+    ScheduleResult result;
+    result.warnings = std::move(plan.path.warnings);
+    result.tiltB0 = plan.path.tiltB0;
+    result.traversalSign = plan.path.traversalSign;
+    for (std::size_t b : plan.split.basePoints) {
+        result.basePoints.push_back(plan.path.firstInput[b]);
+    }
+    auto made = layerProblemsOf(std::move(plan), samples, parameters, overrides, result.warnings);
+    if (!made) {
+        return std::unexpected(made.error());
+    }
+    if (isCancelled(cancel)) {
+        return cancelledError();
+    }
+    std::vector<LayerOutcome> outcomes =
+        runLayers(made->problems, made->firstInput, made->perLayer, parameters, cancel);
+    if (isCancelled(cancel)) {
+        return cancelledError();
+    }
+    if (auto applied = applyKeyPointEdits(outcomes, overrides, made->perLayer); !applied) {
         return std::unexpected(applied.error());
     }
     // The layers have what they need of the plane path: its input index per point (8 bytes) is
     // not held beside the new axes.
-    freeStorage(*path);
-    assemble(result, access, outcomes, parameters.threads);
+    freeStorage(made->firstInput);
+    assemble(result, samples, outcomes, parameters.threads);
     checkJunctions(result);
     addCheckWarnings(result);
     return result;
 }
 
-} // namespace
+Result<ScheduleResult> schedule(const ScheduleSamples& samples,
+                                const ScheduleParameters& parameters, const CancelToken* cancel,
+                                std::span<const LayerOverride> overrides) {
+    auto path = makePlanePath(samples, parameters);
+    if (!path) {
+        return std::unexpected(path.error());
+    }
+    if (isCancelled(cancel)) {
+        return cancelledError();
+    }
+    auto plan = planLayers(std::move(*path), samples, parameters, cancel);
+    if (!plan) {
+        return std::unexpected(plan.error());
+    }
+    return scheduleLayers(std::move(*plan), samples, parameters, cancel, overrides);
+}
 
 Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
                                 const CancelToken* cancel,
                                 std::span<const LayerOverride> overrides) {
-    return scheduleFrom(input, parameters, cancel, overrides, nullptr);
-}
-
-Result<ScheduleResult> schedule(ScheduleInput&& input, const ScheduleParameters& parameters,
-                                const CancelToken* cancel,
-                                std::span<const LayerOverride> overrides) {
-    return scheduleFrom(input, parameters, cancel, overrides, &input);
+    if (input.axes.size() != input.centres.size()) {
+        return makeError(ErrorCode::InvalidArgument, "centres and axes differ in length (" +
+                                                         std::to_string(input.centres.size()) +
+                                                         " vs " +
+                                                         std::to_string(input.axes.size()) + ")");
+    }
+    return schedule(samplesOf(input), parameters, cancel, overrides);
 }
 
 } // namespace bladeaxis::scheduling

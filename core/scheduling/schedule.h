@@ -10,9 +10,13 @@
 #include "core/base/error.h"
 #include "core/base/progress.h"
 #include "core/geometry/vec.h"
+#include "core/scheduling/curvature_states.h"
 #include "core/scheduling/layer_overrides.h"
+#include "core/scheduling/layers.h"
+#include "core/scheduling/plane_path.h"
 #include "core/scheduling/reconstruction.h"
 #include "core/scheduling/schedule_parameters.h"
+#include "core/scheduling/tangents.h"
 
 #include <functional>
 #include <span>
@@ -26,34 +30,27 @@ struct LayerBounds {
     std::size_t first = 0, last = 0;
 };
 
+// A toolpath's cutter centres and tool axes held in arrays (the comparison's baselines and the
+// tests give them so).
 struct ScheduleInput {
     std::vector<Vec3> centres; // Q_i ball centres in W (x = rotary axis), feed order, mm
     std::vector<Vec3> axes;    // V_i original tool axes in W (normalised on input)
     double toolRadius = 0.0;   // R, mm
-    // Where input i's centre and axis can be read again, with the bits of centres[i] and
-    // axes[i]. An input handed over with both and its arrays (schedule(ScheduleInput&&)) has
-    // the arrays freed as soon as the plane path is made, 48 bytes per sample less where the
-    // scheduling's memory peaks; the centres are read again for the reconstruction check, the
-    // axes of a layer that keeps its orientation. A job gives no arrays (`readCount`).
-    std::function<Vec3(std::size_t)> centreAgain, axisAgain;
-    // An input whose centres and axes are only read (both arrays empty, both functions given)
-    // has `readCount` samples: the scheduling reads every one through the functions, from the
-    // plane path on, and no copy of the input is ever made (48 bytes per sample beside the
-    // plane path, where a job's memory peaked on millions of blocks).
-    std::size_t readCount = 0;
-
-    bool onlyRead() const { return centres.empty() && axes.empty() && centreAgain && axisAgain; }
-    std::size_t size() const { return onlyRead() ? readCount : centres.size(); }
-    // Called once the plane path is made, before the tangents, curvature and channel: where the
-    // scheduling's memory starts to grow, a caller whose own work beside it holds memory (a
-    // job: the input's T2) may wait for that work to end.
-    std::function<void()> planePathMade;
-    // Called once the path is split into layers, before the channel and the layers are made,
-    // with every layer's bounds as the result's layers will have them (layerBounds). A caller
-    // takes here what it wants per layer from its own per-input data (a job: the input's motion
-    // per layer) and may free that data before the scheduling's memory peaks.
-    std::function<void(std::span<const LayerBounds>)> layersSplit;
 };
+
+// What the scheduling reads of its input: `count` samples, each one's ball centre and tool axis
+// read through a function whenever needed (the same bits on every call, from any thread), so
+// that no copy of the input stands beside the scheduling's own arrays. A job reads them from its
+// program's records (48 bytes per record it does not copy); samplesOf reads arrays.
+struct ScheduleSamples {
+    std::size_t count = 0;
+    std::function<Vec3(std::size_t)> centreAt; // Q_i in W, mm
+    std::function<Vec3(std::size_t)> axisAt;   // V_i in W (normalised on input)
+    double toolRadius = 0.0;                   // R, mm
+};
+
+// The samples of arrays the caller keeps while the scheduling runs.
+ScheduleSamples samplesOf(const ScheduleInput& input);
 
 enum class LayerStatus {
     Ok,
@@ -95,7 +92,7 @@ struct ScheduleResult {
     std::vector<LayerResult> layers;
     // Per input sample. The new tips are not kept (24 bytes per sample): each keeps its input's
     // ball centre, so it is tipOfBall(centres[i], newAxes[i], R). A batch job frees them once
-    // its new motion is analysed (job::RescheduleInput::releaseNewToolAxes).
+    // its new motion is analysed unless an output reads them (job::Retention::newToolAxes).
     std::vector<Vec3> newAxes;
     double tiltB0 = 0.0;                 // rad
     int traversalSign = 1;               // w . a of §1.3; the machine sigma = -traversalSign
@@ -131,19 +128,44 @@ inline std::vector<double> absoluteAngles(const ScheduleResult& result, Orientat
 // The bounds of every layer of a result.
 std::vector<LayerBounds> layerBounds(const ScheduleResult& result);
 
-// Errors: InvalidArgument (parameters, radius, sizes, an override that does not fit the
-// layers or a key-point edit the layer's channel refuses), Geometry (NaN, degenerate path),
-// Cancelled. Infeasible layers are not errors: they keep the original orientation and are
-// flagged MonotoneInfeasible with a warning. `overrides` change single layers (the engineer's
-// edits); every other layer is scheduled exactly as without them.
-Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
+// The scheduling runs in three stages that take and return values, so that a caller can do
+// its own work between them (a job takes the input's motion per layer once the layers are
+// known, and frees what it no longer needs before the scheduling's memory peaks) and what a
+// stage no longer needs goes with the value it was moved into.
+//
+// Stage 1 (§1.2-1.4): the plane path. Errors: InvalidArgument (parameters, radius, sizes),
+// Geometry (NaN, degenerate path).
+Result<PlanePath> makePlanePath(const ScheduleSamples& samples,
+                                const ScheduleParameters& parameters);
+
+// Stage 2 (§1.5-1.7): the tangents, the curvature and the split into layers, with the bounds
+// every layer of the result will have.
+struct LayerPlan {
+    PlanePath path;
+    TangentField tangents;
+    CurvatureAnalysis curvature; // its runs; the per-point curves are freed once split
+    LayerSplit split;
+    std::vector<LayerBounds> bounds; // input records of each layer
+};
+Result<LayerPlan> planLayers(PlanePath path, const ScheduleSamples& samples,
+                             const ScheduleParameters& parameters, const CancelToken* cancel);
+
+// Stage 3 (§2-§6): the channel, every layer's schedule (in parallel) and the new tool axes.
+// Infeasible layers are not errors: they keep the original orientation and are flagged
+// MonotoneInfeasible with a warning. `overrides` change single layers (the engineer's edits);
+// every other layer is scheduled exactly as without them. Errors: InvalidArgument (an override
+// that does not fit the layers or a key-point edit the layer's channel refuses), Cancelled.
+Result<ScheduleResult> scheduleLayers(LayerPlan plan, const ScheduleSamples& samples,
+                                      const ScheduleParameters& parameters,
+                                      const CancelToken* cancel,
+                                      std::span<const LayerOverride> overrides = {});
+
+// The three stages one after the other; the errors of each (Cancelled between them).
+Result<ScheduleResult> schedule(const ScheduleSamples& samples,
+                                const ScheduleParameters& parameters,
                                 const CancelToken* cancel = nullptr,
                                 std::span<const LayerOverride> overrides = {});
-// The same for an input the caller gives up: its arrays are freed once read for the last time,
-// the axes before the new axes are made (24 bytes per sample less where read-schedule-write's
-// memory peaks), or both once the plane path is made when the input can be read again
-// (ScheduleInput::centreAgain, axisAgain). The result is the same.
-Result<ScheduleResult> schedule(ScheduleInput&& input, const ScheduleParameters& parameters,
+Result<ScheduleResult> schedule(const ScheduleInput& input, const ScheduleParameters& parameters,
                                 const CancelToken* cancel = nullptr,
                                 std::span<const LayerOverride> overrides = {});
 

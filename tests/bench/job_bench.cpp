@@ -72,7 +72,7 @@ void BM_ParseAndAnalyseMillionBlocks(benchmark::State& state) {
     job::JobSpec spec;
     spec.program = millionProgram();
     spec.reschedule = false;
-    spec.dropInputText = true; // as the batch front end reads it
+    spec.detail = job::ResultDetail::Figures; // as the batch front end runs it
     std::size_t records = 0;
     resetPeakResident();
     for (auto _ : state) {
@@ -113,30 +113,36 @@ void BM_ReadScheduleWriteMillionBlocks(benchmark::State& state) {
         for (const toolpath::ClRecord& record : program->path().records) {
             originalAxes.push_back(*record.axes);
         }
-        job::RescheduleInput input;
-        input.program = &*program;
-        input.machine = &machine;
-        input.passCount = originalAxes.size();
-        input.startA = originalAxes.front().a;
-        input.toolRadius = kToolRadius;
-        input.parameters = scheduling::bestPreset();
-        input.verifyByRereading = false;
-        input.analyseNewMotion = false;
-        // As a job does: the input's text is given back as the rewrite reads past it.
-        input.rewritten = [&program] { program->releaseRewriteSources(); };
-        input.rewrittenUpTo = [&program](std::size_t textEnd, std::size_t blockEnd) {
-            program->releaseRewriteSourcesBefore(textEnd, blockEnd);
-        };
+        // The stages a job runs between its analyses; as a job does, the rewrite consumes the
+        // input's text, giving it back as it reads past it.
+        const job::PassToRewrite pass{.program = &*program,
+                                      .machine = &machine,
+                                      .passFirst = 0,
+                                      .passCount = originalAxes.size(),
+                                      .toolTip = false,
+                                      .startA = originalAxes.front().a,
+                                      .toolRadius = kToolRadius};
+        const scheduling::ScheduleParameters parameters = scheduling::bestPreset();
+        const CancelToken cancel;
+        auto schedule = scheduling::schedule(job::scheduleSamplesOf(pass.records(), kToolRadius),
+                                             parameters, &cancel);
+        if (!schedule) {
+            fail("schedule", schedule.error());
+        }
+        auto axes = job::newMachineAxes(pass, *schedule, parameters.threads, cancel);
+        if (!axes) {
+            fail("inverse kinematics", axes.error());
+        }
         auto staged = StagedFile::open(output);
         if (!staged) {
             fail("stage", staged.error());
         }
-        input.stagedProgram = std::make_shared<StagedFile>(std::move(*staged));
-        auto outcome = job::reschedule(input, CancelToken{});
-        if (!outcome) {
-            fail("reschedule", outcome.error());
+        auto text = job::rewriteProgram(pass, *axes, *schedule,
+                                        {.staged = &*staged, .keepInputText = false}, cancel);
+        if (!text) {
+            fail("rewrite", text.error());
         }
-        if (auto written = outcome->stagedProgram->commit(); !written) {
+        if (auto written = staged->commit(); !written) {
             fail("write", written.error());
         }
     }
@@ -152,9 +158,7 @@ void BM_FullJobMillionBlocks(benchmark::State& state) {
     spec.program = millionProgram();
     spec.toolRadius = kToolRadius;
     spec.outputProgram = fs::temp_directory_path() / "bladeaxis_bench_million_job.nc";
-    spec.stageOutputProgram = true;     // as the batch front end writes it
-    spec.dropInputText = true;          // and reads it
-    spec.releaseSamplesOnceRead = true; // and keeps only figures
+    spec.detail = job::ResultDetail::Figures; // as the batch front end runs it
     job::RescheduleOutcome::StageSeconds stages;
     resetPeakResident();
     for (auto _ : state) {
@@ -214,9 +218,7 @@ void BM_FullJobFiveMillionBlocks(benchmark::State& state) {
     spec.machineFile = longBedMachine();
     spec.toolRadius = kToolRadius;
     spec.outputProgram = bench::benchFile("five_million_job", ".nc");
-    spec.stageOutputProgram = true;     // as the batch front end writes it
-    spec.dropInputText = true;          // and reads it
-    spec.releaseSamplesOnceRead = true; // and keeps only figures
+    spec.detail = job::ResultDetail::Figures; // as the batch front end runs it
     double peakMegabytes = 0.0;
     for (auto _ : state) {
         const auto start = std::chrono::steady_clock::now();

@@ -1,6 +1,6 @@
-// A batch job frees its layers' per-sample curves once it has checked them (JobSpec::
-// releaseSamplesOnceRead): what it reports and writes must be what a job that keeps them reports
-// and writes, and a job whose own outputs read the curves must keep them.
+// A job asked for its figures alone (the batch front end: JobSpec::detail) frees its per-sample
+// data once it has taken its figures from them: what it reports and writes must be what a job
+// that keeps them reports and writes, and a job whose own outputs read them must keep them.
 
 #include "core/job/demo_program.h"
 #include "core/job/job.h"
@@ -54,10 +54,40 @@ class ReleasedSamples : public ::testing::Test {
     JobSpec m_spec;
 };
 
+TEST(Retention, AJobAskedForItsFiguresKeepsOnlyWhatItsOutputsRead) {
+    JobSpec spec;
+    spec.program = "blade.nc";
+    EXPECT_TRUE(retentionOf(spec).inputSamples); // per-sample detail by default: all kept
+    EXPECT_TRUE(retentionOf(spec).layerCurves);
+    EXPECT_TRUE(retentionOf(spec).newToolAxes);
+    EXPECT_TRUE(retentionOf(spec).inputTextInMemory);
+
+    spec.detail = ResultDetail::Figures;
+    Retention figures = retentionOf(spec);
+    EXPECT_FALSE(figures.inputSamples);
+    EXPECT_FALSE(figures.layerCurves);
+    EXPECT_FALSE(figures.newToolAxes);
+    EXPECT_FALSE(figures.inputTextInMemory);
+    EXPECT_FALSE(figures.inputTextAfterRewrite);
+    EXPECT_TRUE(figures.writtenText); // no output program to stage it to
+
+    spec.outputCl = "rescheduled.apt"; // made from the new tool axes
+    EXPECT_TRUE(retentionOf(spec).newToolAxes);
+    EXPECT_FALSE(retentionOf(spec).layerCurves);
+    spec.outputDir = "out"; // axes.csv and layers.csv read the samples
+    EXPECT_TRUE(retentionOf(spec).inputSamples);
+    EXPECT_TRUE(retentionOf(spec).layerCurves);
+
+    JobSpec demo;
+    demo.demo = true;
+    demo.detail = ResultDetail::Figures;
+    EXPECT_TRUE(retentionOf(demo).inputTextAfterRewrite); // demo_blade.nc is written from it
+}
+
 TEST_F(ReleasedSamples, AJobThatReleasesItsSamplesReportsAndWritesWhatAKeepingJobDoes) {
     const auto kept = run(m_spec);
     ASSERT_TRUE(kept.has_value()) << kept.error().toString();
-    m_spec.releaseSamplesOnceRead = true;
+    m_spec.detail = ResultDetail::Figures;
     const auto released = run(m_spec);
     ASSERT_TRUE(released.has_value()) << released.error().toString();
 
@@ -85,7 +115,9 @@ TEST_F(ReleasedSamples, AJobThatReleasesItsSamplesReportsAndWritesWhatAKeepingJo
         EXPECT_EQ(releasedLayers[k].peakVelocityBefore, keptLayers[k].peakVelocityBefore);
         EXPECT_EQ(releasedLayers[k].peakAccelerationBefore, keptLayers[k].peakAccelerationBefore);
     }
-    EXPECT_EQ(released->rescheduled->programText, kept->rescheduled->programText);
+    // Staged to its output file as it was written, not kept in memory.
+    EXPECT_TRUE(released->rescheduled->programText.empty());
+    EXPECT_EQ(released->rescheduled->writtenText().value(), kept->rescheduled->programText);
     EXPECT_EQ(reportWithoutTimes(*released, m_spec), reportWithoutTimes(*kept, m_spec));
     EXPECT_EQ(formatSummary(*released), formatSummary(*kept));
     EXPECT_EQ(released->warnings, kept->warnings);
@@ -99,7 +131,7 @@ TEST_F(ReleasedSamples, AnAnalysisThatReleasesItsSamplesReportsWhatAKeepingOneDo
     m_spec.outputProgram.clear();
     const auto kept = run(m_spec);
     ASSERT_TRUE(kept.has_value()) << kept.error().toString();
-    m_spec.releaseSamplesOnceRead = true;
+    m_spec.detail = ResultDetail::Figures;
     const auto released = run(m_spec);
     ASSERT_TRUE(released.has_value()) << released.error().toString();
 
@@ -115,7 +147,7 @@ TEST_F(ReleasedSamples, AJobWritingCutterLocationsKeepsTheNewToolAxesItWritesThe
     const auto kept = run(m_spec);
     ASSERT_TRUE(kept.has_value()) << kept.error().toString();
     ASSERT_TRUE(writeJobOutputs(m_spec, *kept).has_value());
-    m_spec.releaseSamplesOnceRead = true;
+    m_spec.detail = ResultDetail::Figures;
     m_spec.outputCl = m_scratch.path() / "released.apt";
     const auto released = run(m_spec);
     ASSERT_TRUE(released.has_value()) << released.error().toString();
@@ -133,7 +165,7 @@ TEST_F(ReleasedSamples, AJobWritingCutterLocationsKeepsTheNewToolAxesItWritesThe
 }
 
 TEST_F(ReleasedSamples, AJobWritingItsCsvFilesOrComparingKeepsTheSamplesTheyRead) {
-    m_spec.releaseSamplesOnceRead = true;
+    m_spec.detail = ResultDetail::Figures;
     m_spec.outputDir = m_scratch.path() / "out";
     const auto withFolder = run(m_spec);
     ASSERT_TRUE(withFolder.has_value()) << withFolder.error().toString();
@@ -153,7 +185,7 @@ TEST_F(ReleasedSamples, AJobWritingItsCsvFilesOrComparingKeepsTheSamplesTheyRead
 
 TEST_F(ReleasedSamples,
        AnOutputFolderGivenOnlyAfterTheSamplesWereReleasedIsRefusedWithNothingWritten) {
-    m_spec.releaseSamplesOnceRead = true;
+    m_spec.detail = ResultDetail::Figures;
     const auto released = run(m_spec);
     ASSERT_TRUE(released.has_value()) << released.error().toString();
     ASSERT_TRUE(released->rescheduled->schedule.layerSamplesReleased);
@@ -189,7 +221,7 @@ TEST_F(ReleasedSamples, TheLostMotionOfLinearAxesIsTheSameOnceThePassAxesAreRele
     std::ofstream(m_spec.machineFile) << kMachineWithLinearPlay;
     const auto kept = run(m_spec);
     ASSERT_TRUE(kept.has_value()) << kept.error().toString();
-    m_spec.releaseSamplesOnceRead = true;
+    m_spec.detail = ResultDetail::Figures;
     const auto released = run(m_spec);
     ASSERT_TRUE(released.has_value()) << released.error().toString();
 
@@ -210,7 +242,7 @@ TEST_F(ReleasedSamples, TheLostMotionOfLinearAxesIsTheSameOnceThePassAxesAreRele
 TEST_F(ReleasedSamples, TheOrientationCheckRefusesTheSameProgramWhetherOrNotTheSamplesAreReleased) {
     m_spec.check.channelToleranceRad = -1.0; // every CAM orientation counts as outside
     const auto kept = run(m_spec);
-    m_spec.releaseSamplesOnceRead = true;
+    m_spec.detail = ResultDetail::Figures;
     const auto released = run(m_spec);
     ASSERT_FALSE(kept.has_value());
     ASSERT_FALSE(released.has_value());

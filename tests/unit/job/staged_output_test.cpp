@@ -56,7 +56,7 @@ TEST_F(StagedOutput, AStagedProgramIsPutInPlaceWithTheBytesOfAProgramKeptInMemor
     ASSERT_TRUE(kept.has_value()) << kept.error().toString();
     ASSERT_FALSE(kept->rescheduled->stagedProgram);
 
-    m_spec.stageOutputProgram = true;
+    m_spec.detail = ResultDetail::Figures;
     const auto staged = run(m_spec);
     ASSERT_TRUE(staged.has_value()) << staged.error().toString();
     ASSERT_TRUE(staged->rescheduled->stagedProgram);
@@ -73,8 +73,7 @@ TEST_F(StagedOutput, AStagedProgramIsPutInPlaceWithTheBytesOfAProgramKeptInMemor
 TEST_F(StagedOutput, AnInputTextDroppedOnceParsedIsReadAgainForTheSameProgram) {
     const auto kept = run(m_spec);
     ASSERT_TRUE(kept.has_value()) << kept.error().toString();
-    m_spec.dropInputText = true;
-    m_spec.stageOutputProgram = true;
+    m_spec.detail = ResultDetail::Figures;
     const auto dropped = run(m_spec);
     ASSERT_TRUE(dropped.has_value()) << dropped.error().toString();
     EXPECT_TRUE(dropped->programText().empty());
@@ -83,7 +82,7 @@ TEST_F(StagedOutput, AnInputTextDroppedOnceParsedIsReadAgainForTheSameProgram) {
 }
 
 TEST_F(StagedOutput, AJobWhoseOutputsAreNotWrittenLeavesNothingBehind) {
-    m_spec.stageOutputProgram = true;
+    m_spec.detail = ResultDetail::Figures;
     {
         const auto staged = run(m_spec);
         ASSERT_TRUE(staged.has_value()) << staged.error().toString();
@@ -108,7 +107,7 @@ class CancelAtRescheduling final : public ProgressSink {
 };
 
 TEST_F(StagedOutput, ACancelledJobLeavesNeitherTheProgramNorAPartOfIt) {
-    m_spec.stageOutputProgram = true;
+    m_spec.detail = ResultDetail::Figures;
     CancelToken cancel;
     CancelAtRescheduling progress(cancel);
     const auto result = runJob(m_spec, progress, cancel);
@@ -118,7 +117,7 @@ TEST_F(StagedOutput, ACancelledJobLeavesNeitherTheProgramNorAPartOfIt) {
 }
 
 TEST_F(StagedOutput, AnOutputNamingTheInputIsRefusedBeforeAnythingIsWritten) {
-    m_spec.stageOutputProgram = true;
+    m_spec.detail = ResultDetail::Figures;
     m_spec.outputProgram = m_dir / "." / "blade.nc";
     const std::string before = *readTextFile(m_spec.program);
     const auto result = run(m_spec);

@@ -234,64 +234,46 @@ void expectTheSameSchedule(const ScheduleResult& actual, const ScheduleResult& e
     EXPECT_EQ(actual.check.maxTiltError, expected.check.maxTiltError);
 }
 
-// A job gives its input up (the tool axes are freed before the new axes are made): the layers
-// that keep the original orientation still get the input's axes, and every figure is the same.
-TEST(ScheduleCases, AnInputGivenUpGivesTheResultOfAKeptOne) {
+// The stages run one by one, with samples read through functions from several threads, give
+// the schedule of one call over the arrays; the layers that keep the original orientation read
+// their axes again.
+TEST(ScheduleCases, TheStagesOneByOneGiveTheScheduleOfOneCall) {
     const ScheduleParameters parameters = parametersKeepingSomeLayers();
     const ScheduleInput input = helix(2.0);
-    const auto kept = schedule(input, parameters);
-    ScheduleInput copy = input;
-    const auto givenUp = schedule(std::move(copy), parameters);
-    ASSERT_TRUE(kept.has_value() && givenUp.has_value());
-    EXPECT_GT(kept->layers.size(), 1u);
-    expectTheSameSchedule(*givenUp, *kept);
-    EXPECT_TRUE(copy.axes.empty()); // freed once read
-}
-
-// An input that can be read again has its arrays freed as soon as the plane path is made; the
-// reconstruction check reads the centres again, the layers that keep the original orientation
-// their axes, and every figure is the same.
-TEST(ScheduleCases, AnInputReadAgainGivesTheResultOfAKeptOne) {
-    const ScheduleParameters parameters = parametersKeepingSomeLayers();
-    const ScheduleInput input = helix(2.0);
-    const auto kept = schedule(input, parameters);
-    ASSERT_TRUE(kept.has_value()) << kept.error().toString();
+    const auto whole = schedule(input, parameters);
+    ASSERT_TRUE(whole.has_value()) << whole.error().toString();
     const bool someLayerKeepsTheOriginal =
-        std::ranges::any_of(kept->layers, [](const LayerResult& layer) {
+        std::ranges::any_of(whole->layers, [](const LayerResult& layer) {
             return std::ranges::find(layer.flags, LayerStatus::MonotoneInfeasible) !=
                    layer.flags.end();
         });
     ASSERT_TRUE(someLayerKeepsTheOriginal);
 
-    ScheduleInput copy = input;
     std::atomic<std::size_t> centresRead = 0, axesRead = 0; // read from several threads
-    copy.centreAgain = [&](std::size_t i) {
-        ++centresRead;
-        return input.centres[i];
-    };
-    copy.axisAgain = [&](std::size_t i) {
-        ++axesRead;
-        return input.axes[i];
-    };
-    const auto readAgain = schedule(std::move(copy), parameters);
-    ASSERT_TRUE(readAgain.has_value()) << readAgain.error().toString();
-    EXPECT_TRUE(copy.centres.empty() && copy.axes.empty());
-    EXPECT_EQ(centresRead.load(), input.centres.size());
-    // Each (distinct) sample's axis for its original angle, and those of the layers that keep
-    // their orientation again.
-    EXPECT_GT(axesRead.load(), input.axes.size());
-    expectTheSameSchedule(*readAgain, *kept);
-
-    // Given only through the functions (no arrays): every centre and axis read where needed,
-    // the plane path's too, and the same schedule.
-    ScheduleInput onlyRead;
-    onlyRead.toolRadius = input.toolRadius;
-    onlyRead.centreAgain = [&](std::size_t i) { return input.centres[i]; };
-    onlyRead.axisAgain = [&](std::size_t i) { return input.axes[i]; };
-    onlyRead.readCount = input.centres.size();
-    const auto fromReads = schedule(onlyRead, parameters);
-    ASSERT_TRUE(fromReads.has_value()) << fromReads.error().toString();
-    expectTheSameSchedule(*fromReads, *kept);
+    const ScheduleSamples samples{.count = input.centres.size(),
+                                  .centreAt =
+                                      [&](std::size_t i) {
+                                          ++centresRead;
+                                          return input.centres[i];
+                                      },
+                                  .axisAt =
+                                      [&](std::size_t i) {
+                                          ++axesRead;
+                                          return input.axes[i];
+                                      },
+                                  .toolRadius = input.toolRadius};
+    auto path = makePlanePath(samples, parameters);
+    ASSERT_TRUE(path.has_value()) << path.error().toString();
+    auto plan = planLayers(std::move(*path), samples, parameters, nullptr);
+    ASSERT_TRUE(plan.has_value()) << plan.error().toString();
+    const auto staged = scheduleLayers(std::move(*plan), samples, parameters, nullptr);
+    ASSERT_TRUE(staged.has_value()) << staged.error().toString();
+    expectTheSameSchedule(*staged, *whole);
+    // Read where needed, no copy made: each centre for the plane path and the reconstruction
+    // check, each axis for the plane path and its original angle, and those of the layers that
+    // keep their orientation again.
+    EXPECT_GT(centresRead.load(), 2 * input.centres.size());
+    EXPECT_GT(axesRead.load(), 2 * input.axes.size());
 }
 
 TEST(ScheduleCases, NoisyCoordinatesStillGiveAMonotoneSchedule) {
@@ -314,18 +296,24 @@ TEST(ScheduleCases, CancelledRunReturnsCancelled) {
     EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
 }
 
-// A cancel that comes while the stages before the layers run (here: once the plane path is
-// made) ends the schedule there, not after every layer's turn to look at the token.
+// A cancel that comes while the stages before the layers run ends the schedule at the next
+// stage, not after every layer's turn to look at the token.
 TEST(ScheduleCases, ACancelBeforeTheLayersEndsTheRunWithCancelled) {
     CancelToken token;
-    ScheduleInput input = helix(2.0);
-    bool layersSplit = false;
-    input.planePathMade = [&] { token.requestCancel(); };
-    input.layersSplit = [&](std::span<const LayerBounds>) { layersSplit = true; };
-    auto result = schedule(input, bestPreset(), &token);
-    ASSERT_FALSE(result.has_value());
-    EXPECT_EQ(result.error().code, ErrorCode::Cancelled);
-    EXPECT_FALSE(layersSplit);
+    const ScheduleInput input = helix(2.0);
+    const ScheduleSamples samples = samplesOf(input);
+    auto path = makePlanePath(samples, bestPreset());
+    ASSERT_TRUE(path.has_value());
+    token.requestCancel();
+    auto plan = planLayers(*path, samples, bestPreset(), &token);
+    ASSERT_FALSE(plan.has_value());
+    EXPECT_EQ(plan.error().code, ErrorCode::Cancelled);
+
+    auto uncancelled = planLayers(std::move(*path), samples, bestPreset(), nullptr);
+    ASSERT_TRUE(uncancelled.has_value());
+    auto layers = scheduleLayers(std::move(*uncancelled), samples, bestPreset(), &token);
+    ASSERT_FALSE(layers.has_value());
+    EXPECT_EQ(layers.error().code, ErrorCode::Cancelled);
 }
 
 // Appendix B re-established: layer length 217.5 mm, theta_e = 2 pi, and the peak theta'' of

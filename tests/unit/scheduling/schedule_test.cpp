@@ -174,22 +174,23 @@ TEST(Schedule, ReleasingTheLayerSamplesKeepsTheNewAxesAndEveryPerLayerFigure) {
     }
 }
 
-TEST(Schedule, TheSplitHookGivesTheBoundsOfTheLayersTheResultHas) {
-    ScheduleInput input = appendixBHelix();
-    std::vector<std::vector<LayerBounds>> calls;
-    input.layersSplit = [&calls](std::span<const LayerBounds> layers) {
-        calls.emplace_back(layers.begin(), layers.end());
-    };
-    const auto result = schedule(input, bestPreset());
+TEST(Schedule, ThePlannedLayerBoundsAreTheBoundsOfTheResultsLayers) {
+    const ScheduleInput input = appendixBHelix();
+    const ScheduleSamples samples = samplesOf(input);
+    auto path = makePlanePath(samples, bestPreset());
+    ASSERT_TRUE(path.has_value()) << path.error().toString();
+    auto plan = planLayers(std::move(*path), samples, bestPreset(), nullptr);
+    ASSERT_TRUE(plan.has_value()) << plan.error().toString();
+    const std::vector<LayerBounds> planned = plan->bounds;
+    const auto result = scheduleLayers(std::move(*plan), samples, bestPreset(), nullptr);
     ASSERT_TRUE(result.has_value()) << result.error().toString();
 
-    ASSERT_EQ(calls.size(), 1u);
     const std::vector<LayerBounds> expected = layerBounds(*result);
     ASSERT_GT(expected.size(), 1u);
-    ASSERT_EQ(calls.front().size(), expected.size());
+    ASSERT_EQ(planned.size(), expected.size());
     for (std::size_t k = 0; k < expected.size(); ++k) {
-        EXPECT_EQ(calls.front()[k].first, expected[k].first) << k;
-        EXPECT_EQ(calls.front()[k].last, expected[k].last) << k;
+        EXPECT_EQ(planned[k].first, expected[k].first) << k;
+        EXPECT_EQ(planned[k].last, expected[k].last) << k;
     }
 }
 

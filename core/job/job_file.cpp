@@ -1,6 +1,7 @@
 #include "core/job/job_file.h"
 
 #include "core/base/file_io.h"
+#include "core/base/json_key_lines.h"
 #include "core/base/nearest_name.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
@@ -15,6 +16,8 @@
 #include <string_view>
 #include <utility>
 
+#include "generated/job_file_keys.h"
+
 namespace bladeaxis::job {
 
 namespace {
@@ -24,13 +27,16 @@ using Json = nlohmann::json;
 
 constexpr const char* kSchema = "bladeaxis-job/1";
 
-int lineOfKey(std::string_view text, std::string_view key) {
-    const std::size_t at = text.find("\"" + std::string(key) + "\"");
-    if (at == std::string_view::npos) {
-        return 0;
+// A key path as the file reads: "parameters.margin_deg", "layer_edits[2].key_points".
+std::string dotted(const std::vector<std::string>& keyPath) {
+    std::string text;
+    for (const std::string& segment : keyPath) {
+        const bool index = !segment.empty() && std::ranges::all_of(segment, [](char c) {
+            return c >= '0' && c <= '9';
+        });
+        text += index ? "[" + segment + "]" : (text.empty() ? "" : ".") + segment;
     }
-    return 1 +
-           static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    return text;
 }
 
 class JobReader {
@@ -40,9 +46,15 @@ class JobReader {
     Status read(const Json& root, JobSpec& spec) const;
 
   private:
+    // At the key's line, named as the file names it: "parameters.margin_deg",
+    // "layer_edits[2].preset".
+    std::unexpected<Error> failAt(const std::vector<std::string>& keyPath,
+                                  const std::string& what) const {
+        return makeError(ErrorCode::InvalidArgument, dotted(keyPath) + ": " + what,
+                         {m_path.string(), lineOfJsonKey(m_text, keyPath), 0});
+    }
     std::unexpected<Error> fail(std::string_view key, const std::string& what) const {
-        return makeError(ErrorCode::InvalidArgument, std::string(key) + ": " + what,
-                         {m_path.string(), lineOfKey(m_text, key), 0});
+        return failAt({std::string(key)}, what);
     }
     Result<fs::path> pathValue(const Json& root, const char* key) const;
     Result<double> positiveNumber(const Json& root, const char* key) const;
@@ -52,10 +64,10 @@ class JobReader {
     Status programReading(const Json& root, JobSpec& spec) const;
     Status confineOutputs(const Json& root, const JobSpec& spec) const;
     Status knownKeys(const Json& object, std::span<const std::string_view> known,
-                     std::string_view where) const;
+                     std::string_view where, const std::vector<std::string>& at = {}) const;
     Status layerEdits(const Json& list, JobSpec& spec) const;
-    Result<scheduling::LayerOverride> layerEdit(const Json& object) const;
-    Result<std::vector<Vec2>> keyPoints(const Json& list) const;
+    Result<scheduling::LayerOverride> layerEdit(const Json& object, std::size_t index) const;
+    Result<std::vector<Vec2>> keyPoints(const Json& list, const std::vector<std::string>& at) const;
 
     std::string_view m_text;
     fs::path m_path;
@@ -128,38 +140,11 @@ Status JobReader::confineOutputs(const Json& root, const JobSpec& spec) const {
 
 namespace {
 
-// Every key of a job file (docs/job-file.md) and of one of its layer edits.
-constexpr std::string_view kJobKeys[] = {"schema",
-                                         "program",
-                                         "machine",
-                                         "cad",
-                                         "output_program",
-                                         "output_cl",
-                                         "output_dir",
-                                         "demo",
-                                         "analyse_only",
-                                         "compare",
-                                         "compare_optimum",
-                                         "tool_radius_mm",
-                                         "preset",
-                                         "parameters",
-                                         "cad_translate_mm",
-                                         "cad_rotate_deg",
-                                         "stick_out_mm",
-                                         "holder_radius_mm",
-                                         "holder_length_mm",
-                                         "layer_edits",
-                                         "feed_reference",
-                                         "feed_mm_min",
-                                         "derivatives",
-                                         "filter_ms",
-                                         "angle_unit",
-                                         "dialect",
-                                         "columns",
-                                         "b_tolerance_deg",
-                                         "channel_tolerance_deg"};
-constexpr std::string_view kLayerEditKeys[] = {"layer",    "preset",        "margin_deg",
-                                               "eps_rule", "lead_fraction", "key_points"};
+// The keys a job file, its parameters and its layer edits may hold are its schema's (generated
+// from resources/schemas/job-file.schema.json, docs/job-file.md).
+using file_keys::kJobKeys;
+using file_keys::kLayerEditKeys;
+using file_keys::kParameterKeys;
 
 // "; did you mean \"output_cl\"?" for a key near a known one (core/base/nearest_name.h).
 std::string suggestion(std::string_view key, std::span<const std::string_view> known) {
@@ -172,14 +157,16 @@ std::string suggestion(std::string_view key, std::span<const std::string_view> k
 // A key the reader does not know was ignored, so a misspelt "output_programm" wrote nothing
 // and a key a newer version reads was silently dropped: it is refused at its line.
 Status JobReader::knownKeys(const Json& object, std::span<const std::string_view> known,
-                            std::string_view where) const {
+                            std::string_view where, const std::vector<std::string>& at) const {
     if (!object.is_object()) {
         return {};
     }
     for (const auto& [key, value] : object.items()) {
         if (std::ranges::find(known, key) == known.end()) {
-            return fail(key, "unknown key in " + std::string(where) + " (docs/job-file.md)" +
-                                 suggestion(key, known));
+            std::vector<std::string> keyPath = at;
+            keyPath.push_back(key);
+            return failAt(keyPath, "unknown key in " + std::string(where) + " (docs/job-file.md)" +
+                                       suggestion(key, known));
         }
     }
     return {};
@@ -207,10 +194,16 @@ Status JobReader::parameters(const Json& object, JobSpec& spec) const {
     if (!object.is_object()) {
         return fail("parameters", "expected an object of scheduling parameters");
     }
+    if (auto status =
+            knownKeys(object, kParameterKeys, "the scheduling parameters", {"parameters"});
+        !status) {
+        return status;
+    }
     for (const auto& [key, value] : object.items()) {
         const ParameterInfo* info = findParameter(key);
-        if (info == nullptr) {
-            return fail(key, "unknown scheduling parameter (see docs/job-file.md)");
+        if (info == nullptr) { // in the schema but not in the parameter schema: a bug
+            return makeError(ErrorCode::Internal, "the scheduling parameter " + key +
+                                                      " of the job-file schema is not known");
         }
         std::string text;
         if (value.is_string()) {
@@ -220,10 +213,10 @@ Status JobReader::parameters(const Json& object, JobSpec& spec) const {
         } else if (value.is_number()) {
             text = formatShortest(value.get<double>());
         } else {
-            return fail(key, "expected a number, a string or true/false");
+            return failAt({"parameters", key}, "expected a number, a string or true/false");
         }
         if (auto status = info->set(spec.parameters, text); !status) {
-            return fail(key, status.error().message.substr(key.size() + 2));
+            return failAt({"parameters", key}, status.error().message.substr(key.size() + 2));
         }
     }
     return {};
@@ -311,45 +304,52 @@ Status JobReader::analysisOptions(const Json& root, JobSpec& spec) const {
     return {};
 }
 
-Result<std::vector<Vec2>> JobReader::keyPoints(const Json& list) const {
+Result<std::vector<Vec2>> JobReader::keyPoints(const Json& list,
+                                               const std::vector<std::string>& at) const {
     std::vector<Vec2> points;
     if (!list.is_array()) {
-        return fail("key_points", "expected a list of [S mm, theta rad] pairs");
+        return failAt(at, "expected a list of [S mm, theta rad] pairs");
     }
     if (list.size() > kMaxKeyPointsPerLayer) {
-        return fail("key_points", "expected at most " + std::to_string(kMaxKeyPointsPerLayer) +
-                                      " key points in a layer, found " +
-                                      std::to_string(list.size()));
+        return failAt(at, "expected at most " + std::to_string(kMaxKeyPointsPerLayer) +
+                              " key points in a layer, found " + std::to_string(list.size()));
     }
     for (const Json& pair : list) {
         if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number() || !pair[1].is_number()) {
-            return fail("key_points", "expected [S mm, theta rad], got " + pair.dump());
+            return failAt(at, "expected [S mm, theta rad], got " + pair.dump());
         }
         points.emplace_back(pair[0].get<double>(), pair[1].get<double>());
     }
     return points;
 }
 
-Result<scheduling::LayerOverride> JobReader::layerEdit(const Json& object) const {
+Result<scheduling::LayerOverride> JobReader::layerEdit(const Json& object,
+                                                       std::size_t index) const {
+    const std::vector<std::string> at{"layer_edits", std::to_string(index)};
+    const auto keyAt = [&at](const char* key) {
+        std::vector<std::string> keyPath = at;
+        keyPath.emplace_back(key);
+        return keyPath;
+    };
     scheduling::LayerOverride edit;
     if (!object.is_object() || !object.contains("layer") ||
         !object.at("layer").is_number_unsigned()) {
-        return fail("layer_edits", "expected objects with \"layer\": a layer number");
+        return failAt(at, "expected an object with \"layer\": a layer number");
     }
-    if (auto status = knownKeys(object, kLayerEditKeys, "a layer edit"); !status) {
+    if (auto status = knownKeys(object, kLayerEditKeys, "a layer edit", at); !status) {
         return std::unexpected(status.error());
     }
     edit.layer = object.at("layer").get<std::size_t>();
     if (object.contains("preset")) {
         const Json& preset = object.at("preset");
         if (!preset.is_string() || !presetParameters(preset.get<std::string>())) {
-            return fail("preset", "expected \"faithful\" or \"best\"");
+            return failAt(keyAt("preset"), "expected \"faithful\" or \"best\"");
         }
         edit.preset = presetParameters(preset.get<std::string>())->preset;
     }
     if (object.contains("margin_deg")) {
         if (!object.at("margin_deg").is_number()) {
-            return fail("margin_deg", "expected a number of degrees");
+            return failAt(keyAt("margin_deg"), "expected a number of degrees");
         }
         edit.marginRad = units::degToRad(object.at("margin_deg").get<double>());
     }
@@ -358,19 +358,19 @@ Result<scheduling::LayerOverride> JobReader::layerEdit(const Json& object) const
                                      ? object.at("eps_rule").get<std::string>()
                                      : std::string();
         if (rule != "paper" && rule != "exact") {
-            return fail("eps_rule", "expected \"paper\" or \"exact\"");
+            return failAt(keyAt("eps_rule"), "expected \"paper\" or \"exact\"");
         }
         edit.epsilonRule =
             rule == "paper" ? scheduling::EpsilonRule::Paper : scheduling::EpsilonRule::Exact;
     }
     if (object.contains("lead_fraction")) {
         if (!object.at("lead_fraction").is_number()) {
-            return fail("lead_fraction", "expected a number");
+            return failAt(keyAt("lead_fraction"), "expected a number");
         }
         edit.leadFraction = object.at("lead_fraction").get<double>();
     }
     if (object.contains("key_points")) {
-        auto points = keyPoints(object.at("key_points"));
+        auto points = keyPoints(object.at("key_points"), keyAt("key_points"));
         if (!points) {
             return std::unexpected(points.error());
         }
@@ -389,8 +389,8 @@ Status JobReader::layerEdits(const Json& list, JobSpec& spec) const {
                                        std::to_string(list.size()));
     }
     spec.layerEdits.clear();
-    for (const Json& object : list) {
-        auto edit = layerEdit(object);
+    for (std::size_t index = 0; index < list.size(); ++index) {
+        auto edit = layerEdit(list[index], index);
         if (!edit) {
             return std::unexpected(edit.error());
         }

@@ -11,10 +11,13 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <ranges>
 #include <span>
 #include <vector>
+
+#include "generated/machine_file_keys.h"
 
 namespace bladeaxis::kinematics {
 
@@ -55,22 +58,21 @@ std::string joinPath(const std::vector<std::string>& segments) {
     return dotted;
 }
 
-// The keys each object of a machine file may hold (docs/machine-file.md). A key outside them
-// was ignored, so "max_mmm" silently dropped the travel check: it is refused.
-constexpr std::string_view kTopKeys[] = {
-    "schema",          "name",      "kinematics", "axes", "integer_words", "least_input_increment",
-    "feed_per_minute", "controller"};
-constexpr std::string_view kKinematicsKeys[] = {
-    "type", "pivot_length_mm", "table_offset_mm", "head_offset_mm", "a_sign", "b_sign"};
-constexpr std::string_view kLinearAxisKeys[] = {
-    "min_mm", "max_mm", "velocity_mm_s", "acceleration_mm_s2", "jerk_mm_s3", "backlash_mm"};
-constexpr std::string_view kRotaryAxisKeys[] = {
-    "min_deg", "max_deg", "velocity_deg_s", "acceleration_deg_s2", "jerk_deg_s3", "backlash_deg"};
-constexpr std::string_view kTableAxisKeys[] = {
-    "min_deg",      "max_deg", "velocity_deg_s", "acceleration_deg_s2", "jerk_deg_s3",
-    "backlash_deg", "mode"};
-constexpr std::string_view kIncrementKeys[] = {"mm", "inch", "deg"};
-constexpr std::string_view kControllerKeys[] = {"planner"};
+// The keys each object of a machine file may hold are its schema's (generated from
+// resources/schemas/machine-file.schema.json, docs/machine-file.md). A key outside them was
+// ignored, so "max_mmm" silently dropped the travel check: it is refused.
+using file_keys::kAxisLetters;
+using file_keys::kControllerKeys;
+using file_keys::kIncrementKeys;
+using file_keys::kKinematicsKeys;
+using file_keys::kLinearAxisKeys;
+using file_keys::kTableAxisKeys;
+using file_keys::kTopKeys;
+
+// A head axis takes a table axis's keys but its mode: only the table turns modulo.
+bool isHeadAxisKey(std::string_view key) {
+    return key != "mode";
+}
 
 class MachineReader {
   public:
@@ -209,22 +211,27 @@ Status MachineReader::axisKeys(const Json& axes, char letter, AxisId id) const {
     if (!axes.contains(name) || !axes.at(name).is_object()) {
         return {}; // axis() names what is missing
     }
-    using Keys = std::span<const std::string_view>;
-    const Keys known = !isRotary(id)     ? Keys(kLinearAxisKeys)
-                       : id == AxisId::A ? Keys(kTableAxisKeys)
-                                         : Keys(kRotaryAxisKeys);
+    const bool rotary = isRotary(id);
+    std::vector<std::string_view> known(
+        rotary ? std::begin(kTableAxisKeys) : std::begin(kLinearAxisKeys),
+        rotary ? std::end(kTableAxisKeys) : std::end(kLinearAxisKeys));
+    if (rotary && id != AxisId::A) {
+        std::erase_if(known, [](std::string_view key) { return !isHeadAxisKey(key); });
+    }
     // "min_deg" on a linear axis is three edits from "min_mm": the unit's counterpart is named.
-    const Keys otherUnit = isRotary(id) ? Keys(kLinearAxisKeys) : Keys(kRotaryAxisKeys);
+    const auto [unit, otherUnit] = rotary ? std::pair{"_deg", "_mm"} : std::pair{"_mm", "_deg"};
     for (const auto& [key, unused] : axes.at(name).items()) {
-        const auto counterpart = std::ranges::find(otherUnit, key);
-        if (counterpart != otherUnit.end()) {
-            const std::string_view meant =
-                known[static_cast<std::size_t>(counterpart - otherUnit.begin())];
+        const std::size_t at = key.find(otherUnit);
+        if (at == std::string::npos) {
+            continue;
+        }
+        const std::string meant =
+            key.substr(0, at) + unit + key.substr(at + std::strlen(otherUnit));
+        if (std::ranges::find(known, meant) != known.end()) {
             return failAt({"axes", name, key},
-                          std::string(isRotary(id) ? "a rotary axis takes _deg keys"
-                                                   : "a linear axis takes _mm keys") +
-                              " (docs/machine-file.md); did you mean \"" + std::string(meant) +
-                              "\"?");
+                          std::string(rotary ? "a rotary axis takes _deg keys"
+                                             : "a linear axis takes _mm keys") +
+                              " (docs/machine-file.md); did you mean \"" + meant + "\"?");
         }
     }
     return knownKeys(axes.at(name), {"axes", name}, known);
@@ -332,7 +339,6 @@ Status MachineReader::axes(const Json& root, MachineModel& machine) const {
     if (!machine.hasB() && root.at("axes").contains(tilt)) {
         return fail("axes." + tilt, "the machine has a fixed head: expected no " + tilt + " axis");
     }
-    constexpr std::string_view kAxisLetters[] = {"X", "Y", "Z", "A", "B"};
     if (auto status = knownKeys(root.at("axes"), {"axes"}, kAxisLetters); !status) {
         return status;
     }

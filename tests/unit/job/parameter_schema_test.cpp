@@ -2,6 +2,7 @@
 #include "core/job/parameter_schema.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -251,8 +252,34 @@ TEST(JobFile, UnknownParameterNamesTheKeyAndLine) {
     JobSpec spec;
     const auto status = parseJobJson(text, "job.json", spec);
     ASSERT_FALSE(status.has_value());
-    EXPECT_EQ(status.error().toString(), "job.json:4: invalid argument: margn_deg: unknown "
-                                         "scheduling parameter (see docs/job-file.md)");
+    EXPECT_EQ(status.error().toString(),
+              "job.json:4: invalid argument: parameters.margn_deg: unknown key in the scheduling "
+              "parameters (docs/job-file.md); did you mean \"margin_deg\"?");
+}
+
+// The key is found by its path, not by its first occurrence: a layer edit's preset is not the
+// job's, and a value out of range is named as the file names it.
+TEST(JobFile, AnErrorInALayerEditNamesTheEditsLineAndKey) {
+    const std::string text = "{\n \"schema\": \"bladeaxis-job/1\",\n \"preset\": \"best\",\n"
+                             " \"layer_edits\": [\n  { \"layer\": 1 },\n"
+                             "  { \"layer\": 2, \"preset\": \"bogus\" }\n ]\n}";
+    JobSpec spec;
+    const auto status = parseJobJson(text, "job.json", spec);
+    ASSERT_FALSE(status.has_value());
+    EXPECT_EQ(status.error().toString(), "job.json:6: invalid argument: layer_edits[1].preset: "
+                                         "expected \"faithful\" or \"best\"");
+}
+
+TEST(JobFile, AParameterOutOfRangeIsNamedWithItsSectionAndUnit) {
+    const std::string text =
+        "{\n \"schema\": \"bladeaxis-job/1\",\n \"parameters\": {\n  \"margin_deg\": 99\n }\n}";
+    JobSpec spec;
+    const auto status = parseJobJson(text, "job.json", spec);
+    ASSERT_FALSE(status.has_value());
+    EXPECT_EQ(status.error().where.line, 4);
+    EXPECT_NE(status.error().message.find("parameters.margin_deg: expected a number from 0 to 45"),
+              std::string::npos)
+        << status.error().message;
 }
 
 TEST(JobFile, BadValuesAreRejected) {
@@ -266,6 +293,75 @@ TEST(JobFile, BadValuesAreRejected) {
         parseJobJson("{\"schema\": \"bladeaxis-job/1\", \"parameters\": {\"margin_deg\": \"x\"}}",
                      "j.json", spec));
     EXPECT_FALSE(parseJobJson("not json", "j.json", spec).has_value());
+}
+
+// The job-file schema (resources/schemas/job-file.schema.json) describes each scheduling
+// parameter as the reader takes it: the same keys, kinds, ranges and choices.
+TEST(JobFileSchema, DescribesEveryParameterAsTheReaderTakesIt) {
+    std::ifstream file(std::string(BLADEAXIS_SOURCE_DIR) +
+                       "/resources/schemas/job-file.schema.json");
+    ASSERT_TRUE(file.good());
+    const nlohmann::json schema = nlohmann::json::parse(file);
+    const nlohmann::json& described = schema.at("properties").at("parameters").at("properties");
+    std::set<std::string> keys;
+    for (const ParameterInfo& info : scheduleParameterSchema()) {
+        keys.insert(info.key);
+        ASSERT_TRUE(described.contains(info.key)) << info.key;
+        const nlohmann::json& entry = described.at(info.key);
+        switch (info.kind) {
+        case ParameterInfo::Kind::Number:
+        case ParameterInfo::Kind::Integer:
+            EXPECT_EQ(entry.at("type"),
+                      info.kind == ParameterInfo::Kind::Number ? "number" : "integer")
+                << info.key;
+            EXPECT_EQ(entry.at("minimum").get<double>(), info.min) << info.key;
+            EXPECT_EQ(entry.at("maximum").get<double>(), info.max) << info.key;
+            break;
+        case ParameterInfo::Kind::Choice:
+            EXPECT_EQ(entry.at("enum").get<std::vector<std::string>>(), info.choices) << info.key;
+            break;
+        case ParameterInfo::Kind::Flag:
+            EXPECT_EQ(entry.at("type"), "boolean") << info.key;
+            break;
+        }
+    }
+    for (const auto& [key, unused] : described.items()) {
+        EXPECT_TRUE(keys.contains(key)) << key << " is in the schema but not a parameter";
+    }
+}
+
+// What the window saves is what the schema describes: every key of a written job, with layer
+// edits and parameters, is one of its object's properties.
+TEST(JobFileSchema, AJobTheProgramWritesHasOnlyTheSchemasKeys) {
+    JobSpec spec;
+    spec.program = "/data/blade.nc";
+    spec.machineFile = "/data/machine.json";
+    spec.cad.file = "/data/blade.step";
+    spec.outputProgram = "/data/out.nc";
+    spec.outputDir = "/data/report";
+    spec.toolRadius = 4.0;
+    spec.parameters.marginRad = 0.05;
+    scheduling::LayerOverride edit;
+    edit.layer = 2;
+    edit.marginRad = 0.03;
+    edit.keyPoints = {{0.0, 0.0}, {5.0, 0.1}};
+    spec.layerEdits.push_back(edit);
+    const nlohmann::json job = nlohmann::json::parse(jobJsonText(spec, "/data"));
+    std::ifstream file(std::string(BLADEAXIS_SOURCE_DIR) +
+                       "/resources/schemas/job-file.schema.json");
+    const nlohmann::json schema = nlohmann::json::parse(file);
+    const auto expectKnown = [](const nlohmann::json& object, const nlohmann::json& objectSchema) {
+        for (const auto& [key, unused] : object.items()) {
+            EXPECT_TRUE(objectSchema.at("properties").contains(key)) << key;
+        }
+    };
+    expectKnown(job, schema);
+    ASSERT_TRUE(job.contains("parameters"));
+    expectKnown(job.at("parameters"), schema.at("properties").at("parameters"));
+    ASSERT_TRUE(job.contains("layer_edits"));
+    for (const nlohmann::json& written : job.at("layer_edits")) {
+        expectKnown(written, schema.at("properties").at("layer_edits").at("items"));
+    }
 }
 
 } // namespace

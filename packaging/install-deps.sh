@@ -20,6 +20,8 @@ packages=(
     pybind11-dev python3-dev python3-numpy python3-pytest python3-jsonschema
     # LinuxCNC as a client of the written programs: rs274 in make test, the planner in make controller-check
     linuxcnc-uspace
+    # FreeCAD 0.20 (its CAM/Path workbench) for the FreeCAD plug-in's test, run in freecadcmd
+    freecad
 )
 
 missing=()

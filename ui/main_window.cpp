@@ -698,7 +698,7 @@ void MainWindow::showSelectedLayer(int layer) {
                           : m_spec.parameters;
     const auto& scheduled = m_result->rescheduled->schedule.layers[index];
     showLayerInListing(scheduled.first, scheduled.last);
-    m_editor->setLayer(scheduled, parameters);
+    m_editor->setLayer(scheduled, parameters, index);
     m_plots->setHighlightedSpan(
         layerTimeSpan(m_result->rescheduled->profile, scheduled.first, scheduled.last),
         tr("layer %1").arg(layer));

@@ -19,6 +19,11 @@ namespace {
 
 constexpr double kPickRadius = 8.0;
 constexpr double kGap = 6.0; // between the frame, labels and strips
+// The message strip is as high as this message, as long as the editor's longest refusal, needs
+// at the editor's width: the strip changes with the width only, not when a message appears.
+const char* const kLongestMessage =
+    "Layer 000 refused: the segment from key point 000 to key point 000 leaves the channel by "
+    "000.00 deg at S = 0000.00 mm";
 
 const QColor kRawChannel(120, 160, 220, 110);
 const QColor kHull(80, 180, 120, 140);
@@ -75,8 +80,9 @@ SThetaEditor::SThetaEditor(QWidget* parent) : QWidget(parent) {
 }
 
 void SThetaEditor::setLayer(const scheduling::LayerResult& layer,
-                            const scheduling::ScheduleParameters& parameters) {
+                            const scheduling::ScheduleParameters& parameters, std::size_t number) {
     m_layer = layer;
+    m_layerNumber = number;
     m_parameters = parameters;
     m_refusal.clear();
     m_pending.clear();
@@ -100,7 +106,8 @@ void SThetaEditor::setPending(const QString& message) {
 }
 
 QString SThetaEditor::message() const {
-    return !m_refusal.isEmpty() ? tr("Refused: %1").arg(m_refusal) : m_pending;
+    return !m_refusal.isEmpty() ? tr("Layer %1 refused: %2").arg(m_layerNumber).arg(m_refusal)
+                                : m_pending;
 }
 
 // The strips above the data: the legend (wrapped to the width), then the refusal or pending
@@ -111,14 +118,19 @@ void SThetaEditor::relayout() {
     m_legendHeight = static_cast<double>(legendRows(width() - 2.0 * kGap, metrics).size()) *
                          (metrics.height() + 2.0) +
                      kGap;
-    m_messageRect = QRectF();
+    const QRectF available(kGap, m_legendHeight, width() - 2.0 * kGap, height());
+    double messageHeight =
+        metrics
+            .boundingRect(available, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop,
+                          QString::fromLatin1(kLongestMessage))
+            .height();
     if (const QString text = message(); !text.isEmpty()) {
-        const QRectF available(kGap, m_legendHeight, width() - 2.0 * kGap, height());
         const QRectF needed =
             metrics.boundingRect(available, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, text);
-        m_messageRect =
-            QRectF(available.left(), available.top(), available.width(), needed.height() + kGap);
+        messageHeight = std::max(messageHeight, needed.height());
     }
+    m_messageRect =
+        QRectF(available.left(), available.top(), available.width(), messageHeight + kGap);
     const double left = metrics.horizontalAdvance(QStringLiteral("-0000")) + 2.0 * kGap;
     const double top = m_legendHeight + m_messageRect.height() + metrics.height() + kGap;
     const double bottom = 2.0 * metrics.height() + kGap;
@@ -434,11 +446,11 @@ void SThetaEditor::paintCurves(QPainter& painter) const {
     painter.restore();
 }
 
-// The whole refusal or pending message, wrapped in its own strip above the plot (the plot
-// shrinks to make room), never cut off.
+// The whole refusal or pending message, wrapped in its own strip above the plot (kept while no
+// message is shown, so the plot stays where it is), never cut off.
 void SThetaEditor::paintMessages(QPainter& painter) const {
     const QRectF strip = messageRect();
-    if (strip.isEmpty()) {
+    if (message().isEmpty()) {
         return;
     }
     painter.setBrush(Qt::NoBrush);

@@ -22,19 +22,24 @@ class SThetaEditor final : public QWidget {
   public:
     explicit SThetaEditor(QWidget* parent = nullptr);
 
+    // `number` is the layer's number as the layer table shows it, for the messages.
     void setLayer(const scheduling::LayerResult& layer,
-                  const scheduling::ScheduleParameters& parameters);
+                  const scheduling::ScheduleParameters& parameters, std::size_t number);
     void clearLayer();
     const std::optional<scheduling::LayerResult>& layer() const { return m_layer; }
     // Widget position of polyline vertex `index` (for tests and tooltips).
     QPointF vertexPosition(std::size_t index) const;
     QString refusal() const { return m_refusal; }
+    // The message the strip above the plot shows: the refusal with its layer, or what is pending.
+    QString message() const;
     // The legend's entries, drawn above the plot in this order.
     QStringList legendNames() const;
     // The data rectangle: the legend and the message strip are above it, never on it.
     QRectF plotArea() const { return m_plotArea; }
     // The legend's strip and the message's (empty without a message), in widget coordinates.
     double legendHeight() const { return m_legendHeight; }
+    // The message strip is kept whether or not a message is shown, so that the plot does not
+    // move when one appears; it grows only for a message longer than its reserved lines.
     QRectF messageRect() const { return m_messageRect; }
     // The hover readout at a widget position: S, scheduled and original theta, the channel.
     QString readoutAt(QPointF position) const;
@@ -69,7 +74,6 @@ class SThetaEditor final : public QWidget {
     void paintBands(QPainter& painter) const;
     void paintCurves(QPainter& painter) const;
     void paintMessages(QPainter& painter) const;
-    QString message() const;
     void relayout();
 
     std::optional<scheduling::LayerResult> m_layer;
@@ -79,6 +83,7 @@ class SThetaEditor final : public QWidget {
     std::vector<Vec2> m_dragStart;
     QString m_refusal;
     QString m_pending;
+    std::size_t m_layerNumber = 0;
     double m_legendHeight = 0.0;
     QRectF m_messageRect, m_plotArea; // relayout()
 };

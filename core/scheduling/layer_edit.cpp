@@ -1,5 +1,7 @@
 #include "core/scheduling/layer_edit.h"
 
+#include "core/base/number_io.h"
+#include "core/base/units.h"
 #include "core/scheduling/layer_scheduler.h"
 #include "core/scheduling/linearisation.h"
 #include "core/scheduling/smoothing.h"
@@ -27,6 +29,16 @@ std::size_t nearestSample(std::span<const double> s, double value) {
     return static_cast<std::size_t>(std::distance(s.begin(), chosen));
 }
 
+// Key points are named 1-based, as the editor's table counts them, and amounts in degrees with
+// two decimals, as the editor shows them.
+std::string pointName(std::size_t index) {
+    return "key point " + std::to_string(index + 1);
+}
+
+std::string degrees(double radians) {
+    return formatFixed(units::radToDeg(radians), 2) + " deg";
+}
+
 Result<std::vector<PolyVertex>> snapToSamples(const LayerResult& layer,
                                               std::span<const Vec2> vertices) {
     if (vertices.size() < 2) {
@@ -39,8 +51,10 @@ Result<std::vector<PolyVertex>> snapToSamples(const LayerResult& layer,
         }
         const std::size_t index = nearestSample(layer.s, vertex.x());
         if (!snapped.empty() && index <= snapped.back().index) {
-            return makeError(ErrorCode::InvalidArgument,
-                             "key points must be at increasing S, one sample apart at least");
+            return makeError(
+                ErrorCode::InvalidArgument,
+                pointName(snapped.size()) + " is not after " + pointName(snapped.size() - 1) +
+                    " in S: key points are at increasing S, one sample apart at least");
         }
         snapped.push_back({index, layer.s[index], vertex.y(), false});
     }
@@ -57,9 +71,16 @@ Status checkEnds(const LayerResult& layer, std::span<const PolyVertex> vertices,
         vertices.front().index == 0 && std::abs(vertices.front().theta - first.y()) <= tol;
     const bool sameEnd = vertices.back().index == layer.s.size() - 1 &&
                          std::abs(vertices.back().theta - last.y()) <= tol;
-    if (!sameStart || !sameEnd) {
+    if (!sameStart) {
         return makeError(ErrorCode::InvalidArgument,
-                         "the first and last key points join the neighbouring layers and stay");
+                         pointName(0) + " joins the layer before and stays: it moved by " +
+                             degrees(std::abs(vertices.front().theta - first.y())));
+    }
+    if (!sameEnd) {
+        return makeError(ErrorCode::InvalidArgument,
+                         pointName(vertices.size() - 1) +
+                             " joins the layer after and stays: it moved by " +
+                             degrees(std::abs(vertices.back().theta - last.y())));
     }
     return {};
 }
@@ -67,9 +88,11 @@ Status checkEnds(const LayerResult& layer, std::span<const PolyVertex> vertices,
 Status checkMonotone(std::span<const PolyVertex> vertices, double tol) {
     const double direction = vertices.back().theta >= vertices.front().theta ? 1.0 : -1.0;
     for (std::size_t i = 1; i < vertices.size(); ++i) {
-        if ((vertices[i].theta - vertices[i - 1].theta) * direction < -tol) {
+        const double step = (vertices[i].theta - vertices[i - 1].theta) * direction;
+        if (step < -tol) {
             return makeError(ErrorCode::InvalidArgument,
-                             "key point " + std::to_string(i) + " breaks the monotone theta(S)");
+                             pointName(i) + " turns theta(S) back by " + degrees(-step) + " from " +
+                                 pointName(i - 1) + ": the rotary axis would reverse");
         }
     }
     return {};
@@ -83,10 +106,12 @@ Status checkInsideHull(const LayerResult& layer, std::span<const PolyVertex> ver
             const double t = (layer.s[i] - a.s) / (b.s - a.s);
             const double theta = a.theta + t * (b.theta - a.theta);
             if (theta < layer.lo[i] - tol || theta > layer.hi[i] + tol) {
+                const double outside =
+                    theta < layer.lo[i] ? layer.lo[i] - theta : theta - layer.hi[i];
                 return makeError(ErrorCode::InvalidArgument,
-                                 "the segment from key point " + std::to_string(v - 1) +
-                                     " leaves the channel at S = " + std::to_string(layer.s[i]) +
-                                     " mm");
+                                 "the segment from " + pointName(v - 1) + " to " + pointName(v) +
+                                     " leaves the channel by " + degrees(outside) +
+                                     " at S = " + formatFixed(layer.s[i], 2) + " mm");
             }
         }
     }

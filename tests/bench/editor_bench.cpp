@@ -29,7 +29,7 @@ void sendMouse(QWidget& widget, QEvent::Type type, QPointF at) {
 void dragStepWithRepaint(benchmark::State& state) {
     bladeaxis::ui::SThetaEditor editor;
     editor.resize(900, 600);
-    editor.setLayer(sShapedLayer(), bladeaxis::scheduling::bestPreset());
+    editor.setLayer(sShapedLayer(), bladeaxis::scheduling::bestPreset(), 0);
     QImage frame(editor.size(), QImage::Format_ARGB32_Premultiplied);
     const QPointF start = editor.vertexPosition(2);
     sendMouse(editor, QEvent::MouseButtonPress, start);

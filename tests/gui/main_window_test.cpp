@@ -30,6 +30,7 @@
 #include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
@@ -350,12 +351,23 @@ class MainWindowTest final : public QObject {
         m_window->selectLayer(target);
         bladeaxis::ui::SThetaEditor* editor = m_window->editor();
         QVERIFY(editor->plotArea().top() >= editor->legendHeight());
+        const QRectF plotBefore = editor->plotArea();
         // A key point pulled far outside the channel is refused; the whole reason is shown in
-        // its own strip above the plot, which shrinks to make room.
+        // its own strip above the plot, kept while no message shows, so the plot stays put.
         std::vector<bladeaxis::Vec2> vertices = editor->layer()->polyline;
         vertices[1].y() += 50.0;
         QVERIFY(!editor->applyVertices(vertices));
         QVERIFY(!editor->refusal().isEmpty());
+        QCOMPARE(editor->plotArea(), plotBefore);
+        // It names the layer as the table does, the key point 1-based and the amount in degrees
+        // with two decimals.
+        const QString message = editor->message();
+        QVERIFY2(message.startsWith(QStringLiteral("Layer %1 refused: ").arg(target)),
+                 qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("key point 2")), qPrintable(message)); // moved
+        QVERIFY2(!message.contains(QStringLiteral("key point 0")), qPrintable(message));
+        QVERIFY2(QRegularExpression(QStringLiteral("\\d+\\.\\d\\d deg")).match(message).hasMatch(),
+                 qPrintable(message));
         const QRectF strip = editor->messageRect();
         QVERIFY(!strip.isEmpty());
         QVERIFY(strip.top() >= editor->legendHeight());

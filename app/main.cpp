@@ -37,10 +37,10 @@ int main(int argc, char** argv) {
     // First, so that Ctrl+C at start-up cancels a batch run (exit 7) rather than killing it;
     // the window restores the system's default below.
     bladeaxis::app::installBatchInterruptHandlers();
-    // One policy for the window and the batch front end alike: large blocks go back to the
-    // system when freed (app/memory/memory_policy.h). The batch front end used to keep them
-    // for reuse as well, which undid this for blocks of 4 MB and more; it was measured to add
-    // about 100 MB to the five-million-block peak and was removed (docs/performance.md).
+    // One policy for the window and the batch front end: large blocks go back to the system
+    // when freed. The batch front end also kept freed blocks for reuse, which undid this for
+    // blocks of 4 MB and more and raised the five-million-block peak by about 100 MB
+    // (docs/performance.md, "Memory policy of the executable").
     bladeaxis::app::returnLargeBlocksToTheSystem();
     const std::vector<std::string> given(argv, argv + argc);
     const auto exists = [](const std::string& path) {

@@ -21,6 +21,7 @@ if [[ ${1:-} == --installed-from ]]; then
     shift 2
 fi
 files+=("$@")
+[[ ${#files[@]} -gt 0 ]] || { echo "usage: $0 [--installed-from BUILD_DIR] [FILE...]" >&2; exit 2; }
 
 # The replaceable forms ([new.delete]): single and array, sized, aligned and nothrow. Placement
 # new (_ZnwmPv) is not replaceable and is not matched.
@@ -28,9 +29,10 @@ replaceable='^_Z(n[wa][mj](St11align_val_t)?(RKSt9nothrow_t)?|d[la]Pv[mj]?(St11a
 found=0
 for file in "${files[@]}"; do
     # -A -P: "archive[member]: symbol type value size", one line per defined symbol, local
-    # ones too (a module's hidden replacement still serves its own allocations).
-    definitions=$(nm -A -P --defined-only "$file" 2>/dev/null |
-        awk -v re="$replaceable" '$2 ~ re { print $1, $2 }') || true
+    # ones too (a module's hidden replacement still serves its own allocations). A file nm
+    # cannot read fails the check rather than passing unread.
+    symbols=$(nm -A -P --defined-only "$file") || { echo "nm cannot read $file" >&2; exit 1; }
+    definitions=$(awk -v re="$replaceable" '$2 ~ re { print $1, $2 }' <<<"$symbols")
     if [[ -n $definitions ]]; then
         echo "$(basename "$file") defines operator new or delete:" >&2
         echo "$definitions" >&2

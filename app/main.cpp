@@ -6,8 +6,8 @@
 #include "app/batch/batch_runner.h"
 #include "app/batch/exit_codes.h"
 #include "app/gui_arguments.h"
+#include "app/memory/memory_policy.h"
 #include "app/subcommands.h"
-#include "core/base/memory_policy.h"
 #include "ui/run_gui.h"
 
 #include <csignal>
@@ -37,8 +37,11 @@ int main(int argc, char** argv) {
     // First, so that Ctrl+C at start-up cancels a batch run (exit 7) rather than killing it;
     // the window restores the system's default below.
     bladeaxis::app::installBatchInterruptHandlers();
-    bladeaxis::returnLargeBlocksToTheSystem();
-    bladeaxis::backLargeBlocksWithHugePages();
+    // One policy for the window and the batch front end: large blocks go back to the system
+    // when freed. The batch front end also kept freed blocks for reuse, which undid this for
+    // blocks of 4 MB and more and raised the five-million-block peak by about 100 MB
+    // (docs/performance.md, "Memory policy of the executable").
+    bladeaxis::app::returnLargeBlocksToTheSystem();
     const std::vector<std::string> given(argv, argv + argc);
     const auto exists = [](const std::string& path) {
         std::error_code ec;
@@ -65,8 +68,6 @@ int main(int argc, char** argv) {
         int guiArgc = static_cast<int>(arguments.size());
         return bladeaxis::ui::runGui(guiArgc, guiArgv.data());
     }
-    // The batch front end runs one job and ends, so the blocks it keeps are never idle.
-    bladeaxis::keepFreedLargeBlocksForReuse();
     if (std::getenv("BLADEAXIS_TESTING_DISABLE_CATCH_ALL") != nullptr) {
         return bladeaxis::app::runBatchCommandLine(arguments, std::cout, std::cerr);
     }

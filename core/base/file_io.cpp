@@ -397,10 +397,7 @@ Result<MappedText> StagedFile::mapText() const {
     return MappedText(static_cast<const char*>(data), m_state->size);
 }
 
-// The pages counted in use for the bound of kept blocks are those not yet given back.
-MappedText::MappedText(const char* data, std::size_t size) : m_data(data), m_size(size) {
-    countMappedFileBytes(m_size);
-}
+MappedText::MappedText(const char* data, std::size_t size) : m_data(data), m_size(size) {}
 
 MappedText::MappedText(MappedText&& other) noexcept
     : m_data(std::exchange(other.m_data, nullptr)), m_size(std::exchange(other.m_size, 0)),
@@ -419,7 +416,6 @@ MappedText& MappedText::operator=(MappedText&& other) noexcept {
 MappedText::~MappedText() {
     if (m_data != nullptr) {
         ::munmap(const_cast<char*>(m_data), m_size);
-        uncountMappedFileBytes(m_size - m_released);
         m_data = nullptr;
     }
 }
@@ -431,10 +427,8 @@ void MappedText::releaseBefore(std::size_t offset) const {
     }
     // The mapping starts on a page and what was given back ends on one, so the pages from
     // m_released on are whole.
-    const std::size_t released =
+    m_released +=
         returnWholePagesToTheSystem(const_cast<char*>(m_data) + m_released, end - m_released);
-    m_released += released;
-    uncountMappedFileBytes(released);
 }
 
 } // namespace bladeaxis

@@ -7,6 +7,7 @@
 // peak_rss_MB, getrusage) belongs to the benchmarks alone; benchmarks run in the order below,
 // so the first figure is the parse-and-analyse peak.
 
+#include "app/memory/memory_policy.h"
 #include "core/base/file_io.h"
 #include "core/base/memory_policy.h"
 #include "core/blade/presets.h"
@@ -224,7 +225,6 @@ void BM_FullJobFiveMillionBlocks(benchmark::State& state) {
         const auto start = std::chrono::steady_clock::now();
         const pid_t child = fork();
         if (child == 0) {
-            keepFreedLargeBlocksForReuse(); // as the batch front end, which runs one job
             auto result = runJob(spec);
             const bool ok = result && job::writeJobOutputs(spec, *result).has_value();
             std::_Exit(ok ? 0 : 1);
@@ -253,7 +253,6 @@ BENCHMARK(BM_FullJobFiveMillionBlocks)
 // The memory policy of the application (app/main.cpp), so that the peaks and times are the
 // ones a user sees.
 int main(int argc, char** argv) {
-    bladeaxis::returnLargeBlocksToTheSystem();
-    bladeaxis::backLargeBlocksWithHugePages();
+    bladeaxis::app::returnLargeBlocksToTheSystem();
     return bladeaxis::bench::runBenchmarks(argc, argv);
 }

@@ -44,14 +44,13 @@ std::vector<double> derivative(const std::vector<double>& values, double step) {
 
 } // namespace
 
-void movingAverageInto(std::span<const double> values, std::size_t width,
-                       std::vector<double>& out) {
-    const std::size_t n = values.size();
-    out.resize(n);
-    if (n == 0 || width <= 1) {
-        std::copy(values.begin(), values.end(), out.begin());
-        return;
-    }
+namespace {
+
+// The moving average of n values read through original(j), each output handed to
+// write(k, value) in order k = 0, 1, ...; at output k, original(j) is read for j from k - half - 1
+// on (and for the end samples the reflections read).
+template <class Original, class Write>
+void movingAverageOver(std::size_t n, std::size_t width, Original&& original, Write&& write) {
     const std::size_t half = width / 2;
     // Outside the series the axis continues its motion: the padding is the point reflection
     // of the series about its end sample (2 q_0 - q_j), which any straight motion extends
@@ -61,13 +60,13 @@ void movingAverageInto(std::span<const double> values, std::size_t width,
     const auto padded = [&](std::size_t k) {
         if (k < half) {
             const std::size_t j = std::min(half - k, n - 1);
-            return 2.0 * values[0] - values[j];
+            return 2.0 * original(0) - original(j);
         }
         if (k - half >= n) {
             const std::size_t j = std::min(k - half - (n - 1), n - 1);
-            return 2.0 * values[n - 1] - values[n - 1 - j];
+            return 2.0 * original(n - 1) - original(n - 1 - j);
         }
-        return values[k - half];
+        return original(k - half);
     };
     const std::size_t span = 2 * half + 1;
     const auto windowSum = [&](std::size_t first) {
@@ -82,11 +81,54 @@ void movingAverageInto(std::span<const double> values, std::size_t width,
     // about 1 deg/s^2 once differentiated twice at 1 ms.
     constexpr std::size_t kFreshSum = 256;
     double sum = windowSum(0);
-    out[0] = sum / static_cast<double>(span);
+    write(0, sum / static_cast<double>(span));
     for (std::size_t k = 1; k < n; ++k) {
         sum = k % kFreshSum == 0 ? windowSum(k) : sum + (padded(k + span - 1) - padded(k - 1));
-        out[k] = sum / static_cast<double>(span);
+        write(k, sum / static_cast<double>(span));
     }
+}
+
+} // namespace
+
+void movingAverageInto(std::span<const double> values, std::size_t width,
+                       std::vector<double>& out) {
+    const std::size_t n = values.size();
+    out.resize(n);
+    if (n == 0 || width <= 1) {
+        std::copy(values.begin(), values.end(), out.begin());
+        return;
+    }
+    movingAverageOver(
+        n, width, [values](std::size_t j) { return values[j]; },
+        [&out](std::size_t k, double value) { out[k] = value; });
+}
+
+void movingAverageInPlace(std::vector<double>& values, std::size_t width) {
+    const std::size_t n = values.size();
+    if (n == 0 || width <= 1) {
+        return;
+    }
+    // An output overwrites its own input, which later outputs still read for up to a window
+    // behind (and the first sample, the start's reflection centre): the overwritten inputs are
+    // kept in a ring of two windows, so the series needs no second copy (8 bytes per
+    // millisecond of the pass and axis).
+    const std::size_t ring = 2 * (width / 2 + 1) + 2;
+    std::vector<double> behind(ring);
+    const double first = values[0];
+    std::size_t written = 0; // outputs [0, written) are in `values`
+    movingAverageOver(
+        n, width,
+        [&](std::size_t j) {
+            if (j >= written) {
+                return values[j];
+            }
+            return j == 0 ? first : behind[j % ring];
+        },
+        [&](std::size_t k, double value) {
+            behind[k % ring] = values[k];
+            values[k] = value;
+            written = k + 1;
+        });
 }
 
 std::vector<double> movingAverage(std::span<const double> values, std::size_t width) {
@@ -96,12 +138,11 @@ std::vector<double> movingAverage(std::span<const double> values, std::size_t wi
 }
 
 void smoothedPositions(std::span<const double> s, std::span<const double> position, double feed,
-                       double windowSeconds, double step, std::vector<double>& out,
-                       std::vector<double>& scratch) {
+                       double windowSeconds, double step, std::vector<double>& out) {
     const auto width = static_cast<std::size_t>(std::lround(std::max(windowSeconds, 0.0) / step));
     resample(s, position, feed, step, out);
-    movingAverageInto(out, width, scratch);
-    movingAverageInto(scratch, width, out);
+    movingAverageInPlace(out, width);
+    movingAverageInPlace(out, width);
 }
 
 double sampleAt(const std::vector<double>& series, double step, double t) {
@@ -128,8 +169,7 @@ FilteredAxis filterAxis(std::span<const double> s, std::span<const double> posit
         axis.jerk.assign(position.size(), 0.0);
         return axis;
     }
-    std::vector<double> scratch;
-    smoothedPositions(s, position, feed, windowSeconds, step, axis.position, scratch);
+    smoothedPositions(s, position, feed, windowSeconds, step, axis.position);
     axis.velocity = derivative(axis.position, step);
     axis.acceleration = derivative(axis.velocity, step);
     axis.jerk = derivative(axis.acceleration, step);

@@ -26,13 +26,14 @@ FilteredAxis filterAxis(std::span<const double> s, std::span<const double> posit
 std::vector<double> movingAverage(std::span<const double> values, std::size_t width);
 // The same into `out` (resized; not `values`' own storage).
 void movingAverageInto(std::span<const double> values, std::size_t width, std::vector<double>& out);
+// The same over `values` itself, bit for bit movingAverageInto's, with no second series.
+void movingAverageInPlace(std::vector<double>& values, std::size_t width);
 
-// filterAxis's smoothed positions alone, into `out`, with `scratch` for the first pass: what
-// the derivatives are taken from without keeping velocity, acceleration and jerk series (24
-// bytes per millisecond of the pass and axis).
+// filterAxis's smoothed positions alone, into `out`, smoothed in place: what the derivatives
+// are taken from without keeping velocity, acceleration and jerk series (24 bytes per
+// millisecond of the pass and axis) or a second series of positions (8).
 void smoothedPositions(std::span<const double> s, std::span<const double> position, double feed,
-                       double windowSeconds, double step, std::vector<double>& out,
-                       std::vector<double>& scratch);
+                       double windowSeconds, double step, std::vector<double>& out);
 
 // Linear interpolation of a uniformly stepped series at time t (clamped to its ends).
 double sampleAt(const std::vector<double>& series, double step, double t);

@@ -159,10 +159,7 @@ void filteredDerivatives(std::span<const double> s, std::span<const double> posi
                          double filterSeconds, AxisSeries& series) {
     constexpr double kStep = 1e-3;
     std::vector<double> p;
-    {
-        std::vector<double> scratch;
-        smoothedPositions(s, position, feed, filterSeconds, kStep, p, scratch);
-    }
+    smoothedPositions(s, position, feed, filterSeconds, kStep, p);
     const std::size_t m = p.size();
     const auto inner = [m](std::ptrdiff_t k) {
         return static_cast<std::size_t>(

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace bladeaxis::analysis {
@@ -19,6 +20,26 @@ TEST(MovingAverage, KeepsConstantsAndLinesAwayFromTheEnds) {
         EXPECT_NEAR(smoothed[k], line[k], 1e-12) << k;
     }
     EXPECT_EQ(movingAverage(std::vector<double>(7, 2.5), 5), std::vector<double>(7, 2.5));
+}
+
+// In place, over series shorter than a window, around the fresh sums (every 256 outputs) and
+// at both reflected ends, the average is the one into a second series, bit for bit.
+TEST(MovingAverage, InPlaceGivesTheBitsOfASecondSeries) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> value(-1000.0, 1000.0);
+    for (std::size_t n : {0u, 1u, 2u, 5u, 9u, 17u, 255u, 256u, 257u, 600u}) {
+        std::vector<double> series(n);
+        for (double& x : series) {
+            x = value(random);
+        }
+        for (std::size_t width : {1u, 2u, 3u, 8u, 9u, 17u, 40u}) {
+            std::vector<double> expected;
+            movingAverageInto(series, width, expected);
+            std::vector<double> inPlace = series;
+            movingAverageInPlace(inPlace, width);
+            EXPECT_EQ(inPlace, expected) << n << " values, width " << width;
+        }
+    }
 }
 
 TEST(ControllerFilter, ConstantRateAxisKeepsItsVelocity) {

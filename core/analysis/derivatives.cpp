@@ -256,10 +256,7 @@ double interiorSpeed(const geometry::CubicSplineInterval& piece) {
 
 // One axis looks at the token between its steps and every kIterationsPerCancelPoll samples of
 // its sampling, so that a cancelled job does not wait for the rest of an axis (about 0.15 s at
-// five million samples).
-std::unexpected<Error> cancelledAxis() {
-    return makeError(ErrorCode::Cancelled, "the analysis was cancelled");
-}
+// five million samples); a cancelled axis holds cancelledError() (progress.h).
 
 // Velocity, acceleration and jerk at every sample from the spline with the given knot values and
 // moments (a merged sample lies inside the interval that starts at the knot before it). Peaks
@@ -332,11 +329,11 @@ bool sampleSpline(std::span<const double> s, const SplineKnots& knots,
     return true;
 }
 
-// Calls body(k) for every series k, each series on one thread and up to `threads` at once: a
+// Calls body(k) for every series k, each series on one thread and up to the context's thread count at once: a
 // series' values never depend on how many threads there are.
 template <class Body>
-void forEachSeries(std::size_t series, std::size_t samples, unsigned threads, Body&& body) {
-    forEachItem(series, series * samples, threads, std::forward<Body>(body));
+void forEachSeries(std::size_t series, std::size_t samples, Body&& body) {
+    forEachItem(series, series * samples, std::forward<Body>(body));
 }
 
 // The first sample at which the path parameter is unusable (not finite, or not above the one
@@ -445,7 +442,7 @@ Status splineDerivatives(const SharedFit& fit, std::span<const double> position,
     std::vector<double> gatheredQ;
     const std::span<const double> knotQ = fit.knots.valuesAtKnots(position, gatheredQ);
     if (isCancelled(fit.cancel)) {
-        return cancelledAxis();
+        return std::unexpected(cancelledError());
     }
     // Left uninitialised: the solve writes each entry.
     const auto momentBlock = std::make_unique_for_overwrite<double[]>(knotQ.size());
@@ -453,7 +450,7 @@ Status splineDerivatives(const SharedFit& fit, std::span<const double> position,
     fit.system->solve(knotQ, moments);
     if (isCancelled(fit.cancel) || !sampleSpline(fit.s, fit.knots, fit.knotS, knotQ, moments,
                                                  fit.feed, series, positionStorage, fit.cancel)) {
-        return cancelledAxis();
+        return std::unexpected(cancelledError());
     }
     return {};
 }
@@ -509,19 +506,18 @@ Result<AxisSeries> differentiateOne(const SharedFit& fit, std::span<const double
 std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s, std::size_t axes,
                                                   const PositionsOf& positionsOf, double feed,
                                                   DerivativeMethod method, double filterSeconds,
-                                                  std::span<const std::size_t> knots,
-                                                  unsigned threads, const CancelToken* cancel) {
+                                                  std::span<const std::size_t> knots, const CancelToken* cancel) {
     const SharedFit fit(s, feed, method, filterSeconds, knots, cancel);
     std::vector<Result<AxisSeries>> results(axes);
-    forEachSeries(axes, s.size(), threads, [&](std::size_t k) {
+    forEachSeries(axes, s.size(), [&](std::size_t k) {
         if (isCancelled(cancel)) {
-            results[k] = cancelledAxis();
+            results[k] = std::unexpected(cancelledError());
             return;
         }
         std::vector<double> scratch;
         const std::span<const double> position = positionsOf(k, scratch);
         if (isCancelled(cancel)) { // the positions may have been computed for the call
-            results[k] = cancelledAxis();
+            results[k] = std::unexpected(cancelledError());
             return;
         }
         const bool inScratch =
@@ -534,12 +530,11 @@ std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s, std
 std::vector<Result<AxisSeries>>
 differentiateAxes(std::span<const double> s, std::span<const std::vector<double>> positions,
                   double feed, DerivativeMethod method, double filterSeconds,
-                  std::span<const std::size_t> knots, unsigned threads) {
+                  std::span<const std::size_t> knots) {
     const PositionsOf given = [&](std::size_t k, std::vector<double>&) {
         return std::span<const double>(positions[k]);
     };
-    return differentiateAxes(s, positions.size(), given, feed, method, filterSeconds, knots,
-                             threads);
+    return differentiateAxes(s, positions.size(), given, feed, method, filterSeconds, knots);
 }
 
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,

@@ -329,8 +329,8 @@ bool sampleSpline(std::span<const double> s, const SplineKnots& knots,
     return true;
 }
 
-// Calls body(k) for every series k, each series on one thread and up to the context's thread count at once: a
-// series' values never depend on how many threads there are.
+// Calls body(k) for every series k, each series on one thread and up to the context's thread count
+// at once: a series' values never depend on how many threads there are.
 template <class Body>
 void forEachSeries(std::size_t series, std::size_t samples, Body&& body) {
     forEachItem(series, series * samples, std::forward<Body>(body));
@@ -506,7 +506,8 @@ Result<AxisSeries> differentiateOne(const SharedFit& fit, std::span<const double
 std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s, std::size_t axes,
                                                   const PositionsOf& positionsOf, double feed,
                                                   DerivativeMethod method, double filterSeconds,
-                                                  std::span<const std::size_t> knots, const CancelToken* cancel) {
+                                                  std::span<const std::size_t> knots,
+                                                  const CancelToken* cancel) {
     const SharedFit fit(s, feed, method, filterSeconds, knots, cancel);
     std::vector<Result<AxisSeries>> results(axes);
     forEachSeries(axes, s.size(), [&](std::size_t k) {
@@ -527,10 +528,11 @@ std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s, std
     return results;
 }
 
-std::vector<Result<AxisSeries>>
-differentiateAxes(std::span<const double> s, std::span<const std::vector<double>> positions,
-                  double feed, DerivativeMethod method, double filterSeconds,
-                  std::span<const std::size_t> knots) {
+std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s,
+                                                  std::span<const std::vector<double>> positions,
+                                                  double feed, DerivativeMethod method,
+                                                  double filterSeconds,
+                                                  std::span<const std::size_t> knots) {
     const PositionsOf given = [&](std::size_t k, std::vector<double>&) {
         return std::span<const double>(positions[k]);
     };

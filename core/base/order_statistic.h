@@ -121,8 +121,7 @@ double nthSmallest(std::size_t count, std::size_t k, const ValueAt& valueAt) {
         return detail::nthSmallestGathered(count, k, valueAt);
     }
     const detail::Bracket bracket = detail::bracketFromSample(count, k, valueAt);
-    const std::vector<detail::RangeTally> tallies =
-        detail::tallyRanges(count, bracket, valueAt);
+    const std::vector<detail::RangeTally> tallies = detail::tallyRanges(count, bracket, valueAt);
     detail::Tally total;
     for (const detail::RangeTally& tally : tallies) {
         total.below += tally.below;
@@ -139,9 +138,8 @@ double nthSmallest(std::size_t count, std::size_t k, const ValueAt& valueAt) {
     }
     rank -= total.atLow;
     if (rank >= total.inside) {
-        return rank - total.inside < total.atHigh
-                   ? bracket.high
-                   : detail::nthSmallestGathered(count, k, valueAt);
+        return rank - total.inside < total.atHigh ? bracket.high
+                                                  : detail::nthSmallestGathered(count, k, valueAt);
     }
     std::vector<double> candidates;
     candidates.reserve(total.inside);

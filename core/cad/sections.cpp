@@ -270,9 +270,8 @@ Result<std::vector<Polyline3>> sectionAtX(const CadShape& shape, double x,
                      [&] { return sectionWithOcct(occtShape(shape), x, options); });
 }
 
-Result<std::vector<std::vector<Polyline3>>> sectionsAtX(const CadShape& shape,
-                                                        std::span<const double> xs,
-                                                        const SectionOptions& options) {
+Result<std::vector<std::vector<Polyline3>>>
+sectionsAtX(const CadShape& shape, std::span<const double> xs, const SectionOptions& options) {
     std::vector<std::optional<Result<std::vector<Polyline3>>>> results(xs.size());
     std::atomic<std::size_t> next{0};
     auto worker = [&] {

@@ -189,12 +189,10 @@ CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
     if (arcLength.empty()) {
         return analysis;
     }
-    analysis.smoothedCurvature = smoothCurvature(arcLength, std::move(curvature),
-                                                 std::move(weights), settings.windowMm);
-    analysis.hysteresis =
-        hysteresisStates(analysis.smoothedCurvature, settings.hysteresisPerMm);
-    analysis.runs =
-        mergeAndDrop(runsOf(analysis.hysteresis), arcLength, turning, settings);
+    analysis.smoothedCurvature =
+        smoothCurvature(arcLength, std::move(curvature), std::move(weights), settings.windowMm);
+    analysis.hysteresis = hysteresisStates(analysis.smoothedCurvature, settings.hysteresisPerMm);
+    analysis.runs = mergeAndDrop(runsOf(analysis.hysteresis), arcLength, turning, settings);
     analysis.state.assign(arcLength.size(), CurvatureState::Convex);
     for (const ConcaveRun& run : analysis.runs) {
         for (std::size_t k = run.entry; k < std::min(run.exit, arcLength.size()); ++k) {

@@ -195,7 +195,8 @@ LayerProblem layerProblem(const PlanePath& path, const LayerSpan& span, Absolute
 
 std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawChannel& channel,
                                              const LayerSplit& split,
-                                             std::span<const double> margins, double shortLengthMm) {
+                                             std::span<const double> margins,
+                                             double shortLengthMm) {
     const std::size_t count = split.layers.size();
     const std::size_t points = path.arcLength.size();
     std::vector<AbsoluteLayer> absolute(count);

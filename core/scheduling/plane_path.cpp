@@ -238,10 +238,10 @@ double tiltFrom(std::span<const double> axial, std::span<const std::pair<double,
     const double spread = std::asin(high) - std::asin(low);
     // A constant tilt (the usual case) is its own median. Otherwise nthSmallest finds it on
     // every thread, without reordering the values.
-    const double median =
-        std::asin(low == high ? low
-                              : nthSmallest(axial.size(), axial.size() / 2,
-                                            [axial](std::size_t k) { return axial[k]; }));
+    const double median = std::asin(
+        low == high ? low : nthSmallest(axial.size(), axial.size() / 2, [axial](std::size_t k) {
+            return axial[k];
+        }));
     if (spread > tol::kConstantTiltRad) {
         warn.push_back("input tilt B is not constant (spread " +
                        formatFixed(units::radToDeg(spread), 4) + " deg); the median " +
@@ -281,8 +281,7 @@ Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes) {
         return std::unexpected(status.error());
     }
     PlanePath path;
-    if (const std::size_t fault = mergeDuplicates(centres, axes, path);
-        fault < centres.size()) {
+    if (const std::size_t fault = mergeDuplicates(centres, axes, path); fault < centres.size()) {
         return std::unexpected(faultError(centres, axes, fault).error());
     }
     if (path.firstInput.size() < 3) {

@@ -100,8 +100,8 @@ std::vector<LayerBounds> boundsOf(const LayerSplit& split, const PlanePath& path
 // The raw channel of the layers (§2), clipped as the parameters ask.
 RawChannel channelOf(const LayerPlan& plan, const ScheduleParameters& p,
                      std::vector<std::string>& warnings) {
-    RawChannel channel = buildRawChannel(plan.tangents, plan.curvature.runs,
-                                         p.taperHalfAngleRad + p.safetyAngleRad);
+    RawChannel channel =
+        buildRawChannel(plan.tangents, plan.curvature.runs, p.taperHalfAngleRad + p.safetyAngleRad);
     if (p.visibility == Visibility::Global) {
         const double turns = std::max(
             1.0, std::abs(plan.tangents.forwardAngle.back() - plan.tangents.forwardAngle.front()) /
@@ -229,13 +229,11 @@ void assemble(ScheduleResult& result, const ScheduleSamples& input,
     const std::vector<KeptAxis> kept = axesOfKeptLayers(result.layers, input);
     // The original angles are counted and dropped first: beside the new angles and axes they
     // would add 8 bytes per sample where read-schedule-write's memory peaks.
-    result.originalReversals =
-        countReversals(absoluteAngles(result.layers, n, Orientation::Original),
-                       tol::kReversalStepRad);
+    result.originalReversals = countReversals(
+        absoluteAngles(result.layers, n, Orientation::Original), tol::kReversalStepRad);
     const std::vector<double> thetaAbsolute =
         absoluteAngles(result.layers, n, Orientation::Rescheduled);
-    ReconstructedPath rebuilt =
-        reconstructAxes(thetaAbsolute, result.tiltB0, result.traversalSign);
+    ReconstructedPath rebuilt = reconstructAxes(thetaAbsolute, result.tiltB0, result.traversalSign);
     for (const KeptAxis& original : kept) {
         rebuilt.axes[original.input] = original.axis;
     }
@@ -383,8 +381,8 @@ Result<PlanePath> makePlanePath(const ScheduleSamples& samples,
 // of this stage's steps takes 0.05-0.15 s.
 Result<LayerPlan> planLayers(PlanePath path, const ScheduleSamples& samples,
                              const ScheduleParameters& p, const CancelToken* cancel) {
-    auto tangents = computeWrappedTangents(path.points, p.tangentChordMinMm,
-                                           p.tangentChordMedianFactor);
+    auto tangents =
+        computeWrappedTangents(path.points, p.tangentChordMinMm, p.tangentChordMedianFactor);
     if (!tangents) {
         return std::unexpected(tangents.error());
     }
@@ -398,8 +396,7 @@ Result<LayerPlan> planLayers(PlanePath path, const ScheduleSamples& samples,
     // order fixes their rounding, and neither reads the other: on two threads they run at once.
     CurvatureWeights weights;
     runBoth(
-        plan.path.points.size(),
-        [&field = plan.tangents] { unwrapForwardAngles(field); },
+        plan.path.points.size(), [&field = plan.tangents] { unwrapForwardAngles(field); },
         [&weights, &plan] {
             weights = curvatureWeights(plan.path.arcLength, plan.tangents.curvature);
         });
@@ -407,9 +404,8 @@ Result<LayerPlan> planLayers(PlanePath path, const ScheduleSamples& samples,
         curvatureSettings(p, plan.path, plan.tangents, samples.toolRadius);
     // Each per-point array goes once read for the last time: the channel is built where the
     // scheduling's memory peaks (beside the plane path). The curvature becomes the smoothed one.
-    plan.curvature =
-        analyseCurvature(plan.path.arcLength, std::move(plan.tangents.curvature),
-                         std::move(weights), plan.tangents.turning, settings);
+    plan.curvature = analyseCurvature(plan.path.arcLength, std::move(plan.tangents.curvature),
+                                      std::move(weights), plan.tangents.turning, settings);
     if (isCancelled(cancel)) {
         return std::unexpected(cancelledError());
     }

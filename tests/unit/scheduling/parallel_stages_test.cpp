@@ -52,7 +52,8 @@ TEST(ParallelStages, ReversalCountDoesNotDependOnTheThreadCount) {
     const std::size_t serial = countReversals(angles, 1e-6, 1);
     EXPECT_GT(serial, 0u);
     for (unsigned threads : kThreadCounts) {
-        EXPECT_EQ(countReversals(angles, 1e-6, threads), serial) << threads;
+        const ThreadCountScope scope(threads);
+        EXPECT_EQ(countReversals(angles, 1e-6), serial) << threads;
     }
     std::vector<double> oneTurn(count);
     const double top = static_cast<double>(count / 3);
@@ -61,7 +62,8 @@ TEST(ParallelStages, ReversalCountDoesNotDependOnTheThreadCount) {
         oneTurn[i] = x < top ? x : 2.0 * top - x; // up, then down
     }
     for (unsigned threads : {1u, 2u, 3u, 4u}) {
-        EXPECT_EQ(countReversals(oneTurn, 0.5, threads), 1u) << threads;
+        const ThreadCountScope scope(threads);
+        EXPECT_EQ(countReversals(oneTurn, 0.5), 1u) << threads;
     }
 }
 
@@ -93,8 +95,8 @@ TEST(ParallelStages, ReconstructionCheckGivesThePerSampleMaxima) {
     }
     ASSERT_GT(expected.maxCentreErrorMm, 0.0); // the rounding is there to be found
     for (unsigned threads : {1u, 2u, 3u, 4u}) {
-        const ReconstructionCheck check =
-            checkReconstruction(centres, path, theta, 0.1, 8.0, threads);
+        const ThreadCountScope scope(threads);
+        const ReconstructionCheck check = checkReconstruction(centres, path, theta, 0.1, 8.0);
         EXPECT_EQ(check.maxCentreErrorMm, expected.maxCentreErrorMm) << threads;
         EXPECT_EQ(check.maxUnitError, expected.maxUnitError) << threads;
     }
@@ -141,9 +143,10 @@ TEST(ParallelStages, MergedDuplicatesAcrossRangeBoundariesGiveTheSerialPath) {
     addOriginalAngles(*serial, input.axes, 1);
     EXPECT_EQ(serial->originalAngle.size(), serial->firstInput.size());
     for (unsigned threads : kThreadCounts) {
-        auto parallel = preparePlanePath(input.centres, input.axes, threads);
+        const ThreadCountScope scope(threads);
+        auto parallel = preparePlanePath(input.centres, input.axes);
         ASSERT_TRUE(parallel.has_value());
-        addOriginalAngles(*parallel, input.axes, threads);
+        addOriginalAngles(*parallel, input.axes);
         expectSamePlanePath(*serial, *parallel);
         // Read through functions, each centre and axis made when read: the same path.
         const std::function<Vec3(std::size_t)> centreAt = [&](std::size_t i) {
@@ -152,9 +155,9 @@ TEST(ParallelStages, MergedDuplicatesAcrossRangeBoundariesGiveTheSerialPath) {
         const std::function<Vec3(std::size_t)> axisAt = [&](std::size_t i) {
             return input.axes[i];
         };
-        auto read = preparePlanePath(centreAt, axisAt, n, threads);
+        auto read = preparePlanePath(centreAt, axisAt, n);
         ASSERT_TRUE(read.has_value());
-        addOriginalAngles(*read, axisAt, threads);
+        addOriginalAngles(*read, axisAt);
         expectSamePlanePath(*serial, *read);
     }
 }
@@ -180,7 +183,8 @@ TEST(ParallelStages, AVaryingTiltGivesTheSerialMedianOnAnyThreadCount) {
     ASSERT_FALSE(serial->warnings.empty());
     EXPECT_NE(serial->warnings.front().find("input tilt B is not constant"), std::string::npos);
     for (unsigned threads : kThreadCounts) {
-        auto parallel = preparePlanePath(input.centres, input.axes, threads);
+        const ThreadCountScope scope(threads);
+        auto parallel = preparePlanePath(input.centres, input.axes);
         ASSERT_TRUE(parallel.has_value());
         expectSamePlanePath(*serial, *parallel);
     }
@@ -198,14 +202,15 @@ TEST(ParallelStages, TangentsAndCurvatureDoNotDependOnTheThreadCount) {
         analyseCurvature(path->arcLength, serial->curvature, serial->turning, settings, 1);
     EXPECT_FALSE(serialStates.runs.empty());
     for (unsigned threads : kThreadCounts) {
-        const auto parallel = computeTangents(path->points, 0.5, 3.0, threads);
+        const ThreadCountScope scope(threads);
+        const auto parallel = computeTangents(path->points, 0.5, 3.0);
         ASSERT_TRUE(parallel.has_value());
         EXPECT_EQ(parallel->chordLengthMm, serial->chordLengthMm);
         EXPECT_EQ(parallel->forwardAngle, serial->forwardAngle);
         EXPECT_EQ(parallel->turning, serial->turning);
         EXPECT_EQ(parallel->curvature, serial->curvature);
-        const CurvatureAnalysis states = analyseCurvature(path->arcLength, serial->curvature,
-                                                          serial->turning, settings, threads);
+        const CurvatureAnalysis states =
+            analyseCurvature(path->arcLength, serial->curvature, serial->turning, settings);
         EXPECT_EQ(states.smoothedCurvature, serialStates.smoothedCurvature);
         EXPECT_EQ(states.hysteresis, serialStates.hysteresis);
         EXPECT_EQ(states.state, serialStates.state);
@@ -231,7 +236,8 @@ TEST(ParallelStages, CurvatureWindowsWiderThanARangeGiveTheSerialResult) {
     settings.windowMm = 0.03 * double(kMinParallelRange);
     const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings, 1);
     for (unsigned threads : kThreadCounts) {
-        EXPECT_EQ(analyseCurvature(s, kappa, turning, settings, threads).smoothedCurvature,
+        const ThreadCountScope scope(threads);
+        EXPECT_EQ(analyseCurvature(s, kappa, turning, settings).smoothedCurvature,
                   serial.smoothedCurvature)
             << threads;
     }
@@ -300,7 +306,8 @@ TEST(ParallelStages, HysteresisAndRunsAreTheSerialOnesWhereverTheRangesFall) {
     ASSERT_EQ(expectedRuns.size(), 3u);
     EXPECT_EQ(expectedRuns.back().second, n);
     for (unsigned threads : {1u, 2u, 3u, 4u}) {
-        const CurvatureAnalysis states = analyseCurvature(s, kappa, turning, settings, threads);
+        const ThreadCountScope scope(threads);
+        const CurvatureAnalysis states = analyseCurvature(s, kappa, turning, settings);
         EXPECT_TRUE(std::equal(states.hysteresis.begin(), states.hysteresis.end(), expected.begin(),
                                expected.end()))
             << threads;

@@ -127,7 +127,7 @@ RawChannel channelOf(const LayerPlan& plan, const ScheduleParameters& p,
 std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems,
                                     std::span<const std::uint32_t> firstInput,
                                     std::span<const ScheduleParameters> layerParameters,
-                                    const ScheduleParameters& p, const CancelToken* cancel) {
+                                    const CancelToken* cancel) {
     std::vector<LayerOutcome> outcomes(problems.size());
     forEachItem(problems.size(), firstInput.size(), [&](std::size_t k) {
         if (isCancelled(cancel)) {
@@ -437,7 +437,7 @@ Result<ScheduleResult> scheduleLayers(LayerPlan plan, const ScheduleSamples& sam
         return std::unexpected(cancelledError());
     }
     std::vector<LayerOutcome> outcomes =
-        runLayers(made->problems, made->firstInput, made->perLayer, parameters, cancel);
+        runLayers(made->problems, made->firstInput, made->perLayer, cancel);
     if (isCancelled(cancel)) {
         return std::unexpected(cancelledError());
     }

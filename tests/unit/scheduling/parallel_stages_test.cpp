@@ -49,7 +49,7 @@ TEST(ParallelStages, ReversalCountDoesNotDependOnTheThreadCount) {
     for (std::size_t i = 2 * kMinParallelRange; i < 4 * kMinParallelRange; ++i) {
         angles[i] = angles[i - 1] + 1e-9;
     }
-    const std::size_t serial = countReversals(angles, 1e-6, 1);
+    const std::size_t serial = countReversals(angles, 1e-6);
     EXPECT_GT(serial, 0u);
     for (unsigned threads : kThreadCounts) {
         const ThreadCountScope scope(threads);
@@ -101,7 +101,7 @@ TEST(ParallelStages, ReconstructionCheckGivesThePerSampleMaxima) {
         EXPECT_EQ(check.maxUnitError, expected.maxUnitError) << threads;
     }
     path.axes.assign(2, Vec3(std::nan(""), 0.0, 0.0)); // no length at all: no unit error
-    EXPECT_EQ(checkReconstruction(centres, path, theta, 0.1, 8.0, 1).maxUnitError, 0.0);
+    EXPECT_EQ(checkReconstruction(centres, path, theta, 0.1, 8.0).maxUnitError, 0.0);
 }
 
 void expectSamePlanePath(const PlanePath& a, const PlanePath& b) {
@@ -137,10 +137,10 @@ TEST(ParallelStages, MergedDuplicatesAcrossRangeBoundariesGiveTheSerialPath) {
     for (std::size_t i = begin; i <= end; ++i) {
         duplicate(i, begin - 3);
     }
-    auto serial = preparePlanePath(input.centres, input.axes, 1);
+    auto serial = preparePlanePath(input.centres, input.axes);
     ASSERT_TRUE(serial.has_value()) << serial.error().toString();
     EXPECT_LT(serial->firstInput.size(), n - (end - begin));
-    addOriginalAngles(*serial, input.axes, 1);
+    addOriginalAngles(*serial, input.axes);
     EXPECT_EQ(serial->originalAngle.size(), serial->firstInput.size());
     for (unsigned threads : kThreadCounts) {
         const ThreadCountScope scope(threads);
@@ -176,7 +176,7 @@ TEST(ParallelStages, AVaryingTiltGivesTheSerialMedianOnAnyThreadCount) {
         axial[i] = std::clamp(axis.x() / axis.norm(), -1.0, 1.0);
     }
     std::nth_element(axial.begin(), axial.begin() + static_cast<long>(n / 2), axial.end());
-    auto serial = preparePlanePath(input.centres, input.axes, 1);
+    auto serial = preparePlanePath(input.centres, input.axes);
     ASSERT_TRUE(serial.has_value()) << serial.error().toString();
     ASSERT_EQ(serial->firstInput.size(), n); // no duplicates: every axis counts
     EXPECT_EQ(serial->tiltB0, std::asin(axial[n / 2]));
@@ -192,14 +192,14 @@ TEST(ParallelStages, AVaryingTiltGivesTheSerialMedianOnAnyThreadCount) {
 
 TEST(ParallelStages, TangentsAndCurvatureDoNotDependOnTheThreadCount) {
     const ScheduleInput input = longHelix();
-    const auto path = preparePlanePath(input.centres, input.axes, 1);
+    const auto path = preparePlanePath(input.centres, input.axes);
     ASSERT_TRUE(path.has_value());
-    const auto serial = computeTangents(path->points, 0.5, 3.0, 1);
+    const auto serial = computeTangents(path->points, 0.5, 3.0);
     ASSERT_TRUE(serial.has_value());
     CurvatureSettings settings;
     settings.windowMm = 7.0;
     const CurvatureAnalysis serialStates =
-        analyseCurvature(path->arcLength, serial->curvature, serial->turning, settings, 1);
+        analyseCurvature(path->arcLength, serial->curvature, serial->turning, settings);
     EXPECT_FALSE(serialStates.runs.empty());
     for (unsigned threads : kThreadCounts) {
         const ThreadCountScope scope(threads);
@@ -234,7 +234,7 @@ TEST(ParallelStages, CurvatureWindowsWiderThanARangeGiveTheSerialResult) {
     }
     CurvatureSettings settings;
     settings.windowMm = 0.03 * double(kMinParallelRange);
-    const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings, 1);
+    const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings);
     for (unsigned threads : kThreadCounts) {
         const ThreadCountScope scope(threads);
         EXPECT_EQ(analyseCurvature(s, kappa, turning, settings).smoothedCurvature,
@@ -299,7 +299,7 @@ TEST(ParallelStages, HysteresisAndRunsAreTheSerialOnesWhereverTheRangesFall) {
     settings.windowMm = 0.001; // each sample its own window
     settings.mergeGapMm = 0.0;
     settings.minRunMm = 0.0;
-    const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings, 1);
+    const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings);
     const std::vector<CurvatureState> expected =
         serialHysteresis(serial.smoothedCurvature, settings.hysteresisPerMm);
     const auto expectedRuns = serialRuns(expected);

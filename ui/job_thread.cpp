@@ -1,5 +1,6 @@
 #include "ui/job_thread.h"
 
+#include "core/base/execution.h"
 #include "core/base/memory_policy.h"
 
 #include <string>
@@ -31,6 +32,9 @@ JobThread::JobThread(job::JobSpec spec, QObject* parent)
     : QThread(parent), m_spec(std::move(spec)) {}
 
 void JobThread::run() {
+    // The whole thread runs under the job's thread count: runJob sets it for itself, and the 3D
+    // view's scenes made here (the CAD blade's sections) use it too.
+    const ThreadCountScope threads(m_spec.parameters.threads);
     // The jobs before this one freed their small blocks into the C library's arenas; they go
     // back to the system, so that this job's memory starts where a fresh process's would.
     returnFreedHeapToTheSystem();

@@ -165,14 +165,6 @@ std::span<const double> sampledAxis(std::span<const kinematics::MachineAxes> axe
     return values;
 }
 
-// ErrorCode::Cancelled once the analysis's token is set.
-Status checkCancelled(const AxisProfileOptions& options) {
-    if (options.cancel && options.cancel->isCancelled()) {
-        return makeError(ErrorCode::Cancelled, "the analysis was cancelled");
-    }
-    return {};
-}
-
 } // namespace
 
 Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSamples& path,
@@ -200,7 +192,7 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
         path.posesRead();
     }
     profile.cycleTime = profile.pathParameter.back() / profile.feed;
-    if (Status going = checkCancelled(options); !going) {
+    if (Status going = checkCancelled(options.cancel); !going) {
         return std::unexpected(std::move(going.error()));
     }
     const std::size_t n = profile.pathParameter.size();
@@ -222,7 +214,7 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
                        [](const kinematics::MachineAxes& m) { return m.a; });
         profile.aReversals = auditReversals(a);
     }
-    if (Status going = checkCancelled(options); !going) {
+    if (Status going = checkCancelled(options.cancel); !going) {
         return std::unexpected(std::move(going.error()));
     }
     // Each axis's positions are gathered for its own differentiation and dropped after it.
@@ -231,9 +223,9 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
     };
     std::vector<Result<AxisSeries>> series = differentiateAxes(
         profile.pathParameter, kinematics::kAllAxes.size(), positionsOf, profile.feed,
-        options.method, options.filterSeconds, knots, options.threads, options.cancel);
+        options.method, options.filterSeconds, knots, options.cancel);
     // The axes skipped on cancellation hold Cancelled: the job's, not an error of theirs.
-    if (Status going = checkCancelled(options); !going) {
+    if (Status going = checkCancelled(options.cancel); !going) {
         return std::unexpected(std::move(going.error()));
     }
     for (kinematics::AxisId id : kinematics::kAllAxes) {

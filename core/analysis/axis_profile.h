@@ -69,9 +69,6 @@ struct AxisProfileOptions {
     // Moving-average window of DerivativeMethod::Filtered, s: the smoothing time of the
     // controller the default figures assume.
     double filterSeconds = 0.008;
-    // Threads for the axes' derivatives (0: every core). The figures are the same on any number;
-    // a job gives the analysis of its input every core, the one beside its rewrite one.
-    unsigned threads = 1;
     // Polled between the analysis's stages and before each axis's derivatives: a cancelled
     // analysis ends with ErrorCode::Cancelled within one axis's differentiation (about 0.3 s
     // at five million records). None: the analysis runs to its end.

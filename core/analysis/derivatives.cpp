@@ -151,8 +151,8 @@ Status checkFilterLength(std::span<const double> s, double feed) {
 // The controller-like filter (the default method, docs/figures.md): the axis at constant feed
 // every millisecond, smoothed by the window twice. Velocity, acceleration and jerk are central
 // differences of the smoothed positions (an end repeats its neighbour, as filterAxis's), taken
-// where they are read rather than kept: per millisecond of the pass only the positions and one
-// scratch series are held. Peaks and 99.9th percentiles are taken over the whole millisecond
+// where they are read rather than kept: per millisecond of the pass only the positions are held
+// (smoothed in place). Peaks and 99.9th percentiles are taken over the whole millisecond
 // series, so that they weigh the pass by time and not by how densely the post placed its points;
 // the values at the samples are interpolated at their times (for T2, the layers, axes.csv).
 void filteredDerivatives(std::span<const double> s, std::span<const double> position, double feed,
@@ -253,10 +253,7 @@ double interiorSpeed(const geometry::CubicSplineInterval& piece) {
 
 // One axis looks at the token between its steps and every kIterationsPerCancelPoll samples of
 // its sampling, so that a cancelled job does not wait for the rest of an axis (about 0.15 s at
-// five million samples).
-std::unexpected<Error> cancelledAxis() {
-    return makeError(ErrorCode::Cancelled, "the analysis was cancelled");
-}
+// five million samples); a cancelled axis holds cancelledError() (progress.h).
 
 // Velocity, acceleration and jerk at every sample from the spline with the given knot values and
 // moments (a merged sample lies inside the interval that starts at the knot before it). Peaks
@@ -329,11 +326,11 @@ bool sampleSpline(std::span<const double> s, const SplineKnots& knots,
     return true;
 }
 
-// Calls body(k) for every series k, each series on one thread and up to `threads` at once: a
-// series' values never depend on how many threads there are.
+// Calls body(k) for every series k, each series on one thread and up to the context's thread count
+// at once: a series' values never depend on how many threads there are.
 template <class Body>
-void forEachSeries(std::size_t series, std::size_t samples, unsigned threads, Body&& body) {
-    forEachItem(series, series * samples, threads, std::forward<Body>(body));
+void forEachSeries(std::size_t series, std::size_t samples, Body&& body) {
+    forEachItem(series, series * samples, std::forward<Body>(body));
 }
 
 // The first sample at which the path parameter is unusable (not finite, or not above the one
@@ -442,7 +439,7 @@ Status splineDerivatives(const SharedFit& fit, std::span<const double> position,
     std::vector<double> gatheredQ;
     const std::span<const double> knotQ = fit.knots.valuesAtKnots(position, gatheredQ);
     if (isCancelled(fit.cancel)) {
-        return cancelledAxis();
+        return std::unexpected(cancelledError());
     }
     // Left uninitialised: the solve writes each entry.
     const auto momentBlock = std::make_unique_for_overwrite<double[]>(knotQ.size());
@@ -450,7 +447,7 @@ Status splineDerivatives(const SharedFit& fit, std::span<const double> position,
     fit.system->solve(knotQ, moments);
     if (isCancelled(fit.cancel) || !sampleSpline(fit.s, fit.knots, fit.knotS, knotQ, moments,
                                                  fit.feed, series, positionStorage, fit.cancel)) {
-        return cancelledAxis();
+        return std::unexpected(cancelledError());
     }
     return {};
 }
@@ -507,18 +504,18 @@ std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s, std
                                                   const PositionsOf& positionsOf, double feed,
                                                   DerivativeMethod method, double filterSeconds,
                                                   std::span<const std::size_t> knots,
-                                                  unsigned threads, const CancelToken* cancel) {
+                                                  const CancelToken* cancel) {
     const SharedFit fit(s, feed, method, filterSeconds, knots, cancel);
     std::vector<Result<AxisSeries>> results(axes);
-    forEachSeries(axes, s.size(), threads, [&](std::size_t k) {
+    forEachSeries(axes, s.size(), [&](std::size_t k) {
         if (isCancelled(cancel)) {
-            results[k] = cancelledAxis();
+            results[k] = std::unexpected(cancelledError());
             return;
         }
         std::vector<double> scratch;
         const std::span<const double> position = positionsOf(k, scratch);
         if (isCancelled(cancel)) { // the positions may have been computed for the call
-            results[k] = cancelledAxis();
+            results[k] = std::unexpected(cancelledError());
             return;
         }
         const bool inScratch =
@@ -528,15 +525,15 @@ std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s, std
     return results;
 }
 
-std::vector<Result<AxisSeries>>
-differentiateAxes(std::span<const double> s, std::span<const std::vector<double>> positions,
-                  double feed, DerivativeMethod method, double filterSeconds,
-                  std::span<const std::size_t> knots, unsigned threads) {
+std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s,
+                                                  std::span<const std::vector<double>> positions,
+                                                  double feed, DerivativeMethod method,
+                                                  double filterSeconds,
+                                                  std::span<const std::size_t> knots) {
     const PositionsOf given = [&](std::size_t k, std::vector<double>&) {
         return std::span<const double>(positions[k]);
     };
-    return differentiateAxes(s, positions.size(), given, feed, method, filterSeconds, knots,
-                             threads);
+    return differentiateAxes(s, positions.size(), given, feed, method, filterSeconds, knots);
 }
 
 Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<double> position,

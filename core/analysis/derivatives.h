@@ -37,12 +37,13 @@ Result<AxisSeries> differentiateAxis(std::span<const double> s, std::vector<doub
 // differentiateAxis of several axes sampled at the same s, one result per axis, each the one
 // differentiateAxis gives. The spline methods fit every axis through the same knots, so the
 // spline system is eliminated once for all axes, and s is checked once. The axes are then
-// differentiated on up to `threads` threads (0: every core), each axis on one thread, so the
+// differentiated on the context's threads (core/base/execution.h), each axis on one thread, so the
 // results are the same on any number.
-std::vector<Result<AxisSeries>>
-differentiateAxes(std::span<const double> s, std::span<const std::vector<double>> positions,
-                  double feed, DerivativeMethod method, double filterSeconds = 0.008,
-                  std::span<const std::size_t> knots = {}, unsigned threads = 1);
+std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s,
+                                                  std::span<const std::vector<double>> positions,
+                                                  double feed, DerivativeMethod method,
+                                                  double filterSeconds = 0.008,
+                                                  std::span<const std::size_t> knots = {});
 
 // The positions of axis k at the samples: a view of the caller's own, or of `scratch` filled
 // for the call. Called once per axis, on the thread that differentiates it.
@@ -56,8 +57,7 @@ using PositionsOf =
 std::vector<Result<AxisSeries>>
 differentiateAxes(std::span<const double> s, std::size_t axes, const PositionsOf& positionsOf,
                   double feed, DerivativeMethod method, double filterSeconds = 0.008,
-                  std::span<const std::size_t> knots = {}, unsigned threads = 1,
-                  const CancelToken* cancel = nullptr);
+                  std::span<const std::size_t> knots = {}, const CancelToken* cancel = nullptr);
 
 // The p-quantile (0 <= p <= 1) of |values|, linear interpolation between order statistics
 // (numpy's default). 0 for an empty input. O(n).

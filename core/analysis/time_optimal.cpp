@@ -219,10 +219,6 @@ Status validate(const AxisProfile& profile) {
     return {};
 }
 
-std::unexpected<Error> cancelled() {
-    return makeError(ErrorCode::Cancelled, "the time-optimal machining time was cancelled");
-}
-
 // Backward and forward passes: T2 and the path speed per sample for the problem's bounds.
 // The forward pass reads sample i + 1's controllable bound for the last time where it writes
 // that sample's speed, so the speeds are written over the bounds: one array of 8 bytes per
@@ -233,7 +229,7 @@ Result<TimeOptimalTime> parameterise(const Problem& problem, const CancelToken* 
     std::vector<double> controllable(n, 0.0); // K_i = [0, controllable[i]]; rest at the end
     for (std::size_t i = n - 1; i-- > 0;) {
         if (isCancelledAt(cancel, i)) {
-            return cancelled();
+            return std::unexpected(cancelledError());
         }
         controllable[i] = problem.largestControllable(i, controllable[i + 1]);
     }
@@ -244,7 +240,7 @@ Result<TimeOptimalTime> parameterise(const Problem& problem, const CancelToken* 
     double x = 0.0;
     for (std::size_t i = 0; i + 1 < n; ++i) {
         if (isCancelledAt(cancel, i)) {
-            return cancelled();
+            return std::unexpected(cancelledError());
         }
         const double u = problem.largestControl(i, x, bound[i + 1]);
         const double next = std::clamp(x + 2.0 * problem.step(i) * u, 0.0, bound[i + 1]);

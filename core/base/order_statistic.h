@@ -30,10 +30,9 @@ inline constexpr std::size_t kSelectionSamples = 4096;
 inline constexpr std::size_t kSelectionMargin = 192;
 
 template <class ValueAt>
-double nthSmallestGathered(std::size_t count, std::size_t k, unsigned threads,
-                           const ValueAt& valueAt) {
+double nthSmallestGathered(std::size_t count, std::size_t k, const ValueAt& valueAt) {
     DefaultInitVector<double> values(count); // every value is written below
-    forEachRange(count, threads, [&](std::size_t begin, std::size_t end) {
+    forEachRange(count, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             values[i] = valueAt(i);
         }
@@ -85,9 +84,9 @@ struct Tally {
 };
 
 template <class ValueAt>
-std::vector<RangeTally> tallyRanges(std::size_t count, unsigned threads, const Bracket& bracket,
+std::vector<RangeTally> tallyRanges(std::size_t count, const Bracket& bracket,
                                     const ValueAt& valueAt) {
-    std::vector<RangeTally> tallies(rangeCount(count, threads));
+    std::vector<RangeTally> tallies(rangeCount(count));
     forEachRangeOf(count, tallies.size(), [&](std::size_t r, std::size_t begin, std::size_t end) {
         RangeTally& tally = tallies[r];
         // About the bracket's share of the sample, so the kept values rarely move.
@@ -113,16 +112,16 @@ std::vector<RangeTally> tallyRanges(std::size_t count, unsigned threads, const B
 } // namespace detail
 
 // The k-th smallest (0-based, k < count) of valueAt(0) .. valueAt(count - 1), as
-// std::nth_element would give it. valueAt must be callable from several threads at once and
-// give the same value each time. Values must be ordered (no NaN).
+// std::nth_element would give it, on the context's threads (parallel.h). valueAt must be
+// callable from several threads at once and give the same value each time. Values must be
+// ordered (no NaN).
 template <class ValueAt>
-double nthSmallest(std::size_t count, std::size_t k, unsigned threads, const ValueAt& valueAt) {
+double nthSmallest(std::size_t count, std::size_t k, const ValueAt& valueAt) {
     if (count < detail::kMinSampledSelection) {
-        return detail::nthSmallestGathered(count, k, threads, valueAt);
+        return detail::nthSmallestGathered(count, k, valueAt);
     }
     const detail::Bracket bracket = detail::bracketFromSample(count, k, valueAt);
-    const std::vector<detail::RangeTally> tallies =
-        detail::tallyRanges(count, threads, bracket, valueAt);
+    const std::vector<detail::RangeTally> tallies = detail::tallyRanges(count, bracket, valueAt);
     detail::Tally total;
     for (const detail::RangeTally& tally : tallies) {
         total.below += tally.below;
@@ -131,7 +130,7 @@ double nthSmallest(std::size_t count, std::size_t k, unsigned threads, const Val
         total.inside += tally.inside.size();
     }
     if (k < total.below) {
-        return detail::nthSmallestGathered(count, k, threads, valueAt);
+        return detail::nthSmallestGathered(count, k, valueAt);
     }
     std::size_t rank = k - total.below;
     if (rank < total.atLow) {
@@ -139,9 +138,8 @@ double nthSmallest(std::size_t count, std::size_t k, unsigned threads, const Val
     }
     rank -= total.atLow;
     if (rank >= total.inside) {
-        return rank - total.inside < total.atHigh
-                   ? bracket.high
-                   : detail::nthSmallestGathered(count, k, threads, valueAt);
+        return rank - total.inside < total.atHigh ? bracket.high
+                                                  : detail::nthSmallestGathered(count, k, valueAt);
     }
     std::vector<double> candidates;
     candidates.reserve(total.inside);

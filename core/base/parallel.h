@@ -4,6 +4,10 @@
 // elements, and reductions are combined in range order: a parallel run gives the same bits as a
 // serial one. Small inputs run on the calling thread, where starting threads would cost more
 // than the work (a thread start is tens of microseconds; a point costs tens of nanoseconds).
+// The thread count is the calling thread's context (execution.h): currentThreadCount(), 1
+// unless a ThreadCountScope of the caller's says otherwise.
+
+#include "core/base/execution.h"
 
 #include <algorithm>
 #include <atomic>
@@ -14,32 +18,19 @@
 
 namespace bladeaxis {
 
-// The number of hardware threads, read once. libstdc++ asks the kernel on every call (it opens
-// and reads /sys/devices/system/cpu/online), and a schedule asks about 25 times: on the demo's
-// 3,000 points those reads were a fifth of the time.
-inline unsigned hardwareThreadCount() {
-    static const unsigned count = std::max(1u, std::thread::hardware_concurrency());
-    return count;
-}
-
-// The thread count a `threads` setting means: 0 is every hardware thread.
-inline unsigned resolveThreadCount(unsigned threads) {
-    return threads != 0 ? threads : hardwareThreadCount();
-}
-
 // Below this many elements per range a loop runs serially.
 inline constexpr std::size_t kMinParallelRange = 16384;
 
-// The number of ranges forEachRange splits `count` elements into.
-inline std::size_t rangeCount(std::size_t count, unsigned threads) {
+// The number of ranges forEachRange splits `count` elements into on the context's threads.
+inline std::size_t rangeCount(std::size_t count) {
     const std::size_t byWork = std::max<std::size_t>(1, count / kMinParallelRange);
-    return std::min<std::size_t>(resolveThreadCount(threads), byWork);
+    return std::min<std::size_t>(currentThreadCount(), byWork);
 }
 
 // Calls body(range, begin, end) for `ranges` contiguous ranges covering [0, count), one thread
-// per range (the calling thread takes the first). An exception in any range (out of memory) is
-// rethrown on the calling thread once every range has ended, as a serial loop would throw it,
-// instead of terminating the process from a worker thread.
+// per range (the calling thread takes the first; the others run under its thread count). An
+// exception in any range (out of memory) is rethrown on the calling thread once every range has
+// ended, as a serial loop would throw it, instead of terminating the process from a worker thread.
 template <class Body>
 void forEachRangeOf(std::size_t count, std::size_t ranges, Body&& body) {
     if (ranges == 1) { // the common case of small inputs: no thread, nothing to allocate
@@ -57,8 +48,12 @@ void forEachRangeOf(std::size_t count, std::size_t ranges, Body&& body) {
     };
     std::vector<std::thread> pool;
     pool.reserve(ranges > 0 ? ranges - 1 : 0);
+    const unsigned threads = currentThreadCount();
     for (std::size_t r = 1; r < ranges; ++r) {
-        pool.emplace_back(run, r);
+        pool.emplace_back([&run, threads, r] {
+            ThreadCountScope scope(threads);
+            run(r);
+        });
     }
     if (ranges > 0) {
         run(0);
@@ -73,11 +68,11 @@ void forEachRangeOf(std::size_t count, std::size_t ranges, Body&& body) {
     }
 }
 
-// Calls body(begin, end) over [0, count) in contiguous ranges on up to `threads` threads
-// (0 = all); serially when the input is small.
+// Calls body(begin, end) over [0, count) in contiguous ranges on up to the context's thread
+// count; serially when the input is small.
 template <class Body>
-void forEachRange(std::size_t count, unsigned threads, Body&& body) {
-    forEachRangeOf(count, rangeCount(count, threads),
+void forEachRange(std::size_t count, Body&& body) {
+    forEachRangeOf(count, rangeCount(count),
                    [&body](std::size_t, std::size_t begin, std::size_t end) { body(begin, end); });
 }
 
@@ -85,8 +80,8 @@ void forEachRange(std::size_t count, unsigned threads, Body&& body) {
 // each range stops at its own first one, and the result is the first failing i of the whole
 // input (count when none). Every i before it has been stepped, as in the serial loop.
 template <class Step>
-std::size_t forEachUntilFirstFailure(std::size_t count, unsigned threads, Step&& step) {
-    std::vector<std::size_t> firstFailure(rangeCount(count, threads), count);
+std::size_t forEachUntilFirstFailure(std::size_t count, Step&& step) {
+    std::vector<std::size_t> firstFailure(rangeCount(count), count);
     forEachRangeOf(count, firstFailure.size(),
                    [&](std::size_t range, std::size_t begin, std::size_t end) {
                        for (std::size_t i = begin; i < end; ++i) {
@@ -100,12 +95,12 @@ std::size_t forEachUntilFirstFailure(std::size_t count, unsigned threads, Step&&
 }
 
 // Runs first() and second(), two independent pieces of serial work over `work` points, at once
-// on two threads when `threads` allows two (0 = all) and the work is worth a thread (at least
+// on two threads when the context allows two and the work is worth a thread (at least
 // kMinParallelRange points), otherwise one after the other on the calling thread. An exception
 // in either is rethrown once both have ended, as in forEachRangeOf.
 template <class First, class Second>
-void runBoth(std::size_t work, unsigned threads, First&& first, Second&& second) {
-    if (resolveThreadCount(threads) < 2 || work < kMinParallelRange) {
+void runBoth(std::size_t work, First&& first, Second&& second) {
+    if (currentThreadCount() < 2 || work < kMinParallelRange) {
         first();
         second();
         return;
@@ -119,12 +114,12 @@ void runBoth(std::size_t work, unsigned threads, First&& first, Second&& second)
     });
 }
 
-// Calls body(i) for every i in [0, count), items handed out one at a time to up to `threads`
-// threads (0 = all): for few items of uneven cost, such as the layers of a toolpath. `weight`
+// Calls body(i) for every i in [0, count), items handed out one at a time to up to the context's
+// thread count: for few items of uneven cost, such as the layers of a toolpath. `weight`
 // is the total work in points; below kMinParallelRange points all of it runs serially.
 template <class Body>
-void forEachItem(std::size_t count, std::size_t weight, unsigned threads, Body&& body) {
-    const std::size_t workers = std::min(rangeCount(weight, threads), count);
+void forEachItem(std::size_t count, std::size_t weight, Body&& body) {
+    const std::size_t workers = std::min(rangeCount(weight), count);
     std::atomic<std::size_t> next{0};
     forEachRangeOf(workers, workers, [&](std::size_t, std::size_t, std::size_t) {
         for (std::size_t i = next++; i < count; i = next++) {

@@ -2,6 +2,8 @@
 // Progress reporting and cooperative cancellation, free of any GUI toolkit. The GUI implements
 // ProgressSink and marshals calls to its own thread; batch prints or ignores them.
 
+#include "core/base/error.h"
+
 #include <atomic>
 #include <cstddef>
 #include <string_view>
@@ -30,6 +32,24 @@ inline constexpr std::size_t kIterationsPerCancelPoll = std::size_t{1} << 16;
 // Whether iteration i of such a loop should stop.
 inline bool isCancelledAt(const CancelToken* cancel, std::size_t i) {
     return i % kIterationsPerCancelPoll == 0 && isCancelled(cancel);
+}
+
+// The one error of a computation stopped by its token, whichever stage it was in: every stage
+// reports a cancellation with it, so that the callers (the batch front end, the GUI, the
+// Python module) tell a cancellation by its code and never by a stage's wording.
+inline Error cancelledError() {
+    return Error{ErrorCode::Cancelled, "stopped on request", {}, {}};
+}
+
+// cancelledError() once an optional token (null: the caller cannot cancel) is set.
+inline Status checkCancelled(const CancelToken* cancel) {
+    if (isCancelled(cancel)) {
+        return std::unexpected(cancelledError());
+    }
+    return {};
+}
+inline Status checkCancelled(const CancelToken& cancel) {
+    return checkCancelled(&cancel);
 }
 
 class ProgressSink {

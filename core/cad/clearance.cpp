@@ -196,7 +196,7 @@ Result<ClearanceReport> checkClearance(const SurfaceSamples& blade, const toolpa
             }
         }
     };
-    const unsigned threads = resolveThreadCount(options.threads);
+    const unsigned threads = currentThreadCount(); // the caller's context (execution.h)
     {
         std::vector<std::jthread> pool;
         for (unsigned t = 1; t < threads; ++t) {

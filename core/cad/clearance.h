@@ -39,7 +39,6 @@ struct ClearanceOptions {
     // prunes everything farther away (4 us per CL point at 5 mm, 100 us unlimited, on the demo
     // profile). Collisions and near misses are always exact.
     double searchLimit = 5.0; // mm, > 0 (infinity = exact everywhere)
-    unsigned threads = 0;     // 0 = hardware concurrency
     // Inclusive record ranges per layer; empty = one layer per revolution of the ball centre
     // about the rotary axis x, counted from the first record.
     std::vector<std::pair<std::size_t, std::size_t>> layers;

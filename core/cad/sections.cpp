@@ -270,10 +270,8 @@ Result<std::vector<Polyline3>> sectionAtX(const CadShape& shape, double x,
                      [&] { return sectionWithOcct(occtShape(shape), x, options); });
 }
 
-Result<std::vector<std::vector<Polyline3>>> sectionsAtX(const CadShape& shape,
-                                                        std::span<const double> xs,
-                                                        const SectionOptions& options,
-                                                        unsigned threads) {
+Result<std::vector<std::vector<Polyline3>>>
+sectionsAtX(const CadShape& shape, std::span<const double> xs, const SectionOptions& options) {
     std::vector<std::optional<Result<std::vector<Polyline3>>>> results(xs.size());
     std::atomic<std::size_t> next{0};
     auto worker = [&] {
@@ -282,7 +280,7 @@ Result<std::vector<std::vector<Polyline3>>> sectionsAtX(const CadShape& shape,
         }
     };
     const unsigned count = std::min<unsigned>(
-        resolveThreadCount(threads), static_cast<unsigned>(std::max<std::size_t>(1, xs.size())));
+        currentThreadCount(), static_cast<unsigned>(std::max<std::size_t>(1, xs.size())));
     std::vector<std::jthread> pool;
     for (unsigned t = 1; t < count; ++t) {
         pool.emplace_back(worker);

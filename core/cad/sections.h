@@ -33,11 +33,10 @@ struct SectionOptions {
 Result<std::vector<Polyline3>> sectionAtX(const CadShape& shape, double x,
                                           const SectionOptions& options = {});
 
-// The sections at every x, in order. The shape is shared read-only between up to `threads`
-// workers (0 = the hardware concurrency); each plane is an independent boolean operation.
-Result<std::vector<std::vector<Polyline3>>> sectionsAtX(const CadShape& shape,
-                                                        std::span<const double> xs,
-                                                        const SectionOptions& options = {},
-                                                        unsigned threads = 0);
+// The sections at every x, in order. The shape is shared read-only between as many workers as
+// the context's thread count (core/base/execution.h); each plane is an independent boolean
+// operation.
+Result<std::vector<std::vector<Polyline3>>>
+sectionsAtX(const CadShape& shape, std::span<const double> xs, const SectionOptions& options = {});
 
 } // namespace bladeaxis::cad

@@ -136,8 +136,8 @@ Status addQuaternion(const EvaluationContext& context, const scheduling::Schedul
     settings.push_back(vector);
     for (baselines::QuaternionSettings& setting : settings) {
         setting.margin = options.best.marginRad;
-        if (cancel.isCancelled()) {
-            return makeError(ErrorCode::Cancelled, "comparison cancelled");
+        if (auto status = checkCancelled(cancel); !status) {
+            return status;
         }
         const auto start = Clock::now();
         auto orientations = baselines::quaternionOrientations(input, comparison.reference, setting);
@@ -236,8 +236,8 @@ Result<Comparison> compareMethods(EvaluationContext context, const CompareOption
 
     auto add = [&](std::string method, std::string setting, std::vector<Vec3> axes,
                    double seconds) -> Status {
-        if (cancel.isCancelled()) {
-            return makeError(ErrorCode::Cancelled, "comparison cancelled");
+        if (auto status = checkCancelled(cancel); !status) {
+            return status;
         }
         auto evaluated = evaluateMethod(context, std::move(method), std::move(setting),
                                         std::move(axes), seconds);

@@ -177,7 +177,6 @@ Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel
     }
     analysis::AxisProfileOptions options = spec.analysis;
     options.blockTimes = passIsBlockTimed(result.program, result.pass.first, result.pass.count);
-    options.threads = spec.parameters.threads; // nothing else runs yet
     options.cancel = &cancel;
     if (result.toolRadius) {
         options.toolRadius = *result.toolRadius;

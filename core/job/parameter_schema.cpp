@@ -220,7 +220,7 @@ std::vector<ParameterInfo> curveParameters() {
                 &P::epsilonBisectionSteps),
         integer("curve_checks_per_cubic", "Curve points checked per cubic by the exact rule (§5.4)",
                 2, 10000, &P::curveChecksPerCubic),
-        integer("threads", "Worker threads over layers, 0 = all cores", 0, 1024, &P::threads),
+        integer("threads", "Threads the job runs on, 0 = all cores", 0, 1024, &P::threads),
     };
 }
 

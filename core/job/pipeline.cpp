@@ -5,6 +5,7 @@
 // (docs/architecture.md, "Lifetime").
 
 #include "core/analysis/time_optimal.h"
+#include "core/base/execution.h"
 #include "core/base/free_storage.h"
 #include "core/base/memory_policy.h"
 #include "core/job/job.h"
@@ -139,12 +140,8 @@ RescheduleInput rescheduleInputOf(JobResult& result, const JobSpec& spec,
     reschedule.keep = result.kept;
     reschedule.analysis = spec.analysis;
     reschedule.analysis.toolRadius = *result.toolRadius;
-    // The new motion's axes are differentiated beside the one-threaded re-read check and then
-    // alone: on every core, as the input's are (the figures do not depend on the threads).
-    reschedule.analysis.threads = spec.parameters.threads;
     reschedule.analysis.blockTimes =
         passIsBlockTimed(result.program, result.pass.first, result.pass.count);
-    reschedule.threads = spec.parameters.threads;
     return reschedule;
 }
 
@@ -302,6 +299,9 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
 
 Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const CancelToken& cancel,
                          const OriginalReadyHook& originalReady) {
+    // The job's execution context: every parallel loop of its stages, and every task it starts
+    // (runAsync), runs on the job's thread count.
+    ThreadCountScope threads(spec.parameters.threads);
     const auto start = std::chrono::steady_clock::now();
     // Before anything runs: outputs that would overwrite each other or an input.
     if (auto refused = refuseSharedPaths(spec); !refused) {
@@ -326,7 +326,7 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     // T2 needs only the input's profile, which nothing changes from here on: it runs beside the
     // tilt check and the re-scheduling. `input` is declared after the result, so an early return
     // waits for it before the result goes.
-    input.timeOptimal = std::async(std::launch::async, [&result, &cancel] {
+    input.timeOptimal = runAsync([&result, &cancel] {
         return analysis::convergedTimeOptimalOrNone(result.original, result.machine, &cancel);
     });
     if (originalReady) {

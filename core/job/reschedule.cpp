@@ -1,6 +1,7 @@
 #include "core/job/reschedule.h"
 
 #include "core/analysis/time_optimal.h"
+#include "core/base/execution.h"
 #include "core/base/free_storage.h"
 #include "core/base/number_io.h"
 #include "core/base/units.h"
@@ -309,7 +310,7 @@ Result<RescheduleOutcome> reschedule(scheduling::ScheduleResult schedule,
     RescheduleOutcome outcome = outcomeFrom(std::move(schedule));
     outcome.toolRadius = input.pass.toolRadius;
     progress.report(0.28, "computing the new machine axes");
-    auto axes = newMachineAxes(input.pass, outcome.schedule, input.threads, cancel);
+    auto axes = newMachineAxes(input.pass, outcome.schedule, cancel);
     if (!axes) {
         return std::unexpected(axes.error());
     }
@@ -322,7 +323,7 @@ Result<RescheduleOutcome> reschedule(scheduling::ScheduleResult schedule,
     const AnalysisStart start = analysisStartOf(input);
     std::future<Result<NewMotion>> analysed;
     const auto startAnalysis = [&](std::launch policy) {
-        analysed = std::async(policy, [&] { return analyseNewMotion(input, outcome, cancel); });
+        analysed = runAsync(policy, [&] { return analyseNewMotion(input, outcome, cancel); });
     };
     if (start == AnalysisStart::BesideRewrite) {
         startAnalysis(std::launch::async);

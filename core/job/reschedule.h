@@ -111,7 +111,6 @@ struct RescheduleInput {
     Retention keep;
     // The output file the written program is staged to (keep.writtenText false).
     std::shared_ptr<StagedFile> stagedProgram;
-    unsigned threads = 0; // of the inverse kinematics (0 = all)
 };
 
 // Largest ball-centre deviation accepted when the written program is read back: the program's
@@ -126,10 +125,6 @@ constexpr double kCentreDeviationLimitMm = 5e-3;
 // program's feeds from the written program read back.
 bool passIsBlockTimed(const io::LoadedProgram& program, std::size_t first, std::size_t count);
 
-// ErrorCode::Cancelled once the token is set. A job checks it between its stages, each a second
-// or more on millions of blocks, so that an interrupt takes effect at the next stage.
-Status checkCancelled(const CancelToken& cancel);
-
 // The pass as the scheduling reads it: each record's ball centre and tool axis, read when
 // needed, so that no copy of them stands beside the plane path (48 bytes per record).
 scheduling::ScheduleSamples scheduleSamplesOf(std::span<const toolpath::ClRecord> pass,
@@ -141,7 +136,7 @@ scheduling::ScheduleSamples scheduleSamplesOf(std::span<const toolpath::ClRecord
 // program starts where the old one did and A stays continuous.
 Result<std::vector<kinematics::MachineAxes>>
 newMachineAxes(const PassToRewrite& pass, const scheduling::ScheduleResult& schedule,
-               unsigned threads, const CancelToken& cancel);
+               const CancelToken& cancel);
 
 // Where a rewrite's text goes: whole into the returned string, or in pieces of a few megabytes
 // to a staged output file (the string is then empty), checking the token between pieces.

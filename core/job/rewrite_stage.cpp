@@ -142,13 +142,6 @@ std::span<const ClRecord> PassToRewrite::records() const {
     return std::span(program->path().records).subspan(passFirst, passCount);
 }
 
-Status checkCancelled(const CancelToken& cancel) {
-    if (cancel.isCancelled()) {
-        return makeError(ErrorCode::Cancelled, "the job was cancelled");
-    }
-    return {};
-}
-
 scheduling::ScheduleSamples scheduleSamplesOf(std::span<const ClRecord> pass, double toolRadius) {
     return {.count = pass.size(),
             .centreAt = [pass, toolRadius](
@@ -159,7 +152,7 @@ scheduling::ScheduleSamples scheduleSamplesOf(std::span<const ClRecord> pass, do
 
 Result<std::vector<kinematics::MachineAxes>>
 newMachineAxes(const PassToRewrite& pass, const scheduling::ScheduleResult& schedule,
-               unsigned threads, const CancelToken& cancel) {
+               const CancelToken& cancel) {
     const analysis::PathSamples samples =
         rescheduledSamples(pass.records(), schedule, pass.toolRadius, {});
     // The poses are made as the IK reads them: an array of them (48 bytes per record) would
@@ -168,17 +161,17 @@ newMachineAxes(const PassToRewrite& pass, const scheduling::ScheduleResult& sche
         return kinematics::ToolPose{samples.tip(i), samples.toolAxis(i)};
     };
     auto solved = kinematics::inverseKinematicsAlong(pass.machine->chain, samples.size(), poseAt,
-                                                     pass.startA, threads, &cancel);
-    if (solved.cancelled) {
-        return std::unexpected(checkCancelled(cancel).error()); // the job's own Cancelled
+                                                     pass.startA, &cancel);
+    if (!solved) {
+        return std::unexpected(solved.error()); // Cancelled
     }
-    if (solved.failedIndex) {
-        Error error = solved.failure;
-        error.where = {pass.program->path().sourceFile, pass.records()[*solved.failedIndex].line,
+    if (solved->failedIndex) {
+        Error error = solved->failure;
+        error.where = {pass.program->path().sourceFile, pass.records()[*solved->failedIndex].line,
                        0};
         return std::unexpected(error);
     }
-    return std::move(solved.axes);
+    return std::move(solved->axes);
 }
 
 Result<std::string> rewriteProgram(const PassToRewrite& pass,

@@ -58,26 +58,22 @@ MachineAxes axesAt(const TableAHeadB& chain, const ToolPose& pose, double bMath,
 } // namespace
 
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const ToolPose> poses,
-                                     double aStart, unsigned threads) {
-    return inverseKinematicsAlong(
-        chain, poses.size(), [poses](std::size_t i) { return poses[i]; }, aStart, threads);
+                                     double aStart) {
+    // Without a token nothing cancels it: the result is always there.
+    return *inverseKinematicsAlong(
+        chain, poses.size(), [poses](std::size_t i) { return poses[i]; }, aStart);
 }
 
-IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count,
-                                     const std::function<ToolPose(std::size_t)>& poseAt,
-                                     double aStart, unsigned threads, const CancelToken* cancel) {
-    const auto cancelled = [] {
-        IkAlongResult stopped;
-        stopped.cancelled = true;
-        return stopped;
-    };
+Result<IkAlongResult> inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count,
+                                             const std::function<ToolPose(std::size_t)>& poseAt,
+                                             double aStart, const CancelToken* cancel) {
     IkAlongResult result;
     // The angles of every pose at once (they need no neighbour), the earliest failure wins.
     // They wait in the result's own a and b (math convention, A wrapped) until the axes are
     // made, rather than in an array of their own. A poll that finds the token set stops the
     // pass like a failure; the token, looked at afterwards, tells the two apart.
     result.axes.resize(count);
-    const std::size_t failed = forEachUntilFirstFailure(count, threads, [&](std::size_t i) {
+    const std::size_t failed = forEachUntilFirstFailure(count, [&](std::size_t i) {
         if (isCancelledAt(cancel, i)) {
             return false;
         }
@@ -88,8 +84,8 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count
         }
         return solved.has_value();
     });
-    if (isCancelled(cancel)) {
-        return cancelled();
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
     }
     if (failed < count) {
         result.axes.clear();
@@ -103,7 +99,7 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count
         axes.a = geometry::unwrapNear(axes.a, reference);
         reference = axes.a;
     }
-    forEachRange(count, threads, [&](std::size_t begin, std::size_t end) {
+    forEachRange(count, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             if (isCancelledAt(cancel, i)) {
                 return;
@@ -113,8 +109,8 @@ IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count
             result.axes[i] = axesAt(chain, poseAt(i), bMath, aMath);
         }
     });
-    if (isCancelled(cancel)) {
-        return cancelled();
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
     }
     return result;
 }

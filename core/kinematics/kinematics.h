@@ -30,24 +30,23 @@ Result<MachineAxes> inverseKinematics(const TableAHeadB& chain, const ToolPose& 
 
 // IK of consecutive poses with A continuous: the first pose is solved nearest `aStart`, every
 // later one nearest the A of the one before. A failed pose (the first one) is reported as
-// `failedIndex`, with no axes. The poses are solved on up to `threads` threads (0 = all); only the
-// unwrapping runs in order, so the result is the one-thread result bit for bit.
+// `failedIndex`, with no axes. The poses are solved on the context's threads
+// (core/base/execution.h); only the unwrapping runs in order, so the result is the one-thread
+// result bit for bit.
 struct IkAlongResult {
     std::vector<MachineAxes> axes;
     std::optional<std::size_t> failedIndex;
-    Error failure;          // meaningful when failedIndex is set
-    bool cancelled = false; // the token was set: no axes, no failure
+    Error failure; // meaningful when failedIndex is set
 };
 IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::span<const ToolPose> poses,
-                                     double aStart, unsigned threads = 1);
-// The same for `count` poses made on demand: poseAt(i) is called (from up to `threads`
-// threads, twice per pose) instead of a pose array being kept, 48 bytes per pose. With a
-// token, each thread looks at it every 65,536 poses (a few milliseconds): once it is set the
-// result is `cancelled`.
-IkAlongResult inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count,
-                                     const std::function<ToolPose(std::size_t)>& poseAt,
-                                     double aStart, unsigned threads = 1,
-                                     const CancelToken* cancel = nullptr);
+                                     double aStart);
+// The same for `count` poses made on demand: poseAt(i) is called (from the context's threads,
+// twice per pose) instead of a pose array being kept, 48 bytes per pose. With a token, each
+// thread looks at it every 65,536 poses (a few milliseconds): once it is set the result is
+// cancelledError() (progress.h).
+Result<IkAlongResult> inverseKinematicsAlong(const TableAHeadB& chain, std::size_t count,
+                                             const std::function<ToolPose(std::size_t)>& poseAt,
+                                             double aStart, const CancelToken* cancel = nullptr);
 
 // Tool axis for a given programmed A and B, in W (spec §6.1 with the sign conventions).
 Vec3 toolAxisFor(const TableAHeadB& chain, double a, double b);

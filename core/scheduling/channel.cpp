@@ -11,12 +11,12 @@
 namespace bladeaxis::scheduling {
 
 RawChannel buildRawChannel(const TangentField& tangents, std::span<const ConcaveRun> runs,
-                           double inwardRad, unsigned threads) {
+                           double inwardRad) {
     const std::size_t n = tangents.forwardAngle.size();
     RawChannel channel;
     channel.thetaMax.resize(n);
     channel.thetaMin.resize(n);
-    forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
+    forEachRange(n, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             // E12: forward limit along e+, backward limit along -e-; width pi + tau - 2 inward.
             channel.thetaMax[i] = tangents.forwardAngle[i] - inwardRad;
@@ -25,7 +25,7 @@ RawChannel buildRawChannel(const TangentField& tangents, std::span<const Concave
         }
     });
     // The runs at once: each writes only its own samples.
-    forEachItem(runs.size(), n, threads, [&channel, runs, n](std::size_t r) {
+    forEachItem(runs.size(), n, [&channel, runs, n](std::size_t r) {
         const ConcaveRun& run = runs[r];
         // [A] A run without an exit (it reaches the path end) keeps its last sample's limit.
         // Both limits are read before the run is overwritten; an exit is never inside a run

@@ -20,9 +20,9 @@ struct RawChannel {
 
 // §2.1 convex formula everywhere, then §2.2 for every sample of a concave run:
 // thetaMax = thetaMax(exit), thetaMin = thetaMin(entry). `inwardRad` = taper + safety angle.
-// The per-sample limits are computed on up to `threads` threads (0 = all).
+// The per-sample limits are computed on the context's threads (core/base/execution.h).
 RawChannel buildRawChannel(const TangentField& tangents, std::span<const ConcaveRun> runs,
-                           double inwardRad, unsigned threads = 1);
+                           double inwardRad);
 
 // §2.4 [X] global visibility: clip thetaMax_i by the directions to the next `reach` points
 // and thetaMin_i by the directions to the previous ones (each relative to the local limit).

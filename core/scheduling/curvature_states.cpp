@@ -18,12 +18,11 @@ namespace {
 // The smoothed values are written over kappa's own: only the prefix sums read it.
 DefaultInitVector<double> smoothCurvature(std::span<const double> s,
                                           DefaultInitVector<double> kappa,
-                                          const CurvatureWeights prefix, double window,
-                                          unsigned threads) {
+                                          const CurvatureWeights prefix, double window) {
     const std::size_t n = s.size();
     DefaultInitVector<double> smoothed = std::move(kappa);
     const double half = 0.5 * window;
-    forEachRange(n, threads, [&](std::size_t begin, std::size_t end) {
+    forEachRange(n, [&](std::size_t begin, std::size_t end) {
         const auto indexOf = [&s](auto it) { return static_cast<std::size_t>(it - s.begin()); };
         std::size_t low =
             indexOf(std::partition_point(s.begin(), s.begin() + static_cast<long>(begin),
@@ -57,10 +56,10 @@ struct HysteresisRange {
 };
 
 DefaultInitVector<CurvatureState> hysteresisStates(std::span<const double> smoothed,
-                                                   double threshold, unsigned threads) {
+                                                   double threshold) {
     const std::size_t n = smoothed.size();
     DefaultInitVector<CurvatureState> states(n); // every sample is written below
-    std::vector<HysteresisRange> ranges(rangeCount(n, threads));
+    std::vector<HysteresisRange> ranges(rangeCount(n));
     CurvatureState* const out = states.data();
     forEachRangeOf(
         n, ranges.size(),
@@ -97,13 +96,13 @@ DefaultInitVector<CurvatureState> hysteresisStates(std::span<const double> smoot
 // The runs start where a concave state follows a convex one (or the path starts concave) and
 // end where a convex one follows: they are made from the altered points, in order (a few per
 // layer).
-std::vector<ConcaveRun> runsOf(std::span<const CurvatureState> states, unsigned threads) {
+std::vector<ConcaveRun> runsOf(std::span<const CurvatureState> states) {
     const std::size_t n = states.size();
     std::vector<ConcaveRun> runs;
     if (n > 0 && states[0] == CurvatureState::Concave) {
         runs.push_back({0, n, 0.0, 0.0});
     }
-    for (std::size_t i : alteredPoints(states, threads)) {
+    for (std::size_t i : alteredPoints(states)) {
         if (states[i] == CurvatureState::Concave) {
             runs.push_back({i, n, 0.0, 0.0});
         } else {
@@ -119,7 +118,7 @@ double endArc(std::span<const double> s, const ConcaveRun& run) {
 
 std::vector<ConcaveRun> mergeAndDrop(std::vector<ConcaveRun> runs, std::span<const double> s,
                                      std::span<const double> turning,
-                                     const CurvatureSettings& settings, unsigned threads) {
+                                     const CurvatureSettings& settings) {
     std::vector<ConcaveRun> merged;
     for (const ConcaveRun& run : runs) {
         if (!merged.empty() && merged.back().exit < s.size() &&
@@ -130,7 +129,7 @@ std::vector<ConcaveRun> mergeAndDrop(std::vector<ConcaveRun> runs, std::span<con
         }
     }
     // Each run's sum in order, the runs at once.
-    forEachItem(merged.size(), s.size(), threads, [&merged, s, turning](std::size_t r) {
+    forEachItem(merged.size(), s.size(), [&merged, s, turning](std::size_t r) {
         ConcaveRun& run = merged[r];
         run.lengthMm = endArc(s, run) - s[run.entry];
         const std::size_t stop = std::min(run.exit, s.size());
@@ -168,35 +167,32 @@ CurvatureWeights curvatureWeights(std::span<const double> s, std::span<const dou
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    std::span<const double> curvature,
                                    std::span<const double> turning,
-                                   const CurvatureSettings& settings, unsigned threads) {
+                                   const CurvatureSettings& settings) {
     return analyseCurvature(arcLength,
                             DefaultInitVector<double>(curvature.begin(), curvature.end()), turning,
-                            settings, threads);
+                            settings);
 }
 
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    DefaultInitVector<double>&& curvature,
                                    std::span<const double> turning,
-                                   const CurvatureSettings& settings, unsigned threads) {
+                                   const CurvatureSettings& settings) {
     CurvatureWeights weights = curvatureWeights(arcLength, curvature);
-    return analyseCurvature(arcLength, std::move(curvature), std::move(weights), turning, settings,
-                            threads);
+    return analyseCurvature(arcLength, std::move(curvature), std::move(weights), turning, settings);
 }
 
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    DefaultInitVector<double>&& curvature,
                                    CurvatureWeights&& weights, std::span<const double> turning,
-                                   const CurvatureSettings& settings, unsigned threads) {
+                                   const CurvatureSettings& settings) {
     CurvatureAnalysis analysis;
     if (arcLength.empty()) {
         return analysis;
     }
-    analysis.smoothedCurvature = smoothCurvature(arcLength, std::move(curvature),
-                                                 std::move(weights), settings.windowMm, threads);
-    analysis.hysteresis =
-        hysteresisStates(analysis.smoothedCurvature, settings.hysteresisPerMm, threads);
-    analysis.runs =
-        mergeAndDrop(runsOf(analysis.hysteresis, threads), arcLength, turning, settings, threads);
+    analysis.smoothedCurvature =
+        smoothCurvature(arcLength, std::move(curvature), std::move(weights), settings.windowMm);
+    analysis.hysteresis = hysteresisStates(analysis.smoothedCurvature, settings.hysteresisPerMm);
+    analysis.runs = mergeAndDrop(runsOf(analysis.hysteresis), arcLength, turning, settings);
     analysis.state.assign(arcLength.size(), CurvatureState::Convex);
     for (const ConcaveRun& run : analysis.runs) {
         for (std::size_t k = run.entry; k < std::min(run.exit, arcLength.size()); ++k) {
@@ -206,10 +202,10 @@ CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
     return analysis;
 }
 
-std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states, unsigned threads) {
+std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states) {
     // Each range of samples lists its own changes; the lists are joined in order.
     const std::size_t n = states.size();
-    std::vector<std::vector<std::size_t>> changes(rangeCount(n, threads));
+    std::vector<std::vector<std::size_t>> changes(rangeCount(n));
     forEachRangeOf(n, changes.size(),
                    [&changes, states](std::size_t r, std::size_t begin, std::size_t end) {
                        for (std::size_t i = std::max<std::size_t>(begin, 1); i < end; ++i) {

@@ -43,27 +43,26 @@ CurvatureWeights curvatureWeights(std::span<const double> arcLength,
                                   std::span<const double> curvature);
 
 // `curvature` is the per-sample estimate of TangentField; `turning` the per-sample tau. The
-// smoothing runs on up to `threads` threads (0 = all), with the same result as on one.
+// smoothing runs on the context's threads (core/base/execution.h), with the same result as on one.
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    std::span<const double> curvature,
                                    std::span<const double> turning,
-                                   const CurvatureSettings& settings, unsigned threads = 1);
+                                   const CurvatureSettings& settings);
 // The same, the smoothed curvature written over the given one's storage (8 bytes per sample
 // fewer where the scheduling makes its channel stage).
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    DefaultInitVector<double>&& curvature,
                                    std::span<const double> turning,
-                                   const CurvatureSettings& settings, unsigned threads = 1);
+                                   const CurvatureSettings& settings);
 // The same with the weights already summed (curvatureWeights of the same samples), so that
 // their sum can run beside other serial work. They are freed once the smoothing has read them.
 CurvatureAnalysis analyseCurvature(std::span<const double> arcLength,
                                    DefaultInitVector<double>&& curvature,
                                    CurvatureWeights&& weights, std::span<const double> turning,
-                                   const CurvatureSettings& settings, unsigned threads = 1);
+                                   const CurvatureSettings& settings);
 
 // Indices where the state differs from the predecessor's, in feed order (the altered points),
-// found on up to `threads` threads (0 = all).
-std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states,
-                                       unsigned threads = 1);
+// found on the context's threads.
+std::vector<std::size_t> alteredPoints(std::span<const CurvatureState> states);
 
 } // namespace bladeaxis::scheduling

@@ -17,7 +17,7 @@ struct LayerOverride {
     std::size_t layer = 0; // layer number in feed order
     // Per-layer settings; unset: the job's. A preset replaces the layer's own settings (margin,
     // lead, key points, corners); the channel-wide ones (taper, tangents, curvature,
-    // visibility, threads) stay the job's, because the channel is shared by all layers.
+    // visibility) stay the job's, because the channel is shared by all layers.
     std::optional<Preset> preset;
     std::optional<double> marginRad;
     std::optional<EpsilonRule> epsilonRule;

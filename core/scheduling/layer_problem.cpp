@@ -195,12 +195,12 @@ LayerProblem layerProblem(const PlanePath& path, const LayerSpan& span, Absolute
 
 std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawChannel& channel,
                                              const LayerSplit& split,
-                                             std::span<const double> margins, double shortLengthMm,
-                                             unsigned threads) {
+                                             std::span<const double> margins,
+                                             double shortLengthMm) {
     const std::size_t count = split.layers.size();
     const std::size_t points = path.arcLength.size();
     std::vector<AbsoluteLayer> absolute(count);
-    forEachItem(count, points, threads, [&](std::size_t k) {
+    forEachItem(count, points, [&](std::size_t k) {
         absolute[k] = absoluteLayer(path, channel, split.layers[k], margins[k]);
     });
     // J_k for k >= 1: the base vector on layer k's hull, never above layer k-1's hull over its
@@ -214,7 +214,7 @@ std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawCha
     const std::vector<LayerSpan> spans =
         spansAroundKeptLayers(split, absolute, junction, junctionWarnings);
     std::vector<LayerProblem> problems(count);
-    forEachItem(count, points, threads, [&](std::size_t k) {
+    forEachItem(count, points, [&](std::size_t k) {
         problems[k] = layerProblem(path, spans[k], absolute[k], junction[k], junction[k + 1],
                                    shortLengthMm, k);
     });

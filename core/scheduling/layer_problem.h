@@ -31,7 +31,6 @@ struct LayerProblem {
 // scheduling frees the rest before).
 std::vector<LayerProblem> buildLayerProblems(const PlanePath& path, const RawChannel& channel,
                                              const LayerSplit& split,
-                                             std::span<const double> margins, double shortLengthMm,
-                                             unsigned threads = 1);
+                                             std::span<const double> margins, double shortLengthMm);
 
 } // namespace bladeaxis::scheduling

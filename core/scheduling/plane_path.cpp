@@ -126,9 +126,8 @@ MergeRange mergeRange(Centres centres, Axes axes, PlanePath& path, std::size_t b
 }
 
 template <class Centres, class Axes>
-std::vector<MergeRange> mergeRanges(const Centres& centres, const Axes& axes, PlanePath& path,
-                                    unsigned threads) {
-    std::vector<MergeRange> ranges(rangeCount(centres.size(), threads));
+std::vector<MergeRange> mergeRanges(const Centres& centres, const Axes& axes, PlanePath& path) {
+    std::vector<MergeRange> ranges(rangeCount(centres.size()));
     forEachRangeOf(centres.size(), ranges.size(),
                    [&](std::size_t r, std::size_t begin, std::size_t end) {
                        ranges[r] = mergeRange(centres, axes, path, begin, end, begin - 1);
@@ -164,12 +163,11 @@ std::size_t compactRanges(std::span<const MergeRange> ranges, PlanePath& path) {
 
 // Returns the first faulty input (faultOf), or the input count when there is none.
 template <class Centres, class Axes>
-std::size_t mergeDuplicates(const Centres& centres, const Axes& axes, PlanePath& path,
-                            unsigned threads) {
+std::size_t mergeDuplicates(const Centres& centres, const Axes& axes, PlanePath& path) {
     const std::size_t n = centres.size();
     path.firstInput.resize(n);
     path.arcLength.resize(n);
-    const std::vector<MergeRange> ranges = mergeRanges(centres, axes, path, threads);
+    const std::vector<MergeRange> ranges = mergeRanges(centres, axes, path);
     for (const MergeRange& range : ranges) {
         if (range.firstFault < range.end) {
             return range.firstFault;
@@ -230,7 +228,7 @@ std::pair<double, double> axialRange(const std::uint32_t* inputs, Axes axes, dou
 // monotone, so the extremes and the median are taken on the axial values and only those three
 // go through asin (the same values as asin of every sample, without n asin calls).
 double tiltFrom(std::span<const double> axial, std::span<const std::pair<double, double>> extremes,
-                std::vector<std::string>& warn, unsigned threads) {
+                std::vector<std::string>& warn) {
     double low = extremes.front().first;
     double high = extremes.front().second;
     for (const auto& [rangeLow, rangeHigh] : extremes) {
@@ -240,10 +238,10 @@ double tiltFrom(std::span<const double> axial, std::span<const std::pair<double,
     const double spread = std::asin(high) - std::asin(low);
     // A constant tilt (the usual case) is its own median. Otherwise nthSmallest finds it on
     // every thread, without reordering the values.
-    const double median =
-        std::asin(low == high ? low
-                              : nthSmallest(axial.size(), axial.size() / 2, threads,
-                                            [axial](std::size_t k) { return axial[k]; }));
+    const double median = std::asin(
+        low == high ? low : nthSmallest(axial.size(), axial.size() / 2, [axial](std::size_t k) {
+            return axial[k];
+        }));
     if (spread > tol::kConstantTiltRad) {
         warn.push_back("input tilt B is not constant (spread " +
                        formatFixed(units::radToDeg(spread), 4) + " deg); the median " +
@@ -256,7 +254,7 @@ double tiltFrom(std::span<const double> axial, std::span<const std::pair<double,
 // of the tilt, in chunks handed to whichever thread is free, take the others, and the thread
 // of the sum joins them when it is done.
 template <class Centres, class Axes>
-void addSignAndTilt(PlanePath& path, const Centres& centres, const Axes& axes, unsigned threads) {
+void addSignAndTilt(PlanePath& path, const Centres& centres, const Axes& axes) {
     const std::size_t n = path.firstInput.size();
     DefaultInitVector<double> axial(n);
     const std::size_t chunks = (n + kMinParallelRange - 1) / kMinParallelRange;
@@ -264,7 +262,7 @@ void addSignAndTilt(PlanePath& path, const Centres& centres, const Axes& axes, u
     const std::uint32_t* const inputs = path.firstInput.data();
     int sign = 1;
     // The work is two passes over the samples: the sum and the axial values.
-    forEachItem(chunks + 1, 2 * n, threads, [&, inputs, values = axial.data()](std::size_t item) {
+    forEachItem(chunks + 1, 2 * n, [&, inputs, values = axial.data()](std::size_t item) {
         if (item == 0) {
             sign = traversalSignOf(centres, path.firstInput);
             return;
@@ -274,17 +272,16 @@ void addSignAndTilt(PlanePath& path, const Centres& centres, const Axes& axes, u
             axialRange(inputs, axes, values, begin, std::min(n, begin + kMinParallelRange));
     });
     path.traversalSign = sign;
-    path.tiltB0 = tiltFrom(axial, extremes, path.warnings, threads);
+    path.tiltB0 = tiltFrom(axial, extremes, path.warnings);
 }
 
 template <class Centres, class Axes>
-Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, unsigned threads) {
+Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes) {
     if (auto status = checkSizes(centres, axes); !status) {
         return std::unexpected(status.error());
     }
     PlanePath path;
-    if (const std::size_t fault = mergeDuplicates(centres, axes, path, threads);
-        fault < centres.size()) {
+    if (const std::size_t fault = mergeDuplicates(centres, axes, path); fault < centres.size()) {
         return std::unexpected(faultError(centres, axes, fault).error());
     }
     if (path.firstInput.size() < 3) {
@@ -296,13 +293,13 @@ Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, u
         path.warnings.push_back(std::to_string(centres.size() - path.firstInput.size()) +
                                 " duplicate centre(s) merged");
     }
-    addSignAndTilt(path, centres, axes, threads);
+    addSignAndTilt(path, centres, axes);
     if (std::cos(path.tiltB0) < 1e-6) {
         return makeError(ErrorCode::Geometry, "the tool axis is parallel to the rotary axis");
     }
     const std::size_t distinct = path.firstInput.size();
     path.points.resize(distinct);
-    forEachRange(distinct, threads, [&](std::size_t begin, std::size_t end) {
+    forEachRange(distinct, [&](std::size_t begin, std::size_t end) {
         const Centres ownCentres = centres;
         for (std::size_t k = begin; k < end; ++k) {
             const Vec3& q = ownCentres[path.firstInput[k]];
@@ -313,10 +310,10 @@ Result<PlanePath> preparePlanePathOf(const Centres& centres, const Axes& axes, u
 }
 
 template <class Axes>
-void addOriginalAnglesOf(PlanePath& path, const Axes& axes, unsigned threads) {
+void addOriginalAnglesOf(PlanePath& path, const Axes& axes) {
     const std::size_t distinct = path.firstInput.size();
     path.originalAngle.resize(distinct);
-    forEachRange(distinct, threads, [&](std::size_t begin, std::size_t end) {
+    forEachRange(distinct, [&](std::size_t begin, std::size_t end) {
         const Axes ownAxes = axes;
         for (std::size_t k = begin; k < end; ++k) {
             path.originalAngle[k] = planeAngle(ownAxes[path.firstInput[k]], path.traversalSign);
@@ -326,26 +323,22 @@ void addOriginalAnglesOf(PlanePath& path, const Axes& axes, unsigned threads) {
 
 } // namespace
 
-Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes,
-                                   unsigned threads) {
-    return preparePlanePathOf(centres, axes, threads);
+Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes) {
+    return preparePlanePathOf(centres, axes);
 }
 
-void addOriginalAngles(PlanePath& path, std::span<const Vec3> axes, unsigned threads) {
-    addOriginalAnglesOf(path, axes, threads);
+void addOriginalAngles(PlanePath& path, std::span<const Vec3> axes) {
+    addOriginalAnglesOf(path, axes);
 }
 
-void addOriginalAngles(PlanePath& path, const std::function<Vec3(std::size_t)>& axisAt,
-                       unsigned threads) {
-    addOriginalAnglesOf(path, PointsReadAgain(axisAt, std::numeric_limits<std::size_t>::max()),
-                        threads);
+void addOriginalAngles(PlanePath& path, const std::function<Vec3(std::size_t)>& axisAt) {
+    addOriginalAnglesOf(path, PointsReadAgain(axisAt, std::numeric_limits<std::size_t>::max()));
 }
 
 Result<PlanePath> preparePlanePath(const std::function<Vec3(std::size_t)>& centreAt,
                                    const std::function<Vec3(std::size_t)>& axisAt,
-                                   std::size_t count, unsigned threads) {
-    return preparePlanePathOf(PointsReadAgain(centreAt, count), PointsReadAgain(axisAt, count),
-                              threads);
+                                   std::size_t count) {
+    return preparePlanePathOf(PointsReadAgain(centreAt, count), PointsReadAgain(axisAt, count));
 }
 
 } // namespace bladeaxis::scheduling

@@ -30,22 +30,20 @@ struct PlanePath {
 
 // Fails (Geometry / InvalidArgument) on empty or mismatched input, non-finite values, zero
 // axes, axes along the rotary axis, or fewer than 3 distinct centres. The per-point work runs
-// on up to `threads` threads (0 = all), with the same result as on one.
-Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes,
-                                   unsigned threads = 1);
+// on the context's threads (core/base/execution.h), with the same result as on one.
+Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes);
 // The same with each centre and axis read through a function (bit for bit what the arrays would
-// hold): no copy of the input is made. The functions are called from up to `threads` threads.
+// hold): no copy of the input is made. The functions are called from the context's threads.
 Result<PlanePath> preparePlanePath(const std::function<Vec3(std::size_t)>& centreAt,
                                    const std::function<Vec3(std::size_t)>& axisAt,
-                                   std::size_t count, unsigned threads = 1);
+                                   std::size_t count);
 
 // The original angles of a path's distinct samples, from the input's axes (the ones the path
 // was made from). Separate from preparePlanePath because only the layer problems read them:
 // the scheduling makes them once the tangents and curvature are gone (8 bytes per sample fewer
 // where its memory peaked).
-void addOriginalAngles(PlanePath& path, std::span<const Vec3> axes, unsigned threads = 1);
-void addOriginalAngles(PlanePath& path, const std::function<Vec3(std::size_t)>& axisAt,
-                       unsigned threads = 1);
+void addOriginalAngles(PlanePath& path, std::span<const Vec3> axes);
+void addOriginalAngles(PlanePath& path, const std::function<Vec3(std::size_t)>& axisAt);
 
 // ang(P_perp v) of spec §1.3 for a traversal sign w . a: atan2(v . p, v . r), r = +z.
 double planeAngle(const Vec3& v, int traversalSign);

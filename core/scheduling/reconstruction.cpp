@@ -12,7 +12,7 @@
 namespace bladeaxis::scheduling {
 
 ReconstructedPath reconstructAxes(std::span<const double> thetaAbs, double tiltB0,
-                                  int traversalSign, unsigned threads) {
+                                  int traversalSign) {
     ReconstructedPath path;
     const std::size_t n = thetaAbs.size();
     path.axes.resize(n);
@@ -24,7 +24,7 @@ ReconstructedPath reconstructAxes(std::span<const double> thetaAbs, double tiltB
     // again from the caller's stack, and on two threads the loop took longer than on one
     // (14.6 ms against 11.2 at a million points; 5.5 ms with the copies).
     Vec3* const axes = path.axes.data();
-    forEachRange(n, threads, [=](std::size_t begin, std::size_t end) {
+    forEachRange(n, [=](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             const double angle = thetaAbs[i];
             const Vec3 axis(axial, -traversalSign * std::sin(angle) * inPlane,
@@ -99,8 +99,8 @@ ReconstructionCheck checkRange(CentreAt centreAt, const ReconstructedPath& path,
 
 } // namespace
 
-std::size_t countReversals(std::span<const double> angles, double step, unsigned threads) {
-    std::vector<ReversalRun> runs(rangeCount(angles.size(), threads));
+std::size_t countReversals(std::span<const double> angles, double step) {
+    std::vector<ReversalRun> runs(rangeCount(angles.size()));
     forEachRangeOf(angles.size(), runs.size(),
                    [&](std::size_t range, std::size_t begin, std::size_t end) {
                        runs[range] = reversalsIn(angles, step, begin, end);
@@ -120,11 +120,11 @@ namespace {
 template <class CentreAt>
 ReconstructionCheck checkWith(const CentreAt& centreAt, std::size_t count,
                               const ReconstructedPath& path, std::span<const double> thetaAbs,
-                              double tiltB0, double toolRadius, unsigned threads) {
+                              double tiltB0, double toolRadius) {
     const double axial = std::sin(tiltB0);
     const std::size_t n = std::min(path.axes.size(), count);
     // Maxima per range, then over the ranges: a maximum does not depend on the order.
-    std::vector<ReconstructionCheck> ranges(rangeCount(n, threads));
+    std::vector<ReconstructionCheck> ranges(rangeCount(n));
     forEachRangeOf(n, ranges.size(), [&](std::size_t range, std::size_t begin, std::size_t end) {
         ranges[range] = checkRange(centreAt, path, axial, toolRadius, begin, end);
     });
@@ -134,7 +134,7 @@ ReconstructionCheck checkWith(const CentreAt& centreAt, std::size_t count,
         check.maxUnitError = std::max(check.maxUnitError, range.maxUnitError);
         check.maxTiltError = std::max(check.maxTiltError, range.maxTiltError);
     }
-    check.reversals = countReversals(thetaAbs, tol::kReversalStepRad, threads);
+    check.reversals = countReversals(thetaAbs, tol::kReversalStepRad);
     return check;
 }
 
@@ -143,16 +143,16 @@ ReconstructionCheck checkWith(const CentreAt& centreAt, std::size_t count,
 ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                                         const ReconstructedPath& path,
                                         std::span<const double> thetaAbs, double tiltB0,
-                                        double toolRadius, unsigned threads) {
+                                        double toolRadius) {
     return checkWith([centres](std::size_t i) -> const Vec3& { return centres[i]; }, centres.size(),
-                     path, thetaAbs, tiltB0, toolRadius, threads);
+                     path, thetaAbs, tiltB0, toolRadius);
 }
 
 ReconstructionCheck checkReconstruction(const std::function<Vec3(std::size_t)>& centreAt,
                                         std::size_t count, const ReconstructedPath& path,
                                         std::span<const double> thetaAbs, double tiltB0,
-                                        double toolRadius, unsigned threads) {
-    return checkWith(centreAt, count, path, thetaAbs, tiltB0, toolRadius, threads);
+                                        double toolRadius) {
+    return checkWith(centreAt, count, path, thetaAbs, tiltB0, toolRadius);
 }
 
 std::string describeFailures(const ReconstructionCheck& check) {

@@ -17,7 +17,7 @@ struct ReconstructedPath {
 
 // One unit axis per absolute in-plane angle.
 ReconstructedPath reconstructAxes(std::span<const double> thetaAbs, double tiltB0,
-                                  int traversalSign, unsigned threads = 1);
+                                  int traversalSign);
 
 struct ReconstructionCheck {
     double maxCentreErrorMm = 0.0; // max |O + R V - Q|, O = tipOfBall(Q, V, R)
@@ -44,17 +44,17 @@ std::string describeFailures(const ReconstructionCheck& check);
 ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                                         const ReconstructedPath& path,
                                         std::span<const double> thetaAbs, double tiltB0,
-                                        double toolRadius, unsigned threads = 1);
+                                        double toolRadius);
 
 // The same with the first `count` centres read through `centreAt`, for a caller that no longer
 // holds them in an array.
 ReconstructionCheck checkReconstruction(const std::function<Vec3(std::size_t)>& centreAt,
                                         std::size_t count, const ReconstructedPath& path,
                                         std::span<const double> thetaAbs, double tiltB0,
-                                        double toolRadius, unsigned threads = 1);
+                                        double toolRadius);
 
 // Direction reversals of an angle sequence: sign changes among steps larger than `step`. Counted
-// on up to `threads` threads (0 = all), with the same count as on one.
-std::size_t countReversals(std::span<const double> angles, double step, unsigned threads = 1);
+// on the context's threads (core/base/execution.h), with the same count as on one.
+std::size_t countReversals(std::span<const double> angles, double step);
 
 } // namespace bladeaxis::scheduling

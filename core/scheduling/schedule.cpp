@@ -100,8 +100,8 @@ std::vector<LayerBounds> boundsOf(const LayerSplit& split, const PlanePath& path
 // The raw channel of the layers (§2), clipped as the parameters ask.
 RawChannel channelOf(const LayerPlan& plan, const ScheduleParameters& p,
                      std::vector<std::string>& warnings) {
-    RawChannel channel = buildRawChannel(plan.tangents, plan.curvature.runs,
-                                         p.taperHalfAngleRad + p.safetyAngleRad, p.threads);
+    RawChannel channel =
+        buildRawChannel(plan.tangents, plan.curvature.runs, p.taperHalfAngleRad + p.safetyAngleRad);
     if (p.visibility == Visibility::Global) {
         const double turns = std::max(
             1.0, std::abs(plan.tangents.forwardAngle.back() - plan.tangents.forwardAngle.front()) /
@@ -127,9 +127,9 @@ RawChannel channelOf(const LayerPlan& plan, const ScheduleParameters& p,
 std::vector<LayerOutcome> runLayers(std::vector<LayerProblem>& problems,
                                     std::span<const std::uint32_t> firstInput,
                                     std::span<const ScheduleParameters> layerParameters,
-                                    const ScheduleParameters& p, const CancelToken* cancel) {
+                                    const CancelToken* cancel) {
     std::vector<LayerOutcome> outcomes(problems.size());
-    forEachItem(problems.size(), firstInput.size(), p.threads, [&](std::size_t k) {
+    forEachItem(problems.size(), firstInput.size(), [&](std::size_t k) {
         if (isCancelled(cancel)) {
             return;
         }
@@ -218,7 +218,7 @@ std::vector<KeptAxis> axesOfKeptLayers(std::span<const LayerResult> layers,
 
 // result.tiltB0 and result.traversalSign are the plane path's.
 void assemble(ScheduleResult& result, const ScheduleSamples& input,
-              std::vector<LayerOutcome>& outcomes, unsigned threads) {
+              std::vector<LayerOutcome>& outcomes) {
     const std::size_t n = input.count;
     result.layers.reserve(outcomes.size());
     for (LayerOutcome& outcome : outcomes) {
@@ -229,18 +229,16 @@ void assemble(ScheduleResult& result, const ScheduleSamples& input,
     const std::vector<KeptAxis> kept = axesOfKeptLayers(result.layers, input);
     // The original angles are counted and dropped first: beside the new angles and axes they
     // would add 8 bytes per sample where read-schedule-write's memory peaks.
-    result.originalReversals =
-        countReversals(absoluteAngles(result.layers, n, Orientation::Original, threads),
-                       tol::kReversalStepRad, threads);
+    result.originalReversals = countReversals(
+        absoluteAngles(result.layers, n, Orientation::Original), tol::kReversalStepRad);
     const std::vector<double> thetaAbsolute =
-        absoluteAngles(result.layers, n, Orientation::Rescheduled, threads);
-    ReconstructedPath rebuilt =
-        reconstructAxes(thetaAbsolute, result.tiltB0, result.traversalSign, threads);
+        absoluteAngles(result.layers, n, Orientation::Rescheduled);
+    ReconstructedPath rebuilt = reconstructAxes(thetaAbsolute, result.tiltB0, result.traversalSign);
     for (const KeptAxis& original : kept) {
         rebuilt.axes[original.input] = original.axis;
     }
     result.check = checkReconstruction(input.centreAt, n, rebuilt, thetaAbsolute, result.tiltB0,
-                                       input.toolRadius, threads);
+                                       input.toolRadius);
     result.newAxes = std::move(rebuilt.axes);
 }
 
@@ -285,10 +283,10 @@ void addCheckWarnings(ScheduleResult& result) {
 } // namespace
 
 std::vector<double> absoluteAngles(std::span<const LayerResult> layers, std::size_t inputs,
-                                   Orientation which, unsigned threads) {
+                                   Orientation which) {
     std::vector<double> angles(inputs);
     // Each layer writes its own input range, so the layers run at once.
-    forEachItem(layers.size(), inputs, threads, [&](std::size_t k) {
+    forEachItem(layers.size(), inputs, [&](std::size_t k) {
         const LayerResult& layer = layers[k];
         if (layer.inputIndex.empty()) {
             return;
@@ -350,18 +348,13 @@ Result<LayerProblems> layerProblemsOf(LayerPlan plan, const ScheduleSamples& sam
     freeStorage(plan.tangents);
     freeStorage(plan.curvature);
     freeStorage(plan.path.points);
-    addOriginalAngles(plan.path, samples.axisAt, parameters.threads);
-    made.problems = buildLayerProblems(plan.path, channel, plan.split, margins, shortLengthMm,
-                                       parameters.threads);
+    addOriginalAngles(plan.path, samples.axisAt);
+    made.problems = buildLayerProblems(plan.path, channel, plan.split, margins, shortLengthMm);
     for (const LayerProblem& problem : made.problems) {
         warnings.insert(warnings.end(), problem.warnings.begin(), problem.warnings.end());
     }
     made.firstInput = std::move(plan.path.firstInput);
     return made;
-}
-
-std::unexpected<Error> cancelledError() {
-    return makeError(ErrorCode::Cancelled, "scheduling cancelled");
 }
 
 } // namespace
@@ -381,20 +374,20 @@ Result<PlanePath> makePlanePath(const ScheduleSamples& samples,
     if (auto status = validateSamples(samples); !status) {
         return std::unexpected(status.error());
     }
-    return preparePlanePath(samples.centreAt, samples.axisAt, samples.count, parameters.threads);
+    return preparePlanePath(samples.centreAt, samples.axisAt, samples.count);
 }
 
 // Looks at the token after the tangents and after the curvature: at five million points each
 // of this stage's steps takes 0.05-0.15 s.
 Result<LayerPlan> planLayers(PlanePath path, const ScheduleSamples& samples,
                              const ScheduleParameters& p, const CancelToken* cancel) {
-    auto tangents = computeWrappedTangents(path.points, p.tangentChordMinMm,
-                                           p.tangentChordMedianFactor, p.threads);
+    auto tangents =
+        computeWrappedTangents(path.points, p.tangentChordMinMm, p.tangentChordMedianFactor);
     if (!tangents) {
         return std::unexpected(tangents.error());
     }
     if (isCancelled(cancel)) {
-        return cancelledError();
+        return std::unexpected(cancelledError());
     }
     LayerPlan plan;
     plan.path = std::move(path);
@@ -403,8 +396,7 @@ Result<LayerPlan> planLayers(PlanePath path, const ScheduleSamples& samples,
     // order fixes their rounding, and neither reads the other: on two threads they run at once.
     CurvatureWeights weights;
     runBoth(
-        plan.path.points.size(), p.threads,
-        [&field = plan.tangents] { unwrapForwardAngles(field); },
+        plan.path.points.size(), [&field = plan.tangents] { unwrapForwardAngles(field); },
         [&weights, &plan] {
             weights = curvatureWeights(plan.path.arcLength, plan.tangents.curvature);
         });
@@ -412,11 +404,10 @@ Result<LayerPlan> planLayers(PlanePath path, const ScheduleSamples& samples,
         curvatureSettings(p, plan.path, plan.tangents, samples.toolRadius);
     // Each per-point array goes once read for the last time: the channel is built where the
     // scheduling's memory peaks (beside the plane path). The curvature becomes the smoothed one.
-    plan.curvature =
-        analyseCurvature(plan.path.arcLength, std::move(plan.tangents.curvature),
-                         std::move(weights), plan.tangents.turning, settings, p.threads);
+    plan.curvature = analyseCurvature(plan.path.arcLength, std::move(plan.tangents.curvature),
+                                      std::move(weights), plan.tangents.turning, settings);
     if (isCancelled(cancel)) {
-        return cancelledError();
+        return std::unexpected(cancelledError());
     }
     plan.split = splitLayers(plan.tangents.forwardAngle, plan.curvature.smoothedCurvature,
                              plan.curvature.runs, p.basePoint);
@@ -443,12 +434,12 @@ Result<ScheduleResult> scheduleLayers(LayerPlan plan, const ScheduleSamples& sam
         return std::unexpected(made.error());
     }
     if (isCancelled(cancel)) {
-        return cancelledError();
+        return std::unexpected(cancelledError());
     }
     std::vector<LayerOutcome> outcomes =
-        runLayers(made->problems, made->firstInput, made->perLayer, parameters, cancel);
+        runLayers(made->problems, made->firstInput, made->perLayer, cancel);
     if (isCancelled(cancel)) {
-        return cancelledError();
+        return std::unexpected(cancelledError());
     }
     if (auto applied = applyKeyPointEdits(outcomes, overrides, made->perLayer); !applied) {
         return std::unexpected(applied.error());
@@ -456,7 +447,7 @@ Result<ScheduleResult> scheduleLayers(LayerPlan plan, const ScheduleSamples& sam
     // The layers have what they need of the plane path: its input index per point (8 bytes) is
     // not held beside the new axes.
     freeStorage(made->firstInput);
-    assemble(result, samples, outcomes, parameters.threads);
+    assemble(result, samples, outcomes);
     checkJunctions(result);
     addCheckWarnings(result);
     return result;
@@ -470,7 +461,7 @@ Result<ScheduleResult> schedule(const ScheduleSamples& samples,
         return std::unexpected(path.error());
     }
     if (isCancelled(cancel)) {
-        return cancelledError();
+        return std::unexpected(cancelledError());
     }
     auto plan = planLayers(std::move(*path), samples, parameters, cancel);
     if (!plan) {

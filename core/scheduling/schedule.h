@@ -119,7 +119,7 @@ enum class Orientation { Rescheduled, Original };
 // sample it is merged into). The result does not keep them: 16 bytes per input sample that only
 // the reconstruction, the reversal count and the baselines read.
 std::vector<double> absoluteAngles(std::span<const LayerResult> layers, std::size_t inputs,
-                                   Orientation which, unsigned threads = 1);
+                                   Orientation which);
 
 inline std::vector<double> absoluteAngles(const ScheduleResult& result, Orientation which) {
     return absoluteAngles(result.layers, result.newAxes.size(), which);

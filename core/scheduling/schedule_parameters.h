@@ -78,7 +78,9 @@ struct ScheduleParameters {
     int epsilonBisectionSteps = 40;
     int curveChecksPerCubic = 64;
 
-    // Execution: worker threads over layers; 0 = std::thread::hardware_concurrency().
+    // The job's thread count (0 = every hardware thread): read only by the job pipeline, which
+    // sets it as the execution context of the job (core/base/execution.h). The scheduling
+    // itself runs on the context's threads and never reads it.
     unsigned threads = 0;
 };
 

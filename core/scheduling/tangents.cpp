@@ -18,9 +18,9 @@ constexpr double kDegenerateChordMm = 1e-9;
 
 // The square root is monotone, so the median of the squared chords gives the same element as
 // the median of the chords with one square root instead of one per chord.
-double medianChord(std::span<const Vec2> points, unsigned threads) {
+double medianChord(std::span<const Vec2> points) {
     const std::size_t chords = points.size() - 1;
-    return std::sqrt(nthSmallest(chords, chords / 2, threads, [points](std::size_t i) {
+    return std::sqrt(nthSmallest(chords, chords / 2, [points](std::size_t i) {
         return (points[i + 1] - points[i]).squaredNorm();
     }));
 }
@@ -107,14 +107,14 @@ struct PassArrays {
 } // namespace
 
 Result<TangentField> computeWrappedTangents(std::span<const Vec2> points, double minChordMm,
-                                            double medianFactor, unsigned threads) {
+                                            double medianFactor) {
     const std::size_t n = points.size();
     if (n < 2) {
         return makeError(ErrorCode::Geometry, "tangents need at least 2 points");
     }
     constexpr std::uint32_t kNoChord = std::numeric_limits<std::uint32_t>::max();
     TangentField field;
-    field.chordLengthMm = std::max(minChordMm, medianFactor * medianChord(points, threads));
+    field.chordLengthMm = std::max(minChordMm, medianFactor * medianChord(points));
     field.forwardAngle.resize(n); // wrapped here, unwrapped in place by unwrapForwardAngles
     field.turning.resize(n);
     field.curvature.resize(n); // holds |e+_i| between the two passes
@@ -124,7 +124,7 @@ Result<TangentField> computeWrappedTangents(std::span<const Vec2> points, double
     // frame, they were read again after each call the compiler cannot see into, from a cache
     // line the calling thread writes, which slowed two threads more than the work.
     const PassArrays arrays{points, field, forwardEnd};
-    forEachRange(n, threads, [arrays](std::size_t begin, std::size_t end) {
+    forEachRange(n, [arrays](std::size_t begin, std::size_t end) {
         const PassArrays own = arrays;
         for (std::size_t i = begin; i < end; ++i) {
             const Chord forward = chordFrom(own.points, i, +1, own.chordLength);
@@ -140,7 +140,7 @@ Result<TangentField> computeWrappedTangents(std::span<const Vec2> points, double
     // point and gives bit-identical values. Point i reads the angle of j only when j has a
     // forward chord, and writes its own angle only when it has none, so ranges of points can
     // run at once.
-    const std::size_t degenerate = forEachUntilFirstFailure(n, threads, [arrays](std::size_t i) {
+    const std::size_t degenerate = forEachUntilFirstFailure(n, [arrays](std::size_t i) {
         const Chord backward = chordFrom(arrays.points, i, -1, arrays.chordLength);
         const bool hasForward = arrays.forwardEnd[i] != kNoChord;
         if (!hasForward && !backward.found) {
@@ -192,8 +192,8 @@ void unwrapForwardAngles(TangentField& field) {
 }
 
 Result<TangentField> computeTangents(std::span<const Vec2> points, double minChordMm,
-                                     double medianFactor, unsigned threads) {
-    auto field = computeWrappedTangents(points, minChordMm, medianFactor, threads);
+                                     double medianFactor) {
+    auto field = computeWrappedTangents(points, minChordMm, medianFactor);
     if (field) {
         unwrapForwardAngles(*field);
     }

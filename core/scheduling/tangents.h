@@ -20,17 +20,17 @@ struct TangentField {
 
 // l_t = max(minChordMm, medianFactor * median chord). Where no chord of length l_t exists
 // (path ends), the farthest point is used, and at the very ends the other-side chord.
-// Fails (Geometry) when all points coincide in projection. The chords are found on up to
-// `threads` threads (0 = all), with the same result as on one.
+// Fails (Geometry) when all points coincide in projection. The chords are found on the
+// context's threads (core/base/execution.h), with the same result as on one.
 Result<TangentField> computeTangents(std::span<const Vec2> points, double minChordMm,
-                                     double medianFactor, unsigned threads = 1);
+                                     double medianFactor);
 
 // computeTangents in its two steps, so that other serial work can run beside the second: the
 // field with each forwardAngle wrapped to (-pi, pi], then those angles unwrapped along the
 // path. The unwrap is one chain through the path (each angle is taken near the previous one,
 // whose rounding it inherits), so it runs on one thread.
 Result<TangentField> computeWrappedTangents(std::span<const Vec2> points, double minChordMm,
-                                            double medianFactor, unsigned threads = 1);
+                                            double medianFactor);
 void unwrapForwardAngles(TangentField& field);
 
 } // namespace bladeaxis::scheduling

@@ -8,6 +8,7 @@
 // so the first figure is the parse-and-analyse peak.
 
 #include "app/memory/memory_policy.h"
+#include "core/base/execution.h"
 #include "core/base/file_io.h"
 #include "core/base/memory_policy.h"
 #include "core/blade/presets.h"
@@ -124,13 +125,14 @@ void BM_ReadScheduleWriteMillionBlocks(benchmark::State& state) {
                                       .startA = originalAxes.front().a,
                                       .toolRadius = kToolRadius};
         const scheduling::ScheduleParameters parameters = scheduling::bestPreset();
+        const ThreadCountScope threads(parameters.threads); // as a job runs its stages
         const CancelToken cancel;
         auto schedule = scheduling::schedule(job::scheduleSamplesOf(pass.records(), kToolRadius),
                                              parameters, &cancel);
         if (!schedule) {
             fail("schedule", schedule.error());
         }
-        auto axes = job::newMachineAxes(pass, *schedule, parameters.threads, cancel);
+        auto axes = job::newMachineAxes(pass, *schedule, cancel);
         if (!axes) {
             fail("inverse kinematics", axes.error());
         }
@@ -153,9 +155,11 @@ void BM_ReadScheduleWriteMillionBlocks(benchmark::State& state) {
 BENCHMARK(BM_ReadScheduleWriteMillionBlocks)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // The whole job as `--batch -o` runs it: also the analysis before and after and the re-read of
-// the written program; the per-stage wall times of the last run are reported.
+// the written program; the per-stage wall times of the last run are reported. The argument is
+// the job's thread count (`--threads`), so that one thread and two can be compared.
 void BM_FullJobMillionBlocks(benchmark::State& state) {
     job::JobSpec spec;
+    spec.parameters.threads = static_cast<unsigned>(state.range(0));
     spec.program = millionProgram();
     spec.toolRadius = kToolRadius;
     spec.outputProgram = fs::temp_directory_path() / "bladeaxis_bench_million_job.nc";
@@ -180,7 +184,7 @@ void BM_FullJobMillionBlocks(benchmark::State& state) {
     state.counters["analysis_wait_s"] = stages.analysis;
     state.counters["peak_rss_MB"] = peakResidentMegabytes();
 }
-BENCHMARK(BM_FullJobMillionBlocks)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_FullJobMillionBlocks)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // The default blade machine with an X travel of 5.4 m: the five-million-block program's tiles
 // advance 3.2 m along X, beyond the default machine's 2.8 m.

@@ -5,6 +5,7 @@
 // The forty-layer program (39 revolutions, about 33,000 points) times the whole baseline on a
 // program of the size the issue names ("40 layers, 34,000 points in < 10 s").
 
+#include "core/base/execution.h"
 #include "core/blade/presets.h"
 #include "core/optimal/layer_optimum.h"
 #include "core/scheduling/schedule.h"
@@ -82,6 +83,7 @@ void reportPerLayer(benchmark::State& state, std::size_t layers) {
 // The whole engine (channel, hull, linearisation, smoothing) on the whole demo path.
 void BM_EngineBestPerLayer(benchmark::State& state) {
     const Demo& d = demo();
+    const ThreadCountScope threads(scheduling::bestPreset().threads); // as a job with the preset
     for (auto _ : state) {
         auto result = scheduling::schedule(d.input, scheduling::bestPreset());
         benchmark::DoNotOptimize(result);

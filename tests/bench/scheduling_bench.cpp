@@ -8,6 +8,7 @@
 // GLIBC_TUNABLES=glibc.malloc.hugetlb=1 (transparent huge pages for malloc) shows the compute
 // bound: ~0.2 s instead of ~0.5 s for the million-point path.
 
+#include "core/base/execution.h"
 #include "core/blade/presets.h"
 #include "core/scheduling/schedule.h"
 #include "tests/bench/million_tile.h"
@@ -79,8 +80,8 @@ const scheduling::ScheduleInput& millionInput() {
 }
 
 void runSchedule(benchmark::State& state, const scheduling::ScheduleInput& input,
-                 scheduling::ScheduleParameters parameters, unsigned threads) {
-    parameters.threads = threads;
+                 const scheduling::ScheduleParameters& parameters, unsigned threads) {
+    const ThreadCountScope scope(threads);
     for (auto _ : state) {
         auto result = scheduling::schedule(input, parameters);
         if (!result) {

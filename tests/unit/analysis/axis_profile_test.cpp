@@ -1,4 +1,5 @@
 #include "core/analysis/axis_profile.h"
+#include "core/base/execution.h"
 #include "core/base/units.h"
 #include "tests/unit/analysis/test_paths.h"
 
@@ -405,7 +406,7 @@ TEST(AnalyseAxisMotion, EveryMethodGivesTheSameFiguresOnAnyNumberOfThreads) {
         const Result<AxisProfile> serial = analyseAxisMotion(line.axes, line.records, options);
         ASSERT_TRUE(serial.has_value()) << nameOf(method);
         for (unsigned threads : {0u, 2u, 3u}) {
-            options.threads = threads;
+            const ThreadCountScope scope(threads);
             const Result<AxisProfile> parallel =
                 analyseAxisMotion(line.axes, line.records, options);
             ASSERT_TRUE(parallel.has_value()) << nameOf(method);

@@ -1,4 +1,5 @@
 #include "core/analysis/derivatives.h"
+#include "core/base/execution.h"
 #include "core/geometry/cubic_spline.h"
 
 #include <gtest/gtest.h>
@@ -200,6 +201,7 @@ TEST(DifferentiateAxes, PositionsHandedOutPerAxisGiveWhatHeldPositionsGive) {
         for (DerivativeMethod method : {DerivativeMethod::Spline, DerivativeMethod::RawSpline,
                                         DerivativeMethod::FiniteDifference}) {
             for (unsigned threads : {1u, 2u}) {
+                const ThreadCountScope scope(threads);
                 std::vector<int> asked(axes.size(), 0);
                 std::mutex askedMutex;
                 const PositionsOf copied = [&](std::size_t k, std::vector<double>& scratch) {
@@ -209,7 +211,7 @@ TEST(DifferentiateAxes, PositionsHandedOutPerAxisGiveWhatHeldPositionsGive) {
                     return std::span<const double>(scratch);
                 };
                 const auto handedOut =
-                    differentiateAxes(s, axes.size(), copied, 2.0, method, 0.008, knots, threads);
+                    differentiateAxes(s, axes.size(), copied, 2.0, method, 0.008, knots);
                 const auto held = differentiateAxes(s, axes, 2.0, method, 0.008, knots);
                 ASSERT_EQ(handedOut.size(), held.size());
                 for (std::size_t k = 0; k < axes.size(); ++k) {
@@ -240,7 +242,7 @@ TEST(DifferentiateAxes, AnAxisCancelledWhileItsPositionsAreHandedOutIsNotDiffere
             return std::span<const double>(axes[k]);
         };
         const auto results =
-            differentiateAxes(s, axes.size(), cancelling, 2.0, method, 0.008, {}, 1, &cancel);
+            differentiateAxes(s, axes.size(), cancelling, 2.0, method, 0.008, {}, &cancel);
         ASSERT_EQ(results.size(), axes.size());
         EXPECT_EQ(asked[0], 1);
         for (std::size_t k = 0; k < axes.size(); ++k) {

@@ -24,8 +24,8 @@ void expectSameAsNthElement(const std::vector<double>& values) {
     for (std::size_t k : {std::size_t{0}, n / 4, n / 2, n - 1}) {
         const double expected = referenceNth(values, k);
         for (unsigned threads : {1u, 2u, 3u}) {
-            const double got =
-                nthSmallest(n, k, threads, [&values](std::size_t i) { return values[i]; });
+            const ThreadCountScope scope(threads);
+            const double got = nthSmallest(n, k, [&values](std::size_t i) { return values[i]; });
             EXPECT_EQ(got, expected) << "k " << k << ", threads " << threads;
         }
     }
@@ -75,7 +75,8 @@ TEST(OrderStatistic, SmallInputsGiveWhatNthElementGives) {
         values.push_back(std::cos(static_cast<double>(i)));
     }
     expectSameAsNthElement(values);
-    EXPECT_EQ(nthSmallest(1, 0, 2, [](std::size_t) { return 3.5; }), 3.5);
+    const ThreadCountScope two(2);
+    EXPECT_EQ(nthSmallest(1, 0, [](std::size_t) { return 3.5; }), 3.5);
 }
 
 // Values chosen against the sample: at every sampled position a value far beyond all the
@@ -102,7 +103,8 @@ TEST(OrderStatistic, AWellSpreadInputIsReadOncePastTheSample) {
         values[i] = 1.0 + 1e-3 * static_cast<double>(i % 977) + 1e-9 * static_cast<double>(i);
     }
     std::atomic<std::size_t> reads{0};
-    const double got = nthSmallest(values.size(), values.size() / 2, 2, [&](std::size_t i) {
+    const ThreadCountScope two(2);
+    const double got = nthSmallest(values.size(), values.size() / 2, [&](std::size_t i) {
         ++reads;
         return values[i];
     });

@@ -1,3 +1,4 @@
+#include "core/base/execution.h"
 #include "core/blade/closed_curve.h"
 #include "core/cad/cad_files.h"
 #include "core/cad/sections.h"
@@ -112,8 +113,9 @@ TEST(Sections, OfASolidBoxAreItsRectangle) {
 
 TEST(Sections, InParallelEqualTheSerialOnes) {
     const std::vector<double> xs{1.0, 3.5, 9.0, 14.25, 18.0};
-    const auto serial = sectionsAtX(demoSurface(), xs, {}, 1);
-    const auto parallel = sectionsAtX(demoSurface(), xs, {}, 2);
+    const auto serial = sectionsAtX(demoSurface(), xs);
+    const ThreadCountScope two(2);
+    const auto parallel = sectionsAtX(demoSurface(), xs);
     ASSERT_TRUE(serial.has_value() && parallel.has_value());
     ASSERT_EQ(serial->size(), xs.size());
     for (std::size_t i = 0; i < xs.size(); ++i) {
@@ -127,8 +129,9 @@ TEST(Sections, OfTrimmedFacesInParallelEqualTheSerialOnes) {
     const Result<CadShape> box = readCadFile(cadData("box_solid_inch.step"));
     ASSERT_TRUE(box.has_value()) << box.error().toString();
     const std::vector<double> xs{1.5, 3.0, 5.0, 7.0, 9.0, 10.5};
-    const auto serial = sectionsAtX(*box, xs, {}, 1);
-    const auto parallel = sectionsAtX(*box, xs, {}, 2);
+    const auto serial = sectionsAtX(*box, xs);
+    const ThreadCountScope two(2);
+    const auto parallel = sectionsAtX(*box, xs);
     ASSERT_TRUE(serial.has_value() && parallel.has_value());
     for (std::size_t i = 0; i < xs.size(); ++i) {
         ASSERT_EQ((*parallel)[i].size(), 1u);

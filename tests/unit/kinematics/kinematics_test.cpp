@@ -1,3 +1,4 @@
+#include "core/base/execution.h"
 #include "core/base/units.h"
 #include "core/kinematics/kinematics.h"
 #include "core/kinematics/machine_model.h"
@@ -155,8 +156,9 @@ std::vector<ToolPose> spiralPoses(std::size_t count) {
 TEST(InverseKinematicsAlong, SeveralThreadsGiveTheOneThreadResultBitForBit) {
     const TableAHeadB chain = spiralChain();
     const std::vector<ToolPose> poses = spiralPoses(100'000);
-    const IkAlongResult serial = inverseKinematicsAlong(chain, poses, 0.0, 1);
-    const IkAlongResult parallel = inverseKinematicsAlong(chain, poses, 0.0, 3);
+    const IkAlongResult serial = inverseKinematicsAlong(chain, poses, 0.0);
+    const ThreadCountScope three(3);
+    const IkAlongResult parallel = inverseKinematicsAlong(chain, poses, 0.0);
     ASSERT_FALSE(serial.failedIndex || parallel.failedIndex);
     ASSERT_EQ(serial.axes.size(), poses.size());
     for (std::size_t i = 0; i < poses.size(); ++i) {
@@ -178,7 +180,8 @@ TEST(InverseKinematicsAlong, ReportsTheFirstFailingPoseWhateverTheThreads) {
     std::vector<ToolPose> poses = spiralPoses(100'000);
     poses[90'000].axis = Vec3::Zero();
     poses[60'000].axis = Vec3::UnitX(); // parallel to A: the first failure
-    const IkAlongResult result = inverseKinematicsAlong({}, poses, 0.0, 4);
+    const ThreadCountScope four(4);
+    const IkAlongResult result = inverseKinematicsAlong({}, poses, 0.0);
     ASSERT_TRUE(result.failedIndex.has_value());
     EXPECT_EQ(*result.failedIndex, 60'000u);
     EXPECT_NE(result.failure.message.find("parallel to the A axis"), std::string::npos);
@@ -189,26 +192,29 @@ TEST(InverseKinematicsAlong, ReportsTheFirstFailingPoseWhateverTheThreads) {
 TEST(InverseKinematicsAlong, PosesMadeOnDemandGiveThePoseArraysResultBitForBit) {
     const TableAHeadB chain = spiralChain();
     const std::vector<ToolPose> poses = spiralPoses(50'000);
-    const IkAlongResult fromArray = inverseKinematicsAlong(chain, poses, 0.3, 1);
-    const IkAlongResult onDemand = inverseKinematicsAlong(
-        chain, poses.size(), [&poses](std::size_t i) { return poses[i]; }, 0.3, 2);
-    ASSERT_FALSE(fromArray.failedIndex || onDemand.failedIndex);
-    ASSERT_EQ(onDemand.axes.size(), poses.size());
+    const IkAlongResult fromArray = inverseKinematicsAlong(chain, poses, 0.3);
+    const ThreadCountScope two(2);
+    const Result<IkAlongResult> onDemand = inverseKinematicsAlong(
+        chain, poses.size(), [&poses](std::size_t i) { return poses[i]; }, 0.3);
+    ASSERT_TRUE(onDemand.has_value());
+    ASSERT_FALSE(fromArray.failedIndex || onDemand->failedIndex);
+    ASSERT_EQ(onDemand->axes.size(), poses.size());
     for (std::size_t i = 0; i < poses.size(); ++i) {
-        ASSERT_TRUE(fromArray.axes[i].a == onDemand.axes[i].a &&
-                    fromArray.axes[i].b == onDemand.axes[i].b &&
-                    fromArray.axes[i].x == onDemand.axes[i].x &&
-                    fromArray.axes[i].y == onDemand.axes[i].y &&
-                    fromArray.axes[i].z == onDemand.axes[i].z)
+        ASSERT_TRUE(fromArray.axes[i].a == onDemand->axes[i].a &&
+                    fromArray.axes[i].b == onDemand->axes[i].b &&
+                    fromArray.axes[i].x == onDemand->axes[i].x &&
+                    fromArray.axes[i].y == onDemand->axes[i].y &&
+                    fromArray.axes[i].z == onDemand->axes[i].z)
             << i;
     }
     std::vector<ToolPose> failing = poses;
     failing[20'000].axis = Vec3::UnitX();
-    const IkAlongResult failed = inverseKinematicsAlong(
-        chain, failing.size(), [&failing](std::size_t i) { return failing[i]; }, 0.0, 2);
-    ASSERT_TRUE(failed.failedIndex.has_value());
-    EXPECT_EQ(*failed.failedIndex, 20'000u);
-    EXPECT_TRUE(failed.axes.empty());
+    const Result<IkAlongResult> failed = inverseKinematicsAlong(
+        chain, failing.size(), [&failing](std::size_t i) { return failing[i]; }, 0.0);
+    ASSERT_TRUE(failed.has_value());
+    ASSERT_TRUE(failed->failedIndex.has_value());
+    EXPECT_EQ(*failed->failedIndex, 20'000u);
+    EXPECT_TRUE(failed->axes.empty());
 }
 
 // A job interrupted while the new axes are solved stops within 65,536 poses, in either pass,
@@ -216,14 +222,14 @@ TEST(InverseKinematicsAlong, PosesMadeOnDemandGiveThePoseArraysResultBitForBit) 
 TEST(InverseKinematicsAlong, StopsSoonAfterTheTokenIsSetInEitherPass) {
     const TableAHeadB chain = spiralChain();
     const std::vector<ToolPose> poses = spiralPoses(200'000);
-    const IkAlongResult whole = inverseKinematicsAlong(chain, poses, 0.0, 1);
+    const IkAlongResult whole = inverseKinematicsAlong(chain, poses, 0.0);
     ASSERT_FALSE(whole.failedIndex);
     // Each pose is asked for twice, once per pass: call 70,000 is in the first pass, call
     // 270,000 the second pass's pose 70,000.
     for (const std::size_t setAtCall : {std::size_t{70'000}, std::size_t{270'000}}) {
         CancelToken cancel;
         std::size_t calls = 0;
-        const IkAlongResult stopped = inverseKinematicsAlong(
+        const Result<IkAlongResult> stopped = inverseKinematicsAlong(
             chain, poses.size(),
             [&](std::size_t i) {
                 if (++calls == setAtCall) {
@@ -231,19 +237,20 @@ TEST(InverseKinematicsAlong, StopsSoonAfterTheTokenIsSetInEitherPass) {
                 }
                 return poses[i];
             },
-            0.0, 1, &cancel);
-        EXPECT_TRUE(stopped.cancelled) << setAtCall;
-        EXPECT_FALSE(stopped.failedIndex.has_value()) << setAtCall;
-        EXPECT_TRUE(stopped.axes.empty()) << setAtCall;
+            0.0, &cancel);
+        ASSERT_FALSE(stopped.has_value()) << setAtCall;
+        EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled) << setAtCall;
+        EXPECT_EQ(stopped.error().message, cancelledError().message) << setAtCall;
         EXPECT_LE(calls, setAtCall + 65'536) << setAtCall;
     }
     CancelToken never;
-    const IkAlongResult watched = inverseKinematicsAlong(
-        chain, poses.size(), [&poses](std::size_t i) { return poses[i]; }, 0.0, 2, &never);
-    EXPECT_FALSE(watched.cancelled);
-    ASSERT_EQ(watched.axes.size(), whole.axes.size());
+    const ThreadCountScope two(2);
+    const Result<IkAlongResult> watched = inverseKinematicsAlong(
+        chain, poses.size(), [&poses](std::size_t i) { return poses[i]; }, 0.0, &never);
+    ASSERT_TRUE(watched.has_value());
+    ASSERT_EQ(watched->axes.size(), whole.axes.size());
     for (std::size_t i = 0; i < poses.size(); ++i) {
-        ASSERT_TRUE(watched.axes[i].a == whole.axes[i].a && watched.axes[i].x == whole.axes[i].x)
+        ASSERT_TRUE(watched->axes[i].a == whole.axes[i].a && watched->axes[i].x == whole.axes[i].x)
             << i;
     }
 }

@@ -49,10 +49,11 @@ TEST(ParallelStages, ReversalCountDoesNotDependOnTheThreadCount) {
     for (std::size_t i = 2 * kMinParallelRange; i < 4 * kMinParallelRange; ++i) {
         angles[i] = angles[i - 1] + 1e-9;
     }
-    const std::size_t serial = countReversals(angles, 1e-6, 1);
+    const std::size_t serial = countReversals(angles, 1e-6);
     EXPECT_GT(serial, 0u);
     for (unsigned threads : kThreadCounts) {
-        EXPECT_EQ(countReversals(angles, 1e-6, threads), serial) << threads;
+        const ThreadCountScope scope(threads);
+        EXPECT_EQ(countReversals(angles, 1e-6), serial) << threads;
     }
     std::vector<double> oneTurn(count);
     const double top = static_cast<double>(count / 3);
@@ -61,7 +62,8 @@ TEST(ParallelStages, ReversalCountDoesNotDependOnTheThreadCount) {
         oneTurn[i] = x < top ? x : 2.0 * top - x; // up, then down
     }
     for (unsigned threads : {1u, 2u, 3u, 4u}) {
-        EXPECT_EQ(countReversals(oneTurn, 0.5, threads), 1u) << threads;
+        const ThreadCountScope scope(threads);
+        EXPECT_EQ(countReversals(oneTurn, 0.5), 1u) << threads;
     }
 }
 
@@ -93,13 +95,13 @@ TEST(ParallelStages, ReconstructionCheckGivesThePerSampleMaxima) {
     }
     ASSERT_GT(expected.maxCentreErrorMm, 0.0); // the rounding is there to be found
     for (unsigned threads : {1u, 2u, 3u, 4u}) {
-        const ReconstructionCheck check =
-            checkReconstruction(centres, path, theta, 0.1, 8.0, threads);
+        const ThreadCountScope scope(threads);
+        const ReconstructionCheck check = checkReconstruction(centres, path, theta, 0.1, 8.0);
         EXPECT_EQ(check.maxCentreErrorMm, expected.maxCentreErrorMm) << threads;
         EXPECT_EQ(check.maxUnitError, expected.maxUnitError) << threads;
     }
     path.axes.assign(2, Vec3(std::nan(""), 0.0, 0.0)); // no length at all: no unit error
-    EXPECT_EQ(checkReconstruction(centres, path, theta, 0.1, 8.0, 1).maxUnitError, 0.0);
+    EXPECT_EQ(checkReconstruction(centres, path, theta, 0.1, 8.0).maxUnitError, 0.0);
 }
 
 void expectSamePlanePath(const PlanePath& a, const PlanePath& b) {
@@ -135,15 +137,16 @@ TEST(ParallelStages, MergedDuplicatesAcrossRangeBoundariesGiveTheSerialPath) {
     for (std::size_t i = begin; i <= end; ++i) {
         duplicate(i, begin - 3);
     }
-    auto serial = preparePlanePath(input.centres, input.axes, 1);
+    auto serial = preparePlanePath(input.centres, input.axes);
     ASSERT_TRUE(serial.has_value()) << serial.error().toString();
     EXPECT_LT(serial->firstInput.size(), n - (end - begin));
-    addOriginalAngles(*serial, input.axes, 1);
+    addOriginalAngles(*serial, input.axes);
     EXPECT_EQ(serial->originalAngle.size(), serial->firstInput.size());
     for (unsigned threads : kThreadCounts) {
-        auto parallel = preparePlanePath(input.centres, input.axes, threads);
+        const ThreadCountScope scope(threads);
+        auto parallel = preparePlanePath(input.centres, input.axes);
         ASSERT_TRUE(parallel.has_value());
-        addOriginalAngles(*parallel, input.axes, threads);
+        addOriginalAngles(*parallel, input.axes);
         expectSamePlanePath(*serial, *parallel);
         // Read through functions, each centre and axis made when read: the same path.
         const std::function<Vec3(std::size_t)> centreAt = [&](std::size_t i) {
@@ -152,9 +155,9 @@ TEST(ParallelStages, MergedDuplicatesAcrossRangeBoundariesGiveTheSerialPath) {
         const std::function<Vec3(std::size_t)> axisAt = [&](std::size_t i) {
             return input.axes[i];
         };
-        auto read = preparePlanePath(centreAt, axisAt, n, threads);
+        auto read = preparePlanePath(centreAt, axisAt, n);
         ASSERT_TRUE(read.has_value());
-        addOriginalAngles(*read, axisAt, threads);
+        addOriginalAngles(*read, axisAt);
         expectSamePlanePath(*serial, *read);
     }
 }
@@ -173,14 +176,15 @@ TEST(ParallelStages, AVaryingTiltGivesTheSerialMedianOnAnyThreadCount) {
         axial[i] = std::clamp(axis.x() / axis.norm(), -1.0, 1.0);
     }
     std::nth_element(axial.begin(), axial.begin() + static_cast<long>(n / 2), axial.end());
-    auto serial = preparePlanePath(input.centres, input.axes, 1);
+    auto serial = preparePlanePath(input.centres, input.axes);
     ASSERT_TRUE(serial.has_value()) << serial.error().toString();
     ASSERT_EQ(serial->firstInput.size(), n); // no duplicates: every axis counts
     EXPECT_EQ(serial->tiltB0, std::asin(axial[n / 2]));
     ASSERT_FALSE(serial->warnings.empty());
     EXPECT_NE(serial->warnings.front().find("input tilt B is not constant"), std::string::npos);
     for (unsigned threads : kThreadCounts) {
-        auto parallel = preparePlanePath(input.centres, input.axes, threads);
+        const ThreadCountScope scope(threads);
+        auto parallel = preparePlanePath(input.centres, input.axes);
         ASSERT_TRUE(parallel.has_value());
         expectSamePlanePath(*serial, *parallel);
     }
@@ -188,24 +192,25 @@ TEST(ParallelStages, AVaryingTiltGivesTheSerialMedianOnAnyThreadCount) {
 
 TEST(ParallelStages, TangentsAndCurvatureDoNotDependOnTheThreadCount) {
     const ScheduleInput input = longHelix();
-    const auto path = preparePlanePath(input.centres, input.axes, 1);
+    const auto path = preparePlanePath(input.centres, input.axes);
     ASSERT_TRUE(path.has_value());
-    const auto serial = computeTangents(path->points, 0.5, 3.0, 1);
+    const auto serial = computeTangents(path->points, 0.5, 3.0);
     ASSERT_TRUE(serial.has_value());
     CurvatureSettings settings;
     settings.windowMm = 7.0;
     const CurvatureAnalysis serialStates =
-        analyseCurvature(path->arcLength, serial->curvature, serial->turning, settings, 1);
+        analyseCurvature(path->arcLength, serial->curvature, serial->turning, settings);
     EXPECT_FALSE(serialStates.runs.empty());
     for (unsigned threads : kThreadCounts) {
-        const auto parallel = computeTangents(path->points, 0.5, 3.0, threads);
+        const ThreadCountScope scope(threads);
+        const auto parallel = computeTangents(path->points, 0.5, 3.0);
         ASSERT_TRUE(parallel.has_value());
         EXPECT_EQ(parallel->chordLengthMm, serial->chordLengthMm);
         EXPECT_EQ(parallel->forwardAngle, serial->forwardAngle);
         EXPECT_EQ(parallel->turning, serial->turning);
         EXPECT_EQ(parallel->curvature, serial->curvature);
-        const CurvatureAnalysis states = analyseCurvature(path->arcLength, serial->curvature,
-                                                          serial->turning, settings, threads);
+        const CurvatureAnalysis states =
+            analyseCurvature(path->arcLength, serial->curvature, serial->turning, settings);
         EXPECT_EQ(states.smoothedCurvature, serialStates.smoothedCurvature);
         EXPECT_EQ(states.hysteresis, serialStates.hysteresis);
         EXPECT_EQ(states.state, serialStates.state);
@@ -229,9 +234,10 @@ TEST(ParallelStages, CurvatureWindowsWiderThanARangeGiveTheSerialResult) {
     }
     CurvatureSettings settings;
     settings.windowMm = 0.03 * double(kMinParallelRange);
-    const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings, 1);
+    const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings);
     for (unsigned threads : kThreadCounts) {
-        EXPECT_EQ(analyseCurvature(s, kappa, turning, settings, threads).smoothedCurvature,
+        const ThreadCountScope scope(threads);
+        EXPECT_EQ(analyseCurvature(s, kappa, turning, settings).smoothedCurvature,
                   serial.smoothedCurvature)
             << threads;
     }
@@ -293,14 +299,15 @@ TEST(ParallelStages, HysteresisAndRunsAreTheSerialOnesWhereverTheRangesFall) {
     settings.windowMm = 0.001; // each sample its own window
     settings.mergeGapMm = 0.0;
     settings.minRunMm = 0.0;
-    const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings, 1);
+    const CurvatureAnalysis serial = analyseCurvature(s, kappa, turning, settings);
     const std::vector<CurvatureState> expected =
         serialHysteresis(serial.smoothedCurvature, settings.hysteresisPerMm);
     const auto expectedRuns = serialRuns(expected);
     ASSERT_EQ(expectedRuns.size(), 3u);
     EXPECT_EQ(expectedRuns.back().second, n);
     for (unsigned threads : {1u, 2u, 3u, 4u}) {
-        const CurvatureAnalysis states = analyseCurvature(s, kappa, turning, settings, threads);
+        const ThreadCountScope scope(threads);
+        const CurvatureAnalysis states = analyseCurvature(s, kappa, turning, settings);
         EXPECT_TRUE(std::equal(states.hysteresis.begin(), states.hysteresis.end(), expected.begin(),
                                expected.end()))
             << threads;

@@ -80,12 +80,11 @@ TEST(Schedule, ReconstructionKeepsEveryBallCentre) {
 
 TEST(Schedule, ParallelRunEqualsSerialRun) {
     const ScheduleInput input = appendixBHelix(4.0);
-    ScheduleParameters serial = bestPreset();
-    serial.threads = 1;
-    ScheduleParameters parallel = bestPreset();
-    parallel.threads = 4;
-    auto a = schedule(input, serial);
-    auto b = schedule(input, parallel);
+    auto a = schedule(input, bestPreset());
+    auto b = [&] {
+        const ThreadCountScope four(4);
+        return schedule(input, bestPreset());
+    }();
     ASSERT_TRUE(a.has_value() && b.has_value());
     ASSERT_EQ(a->layers.size(), b->layers.size());
     EXPECT_EQ(absoluteAngles(*a, Orientation::Rescheduled),
@@ -101,16 +100,16 @@ TEST(Schedule, ParallelRunEqualsSerialRun) {
 TEST(Schedule, ParallelStagesGiveTheSerialResultOnALongPath) {
     const ScheduleInput input = appendixBHelix(140.0);
     ASSERT_GT(input.centres.size(), 3 * kMinParallelRange);
-    ScheduleParameters serial = bestPreset();
-    serial.threads = 1;
-    ScheduleParameters parallel = bestPreset();
-    parallel.threads = 3; // ranges that do not fall on layer boundaries
-    auto a = schedule(input, serial);
-    auto b = schedule(input, parallel);
+    auto a = schedule(input, bestPreset());
+    const ThreadCountScope three(3); // ranges that do not fall on layer boundaries
+    auto b = schedule(input, bestPreset());
     ASSERT_TRUE(a.has_value() && b.has_value());
     for (Orientation which : {Orientation::Rescheduled, Orientation::Original}) {
-        EXPECT_EQ(absoluteAngles(a->layers, input.centres.size(), which, 1),
-                  absoluteAngles(b->layers, input.centres.size(), which, 3));
+        const std::vector<double> one = [&] {
+            const ThreadCountScope serial(1);
+            return absoluteAngles(a->layers, input.centres.size(), which);
+        }();
+        EXPECT_EQ(one, absoluteAngles(b->layers, input.centres.size(), which));
     }
     EXPECT_EQ(a->newAxes, b->newAxes);
     EXPECT_EQ(a->basePoints, b->basePoints);
@@ -133,9 +132,8 @@ TEST(Schedule, ParallelRunReportsTheFirstFaultyPointOfTheInput) {
     const std::size_t early = input.centres.size() / 2 + 7; // in a later range than the start
     input.axes[late] = Vec3::Zero();
     input.centres[early].y() = std::numeric_limits<double>::quiet_NaN();
-    ScheduleParameters parameters = bestPreset();
-    parameters.threads = 4;
-    auto result = schedule(input, parameters);
+    const ThreadCountScope four(4);
+    auto result = schedule(input, bestPreset());
     ASSERT_FALSE(result.has_value());
     EXPECT_NE(result.error().message.find("point " + std::to_string(early)), std::string::npos)
         << result.error().message;

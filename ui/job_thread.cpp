@@ -62,7 +62,7 @@ job::DisplayScene JobThread::takeOriginalScene() {
 
 Result<job::JobResult> JobThread::takeResult() {
     if (!m_result) {
-        return makeError(ErrorCode::Cancelled, "the job did not finish");
+        return std::unexpected(cancelledError()); // the job ended before it had a result
     }
     Result<job::JobResult> result = std::move(*m_result);
     m_result.reset();

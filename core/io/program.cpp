@@ -375,7 +375,7 @@ Result<LoadedProgram> parseOwnedProgram(std::string text, std::string_view fileN
     if (format != ProgramFormat::Gcode) {
         auto program = parseTextFormat(text, fileName, format, machine, options);
         if (program && isCancelled(watch.cancel)) {
-            return makeError(ErrorCode::Cancelled, "the read was cancelled");
+            return std::unexpected(cancelledError());
         }
         return program;
     }

@@ -500,8 +500,8 @@ Status stageAndPublish(const JobSpec& spec, const JobResult& result, const Cance
             return status;
         }
     }
-    if (cancel != nullptr && cancel->isCancelled()) { // the last point where nothing is out
-        return makeError(ErrorCode::Cancelled, "interrupted: nothing was written");
+    if (auto status = checkCancelled(cancel); !status) { // the last point where nothing is out
+        return status;
     }
     if (auto status = outputs.publish(); !status) {
         return status;

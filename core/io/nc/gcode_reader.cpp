@@ -162,7 +162,7 @@ class RecordOutlet {
             m_watch->progress(static_cast<double>(read) / static_cast<double>(total));
         }
         if (isCancelled(m_watch->cancel) && !m_stop) {
-            m_stop = makeError(ErrorCode::Cancelled, "the read was cancelled").error();
+            m_stop = cancelledError();
         }
     }
 

@@ -155,29 +155,73 @@ Status checkFilterLength(std::span<const double> s, double feed) {
 // (smoothed in place). Peaks and 99.9th percentiles are taken over the whole millisecond
 // series, so that they weigh the pass by time and not by how densely the post placed its points;
 // the values at the samples are interpolated at their times (for T2, the layers, axes.csv).
+namespace {
+
+// Velocity, acceleration and jerk of a series stepped by `step` (central differences; an end
+// repeats its neighbour), each value computed once: the peaks' loop reads each velocity and
+// acceleration at up to three neighbouring steps, and recomputing them (seven velocities and
+// three accelerations per step) was most of the filter's time. A small cache by index gives the
+// same values, with the same bits, as computing them afresh.
+class CentralDifferences {
+  public:
+    CentralDifferences(std::span<const double> p, double step)
+        : m_p(p), m_last(static_cast<std::ptrdiff_t>(p.size()) - 2), m_twoSteps(2.0 * step) {}
+
+    double velocity(std::ptrdiff_t k) {
+        const std::ptrdiff_t i = inner(k);
+        return cached(m_velocity, i, [this, i] {
+            const auto u = static_cast<std::size_t>(i);
+            return (m_p[u + 1] - m_p[u - 1]) / m_twoSteps;
+        });
+    }
+    double acceleration(std::ptrdiff_t k) {
+        const std::ptrdiff_t i = inner(k);
+        return cached(m_acceleration, i,
+                      [this, i] { return (velocity(i + 1) - velocity(i - 1)) / m_twoSteps; });
+    }
+    double jerk(std::ptrdiff_t k) {
+        const std::ptrdiff_t i = inner(k);
+        return (acceleration(i + 1) - acceleration(i - 1)) / m_twoSteps;
+    }
+
+  private:
+    struct Entry {
+        std::ptrdiff_t index = -1;
+        double value = 0.0;
+    };
+    using Cache = std::array<Entry, 8>;
+
+    std::ptrdiff_t inner(std::ptrdiff_t k) const {
+        return std::clamp<std::ptrdiff_t>(k, 1, m_last);
+    }
+
+    template <class Compute>
+    static double cached(Cache& cache, std::ptrdiff_t i, Compute&& compute) {
+        Entry& entry = cache[static_cast<std::size_t>(i) % cache.size()];
+        if (entry.index != i) {
+            entry = {i, compute()};
+        }
+        return entry.value;
+    }
+
+    std::span<const double> m_p;
+    std::ptrdiff_t m_last; // the last index with two neighbours
+    double m_twoSteps;
+    Cache m_velocity, m_acceleration;
+};
+
+} // namespace
+
 void filteredDerivatives(std::span<const double> s, std::span<const double> position, double feed,
                          double filterSeconds, AxisSeries& series) {
     constexpr double kStep = 1e-3;
     std::vector<double> p;
     smoothedPositions(s, position, feed, filterSeconds, kStep, p);
     const std::size_t m = p.size();
-    const auto inner = [m](std::ptrdiff_t k) {
-        return static_cast<std::size_t>(
-            std::clamp<std::ptrdiff_t>(k, 1, static_cast<std::ptrdiff_t>(m) - 2));
-    };
-    const double twoSteps = 2.0 * kStep;
-    const auto velocity = [&](std::ptrdiff_t k) {
-        const std::size_t i = inner(k);
-        return (p[i + 1] - p[i - 1]) / twoSteps;
-    };
-    const auto acceleration = [&](std::ptrdiff_t k) {
-        const auto i = static_cast<std::ptrdiff_t>(inner(k));
-        return (velocity(i + 1) - velocity(i - 1)) / twoSteps;
-    };
-    const auto jerk = [&](std::ptrdiff_t k) {
-        const auto i = static_cast<std::ptrdiff_t>(inner(k));
-        return (acceleration(i + 1) - acceleration(i - 1)) / twoSteps;
-    };
+    CentralDifferences differences(p, kStep);
+    const auto velocity = [&](std::ptrdiff_t k) { return differences.velocity(k); };
+    const auto acceleration = [&](std::ptrdiff_t k) { return differences.acceleration(k); };
+    const auto jerk = [&](std::ptrdiff_t k) { return differences.jerk(k); };
     const std::size_t n = s.size();
     series.velocity.assign(n, 0.0);
     series.acceleration.assign(n, 0.0);

@@ -183,7 +183,28 @@ Status rescheduleInto(JobResult& result, const JobSpec& spec, ProgressSink& prog
     }
     outcome->stageSeconds.schedule = scheduleSeconds;
     result.rescheduled = std::move(*outcome);
-    return orientationInChannel;
+    if (!orientationInChannel) {
+        return orientationInChannel;
+    }
+    for (const std::string& warning : result.rescheduled->schedule.warnings) {
+        progress.warning(warning);
+        result.warnings.push_back(warning);
+    }
+    return {};
+}
+
+// The input once analysed: reduced to the A of each record unless its samples are kept, and its
+// T2 started beside the rest of the job (it reads only the input's profile, which nothing
+// changes from here on).
+InputAtScheduling handOverInput(JobResult& result, const JobSpec& spec, const CancelToken& cancel) {
+    InputAtScheduling input;
+    if (!result.kept.inputSamples) {
+        input.passA = releaseInputSamples(result, spec.reschedule);
+    }
+    input.timeOptimal = runAsync([&result, &cancel] {
+        return analysis::convergedTimeOptimalOrNone(result.original, result.machine, &cancel);
+    });
+    return input;
 }
 
 // The stages up to the input's analysis; `generatedRadius` is the demo program's.
@@ -319,16 +340,8 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     if (auto status = analyseStage(result, spec, progress, cancel); !status) {
         return std::unexpected(status.error());
     }
-    InputAtScheduling input;
-    if (!result.kept.inputSamples) {
-        input.passA = releaseInputSamples(result, spec.reschedule);
-    }
-    // T2 needs only the input's profile, which nothing changes from here on: it runs beside the
-    // tilt check and the re-scheduling. `input` is declared after the result, so an early return
-    // waits for it before the result goes.
-    input.timeOptimal = runAsync([&result, &cancel] {
-        return analysis::convergedTimeOptimalOrNone(result.original, result.machine, &cancel);
-    });
+    // Declared after the result, whose input it reads: an early return waits for its T2 first.
+    InputAtScheduling input = handOverInput(result, spec, cancel);
     if (originalReady) {
         originalReady(result);
     }
@@ -341,10 +354,6 @@ Result<JobResult> runJob(const JobSpec& spec, ProgressSink& progress, const Canc
     if (spec.reschedule) {
         if (auto status = rescheduleInto(result, spec, progress, input, cancel); !status) {
             return std::unexpected(status.error());
-        }
-        for (const std::string& warning : result.rescheduled->schedule.warnings) {
-            progress.warning(warning);
-            result.warnings.push_back(warning);
         }
     }
     waitForInputT2(result, input.timeOptimal);

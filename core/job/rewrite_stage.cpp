@@ -143,11 +143,12 @@ std::span<const ClRecord> PassToRewrite::records() const {
 }
 
 scheduling::ScheduleSamples scheduleSamplesOf(std::span<const ClRecord> pass, double toolRadius) {
-    return {.count = pass.size(),
-            .centreAt = [pass, toolRadius](
-                            std::size_t i) { return toolpath::ballCentre(pass[i], toolRadius); },
-            .axisAt = [pass](std::size_t i) { return pass[i].axis; },
-            .toolRadius = toolRadius};
+    // The records' tips and axes, read where they are: the scheduling makes each ball centre
+    // as toolpath::ballCentre does.
+    return {.points = scheduling::Vec3Run(pass, &ClRecord::tip),
+            .axes = scheduling::Vec3Run(pass, &ClRecord::axis),
+            .toolRadius = toolRadius,
+            .pointsAreTips = true};
 }
 
 Result<std::vector<kinematics::MachineAxes>>

@@ -39,23 +39,11 @@ PointFault faultOf(const Vec3& centre, const Vec3& axis) {
     return PointFault::None;
 }
 
-// The input's centres or axes where they are kept: an array (std::span), or a function that
-// makes each one again (PointsReadAgain). The functions below read either through operator[],
-// and each parallel range through a copy of its own: a function shared by two threads, on the
+// The input's centres or axes are read through operator[]: an array (std::span), a run of
+// values in the caller's records (Vec3Run) or the centres a sample reader makes (SampleCentres).
+// Each parallel range reads through a copy of its own: an accessor shared by two threads, on the
 // caller's stack beside values the caller's thread writes, made reads through it three times
 // slower on two threads than on one.
-class PointsReadAgain {
-  public:
-    PointsReadAgain(std::function<Vec3(std::size_t)> read, std::size_t count)
-        : m_read(std::move(read)), m_count(count) {}
-    Vec3 operator[](std::size_t i) const { return m_read(i); }
-    std::size_t size() const { return m_count; }
-    bool empty() const { return m_count == 0; }
-
-  private:
-    std::function<Vec3(std::size_t)> m_read;
-    std::size_t m_count;
-};
 
 template <class Centres, class Axes>
 Status checkSizes(const Centres& centres, const Axes& axes) {
@@ -331,14 +319,12 @@ void addOriginalAngles(PlanePath& path, std::span<const Vec3> axes) {
     addOriginalAnglesOf(path, axes);
 }
 
-void addOriginalAngles(PlanePath& path, const std::function<Vec3(std::size_t)>& axisAt) {
-    addOriginalAnglesOf(path, PointsReadAgain(axisAt, std::numeric_limits<std::size_t>::max()));
+void addOriginalAngles(PlanePath& path, const Vec3Run& axes) {
+    addOriginalAnglesOf(path, axes);
 }
 
-Result<PlanePath> preparePlanePath(const std::function<Vec3(std::size_t)>& centreAt,
-                                   const std::function<Vec3(std::size_t)>& axisAt,
-                                   std::size_t count) {
-    return preparePlanePathOf(PointsReadAgain(centreAt, count), PointsReadAgain(axisAt, count));
+Result<PlanePath> preparePlanePath(const ScheduleSamples& samples) {
+    return preparePlanePathOf(SampleCentres(samples), samples.axes);
 }
 
 } // namespace bladeaxis::scheduling

@@ -6,9 +6,9 @@
 #include "core/base/default_init.h"
 #include "core/base/error.h"
 #include "core/geometry/vec.h"
+#include "core/scheduling/schedule_samples.h"
 
 #include <cstdint>
-#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -32,18 +32,15 @@ struct PlanePath {
 // axes, axes along the rotary axis, or fewer than 3 distinct centres. The per-point work runs
 // on the context's threads (core/base/execution.h), with the same result as on one.
 Result<PlanePath> preparePlanePath(std::span<const Vec3> centres, std::span<const Vec3> axes);
-// The same with each centre and axis read through a function (bit for bit what the arrays would
-// hold): no copy of the input is made. The functions are called from the context's threads.
-Result<PlanePath> preparePlanePath(const std::function<Vec3(std::size_t)>& centreAt,
-                                   const std::function<Vec3(std::size_t)>& axisAt,
-                                   std::size_t count);
+// The same for samples read where the caller keeps them (bit for bit what arrays would give).
+Result<PlanePath> preparePlanePath(const ScheduleSamples& samples);
 
 // The original angles of a path's distinct samples, from the input's axes (the ones the path
 // was made from). Separate from preparePlanePath because only the layer problems read them:
 // the scheduling makes them once the tangents and curvature are gone (8 bytes per sample fewer
 // where its memory peaked).
 void addOriginalAngles(PlanePath& path, std::span<const Vec3> axes);
-void addOriginalAngles(PlanePath& path, const std::function<Vec3(std::size_t)>& axisAt);
+void addOriginalAngles(PlanePath& path, const Vec3Run& axes);
 
 // ang(P_perp v) of spec §1.3 for a traversal sign w . a: atan2(v . p, v . r), r = +z.
 double planeAngle(const Vec3& v, int traversalSign);

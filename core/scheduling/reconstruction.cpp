@@ -148,11 +148,12 @@ ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                      path, thetaAbs, tiltB0, toolRadius);
 }
 
-ReconstructionCheck checkReconstruction(const std::function<Vec3(std::size_t)>& centreAt,
-                                        std::size_t count, const ReconstructedPath& path,
-                                        std::span<const double> thetaAbs, double tiltB0,
-                                        double toolRadius) {
-    return checkWith(centreAt, count, path, thetaAbs, tiltB0, toolRadius);
+ReconstructionCheck checkReconstruction(const ScheduleSamples& samples,
+                                        const ReconstructedPath& path,
+                                        std::span<const double> thetaAbs, double tiltB0) {
+    const SampleCentres centres(samples);
+    return checkWith([centres](std::size_t i) { return centres[i]; }, centres.size(), path,
+                     thetaAbs, tiltB0, samples.toolRadius);
 }
 
 std::string describeFailures(const ReconstructionCheck& check) {

@@ -3,8 +3,8 @@
 // reconstruction checks. The new tips O = Q - R V are not kept (tipOfBall makes them).
 
 #include "core/geometry/vec.h"
+#include "core/scheduling/schedule_samples.h"
 
-#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -46,12 +46,10 @@ ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
                                         std::span<const double> thetaAbs, double tiltB0,
                                         double toolRadius);
 
-// The same with the first `count` centres read through `centreAt`, for a caller that no longer
-// holds them in an array.
-ReconstructionCheck checkReconstruction(const std::function<Vec3(std::size_t)>& centreAt,
-                                        std::size_t count, const ReconstructedPath& path,
-                                        std::span<const double> thetaAbs, double tiltB0,
-                                        double toolRadius);
+// The same with the centres a sample reader makes where the caller keeps its input.
+ReconstructionCheck checkReconstruction(const ScheduleSamples& samples,
+                                        const ReconstructedPath& path,
+                                        std::span<const double> thetaAbs, double tiltB0);
 
 // Direction reversals of an angle sequence: sign changes among steps larger than `step`. Counted
 // on the context's threads (core/base/execution.h), with the same count as on one.

@@ -208,9 +208,9 @@ std::vector<KeptAxis> axesOfKeptLayers(std::span<const LayerResult> layers,
         if (!keepsOriginal(layers[k])) {
             continue;
         }
-        const InputRange inputs = inputsOfLayer(layers, k, input.count);
+        const InputRange inputs = inputsOfLayer(layers, k, input.count());
         for (std::size_t i = inputs.begin; i < inputs.end; ++i) {
-            kept.push_back({i, input.axisAt(i).normalized()});
+            kept.push_back({i, input.axes[i].normalized()});
         }
     }
     return kept;
@@ -219,7 +219,7 @@ std::vector<KeptAxis> axesOfKeptLayers(std::span<const LayerResult> layers,
 // result.tiltB0 and result.traversalSign are the plane path's.
 void assemble(ScheduleResult& result, const ScheduleSamples& input,
               std::vector<LayerOutcome>& outcomes) {
-    const std::size_t n = input.count;
+    const std::size_t n = input.count();
     result.layers.reserve(outcomes.size());
     for (LayerOutcome& outcome : outcomes) {
         result.warnings.insert(result.warnings.end(), outcome.warnings.begin(),
@@ -237,8 +237,7 @@ void assemble(ScheduleResult& result, const ScheduleSamples& input,
     for (const KeptAxis& original : kept) {
         rebuilt.axes[original.input] = original.axis;
     }
-    result.check = checkReconstruction(input.centreAt, n, rebuilt, thetaAbsolute, result.tiltB0,
-                                       input.toolRadius);
+    result.check = checkReconstruction(input, rebuilt, thetaAbsolute, result.tiltB0);
     result.newAxes = std::move(rebuilt.axes);
 }
 
@@ -312,8 +311,11 @@ Status validateSamples(const ScheduleSamples& samples) {
         return makeError(ErrorCode::InvalidArgument,
                          "tool radius " + std::to_string(samples.toolRadius) + " mm is not > 0");
     }
-    if (samples.count > 0 && (!samples.centreAt || !samples.axisAt)) {
-        return makeError(ErrorCode::InvalidArgument, "the samples give no centres or axes");
+    if (samples.points.size() != samples.axes.size()) {
+        return makeError(ErrorCode::InvalidArgument, "centres and axes differ in length (" +
+                                                         std::to_string(samples.points.size()) +
+                                                         " vs " +
+                                                         std::to_string(samples.axes.size()) + ")");
     }
     return {};
 }
@@ -348,7 +350,7 @@ Result<LayerProblems> layerProblemsOf(LayerPlan plan, const ScheduleSamples& sam
     freeStorage(plan.tangents);
     freeStorage(plan.curvature);
     freeStorage(plan.path.points);
-    addOriginalAngles(plan.path, samples.axisAt);
+    addOriginalAngles(plan.path, samples.axes);
     made.problems = buildLayerProblems(plan.path, channel, plan.split, margins, shortLengthMm);
     for (const LayerProblem& problem : made.problems) {
         warnings.insert(warnings.end(), problem.warnings.begin(), problem.warnings.end());
@@ -359,13 +361,6 @@ Result<LayerProblems> layerProblemsOf(LayerPlan plan, const ScheduleSamples& sam
 
 } // namespace
 
-ScheduleSamples samplesOf(const ScheduleInput& input) {
-    return {.count = input.centres.size(),
-            .centreAt = [&centres = input.centres](std::size_t i) { return centres[i]; },
-            .axisAt = [&axes = input.axes](std::size_t i) { return axes[i]; },
-            .toolRadius = input.toolRadius};
-}
-
 Result<PlanePath> makePlanePath(const ScheduleSamples& samples,
                                 const ScheduleParameters& parameters) {
     if (auto status = validateParameters(parameters); !status) {
@@ -374,7 +369,7 @@ Result<PlanePath> makePlanePath(const ScheduleSamples& samples,
     if (auto status = validateSamples(samples); !status) {
         return std::unexpected(status.error());
     }
-    return preparePlanePath(samples.centreAt, samples.axisAt, samples.count);
+    return preparePlanePath(samples);
 }
 
 // Looks at the token after the tangents and after the curvature: at five million points each

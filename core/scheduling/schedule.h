@@ -16,6 +16,7 @@
 #include "core/scheduling/plane_path.h"
 #include "core/scheduling/reconstruction.h"
 #include "core/scheduling/schedule_parameters.h"
+#include "core/scheduling/schedule_samples.h"
 #include "core/scheduling/tangents.h"
 
 #include <functional>
@@ -38,19 +39,10 @@ struct ScheduleInput {
     double toolRadius = 0.0;   // R, mm
 };
 
-// What the scheduling reads of its input: `count` samples, each one's ball centre and tool axis
-// read through a function whenever needed (the same bits on every call, from any thread), so
-// that no copy of the input stands beside the scheduling's own arrays. A job reads them from its
-// program's records (48 bytes per record it does not copy); samplesOf reads arrays.
-struct ScheduleSamples {
-    std::size_t count = 0;
-    std::function<Vec3(std::size_t)> centreAt; // Q_i in W, mm
-    std::function<Vec3(std::size_t)> axisAt;   // V_i in W (normalised on input)
-    double toolRadius = 0.0;                   // R, mm
-};
-
 // The samples of arrays the caller keeps while the scheduling runs.
-ScheduleSamples samplesOf(const ScheduleInput& input);
+inline ScheduleSamples samplesOf(const ScheduleInput& input) {
+    return ScheduleSamples::ofCentres(input.centres, input.axes, input.toolRadius);
+}
 
 enum class LayerStatus {
     Ok,

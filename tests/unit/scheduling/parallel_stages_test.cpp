@@ -148,16 +148,24 @@ TEST(ParallelStages, MergedDuplicatesAcrossRangeBoundariesGiveTheSerialPath) {
         ASSERT_TRUE(parallel.has_value());
         addOriginalAngles(*parallel, input.axes);
         expectSamePlanePath(*serial, *parallel);
-        // Read through functions, each centre and axis made when read: the same path.
-        const std::function<Vec3(std::size_t)> centreAt = [&](std::size_t i) {
-            return input.centres[i];
+        // Read in place from records that hold them among other members: the same path.
+        struct Record {
+            Vec3 centre;
+            int line = 0;
+            Vec3 axis;
         };
-        const std::function<Vec3(std::size_t)> axisAt = [&](std::size_t i) {
-            return input.axes[i];
-        };
-        auto read = preparePlanePath(centreAt, axisAt, n);
+        std::vector<Record> records(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            records[i] = {input.centres[i], static_cast<int>(i), input.axes[i]};
+        }
+        const std::span<const Record> view(records);
+        const ScheduleSamples samples{.points = Vec3Run(view, &Record::centre),
+                                      .axes = Vec3Run(view, &Record::axis),
+                                      .toolRadius = input.toolRadius,
+                                      .pointsAreTips = false};
+        auto read = preparePlanePath(samples);
         ASSERT_TRUE(read.has_value());
-        addOriginalAngles(*read, axisAt);
+        addOriginalAngles(*read, samples.axes);
         expectSamePlanePath(*serial, *read);
     }
 }

@@ -320,10 +320,19 @@ void addOriginalAngles(PlanePath& path, std::span<const Vec3> axes) {
 }
 
 void addOriginalAngles(PlanePath& path, const Vec3Run& axes) {
-    addOriginalAnglesOf(path, axes);
+    if (const auto array = axes.contiguous()) {
+        addOriginalAnglesOf(path, *array);
+    } else {
+        addOriginalAnglesOf(path, axes);
+    }
 }
 
 Result<PlanePath> preparePlanePath(const ScheduleSamples& samples) {
+    const auto centres = samples.contiguousCentres();
+    const auto axes = samples.axes.contiguous();
+    if (centres && axes) {
+        return preparePlanePathOf(*centres, *axes);
+    }
     return preparePlanePathOf(SampleCentres(samples), samples.axes);
 }
 

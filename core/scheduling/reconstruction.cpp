@@ -151,6 +151,9 @@ ReconstructionCheck checkReconstruction(std::span<const Vec3> centres,
 ReconstructionCheck checkReconstruction(const ScheduleSamples& samples,
                                         const ReconstructedPath& path,
                                         std::span<const double> thetaAbs, double tiltB0) {
+    if (const auto array = samples.contiguousCentres()) {
+        return checkReconstruction(*array, path, thetaAbs, tiltB0, samples.toolRadius);
+    }
     const SampleCentres centres(samples);
     return checkWith([centres](std::size_t i) { return centres[i]; }, centres.size(), path,
                      thetaAbs, tiltB0, samples.toolRadius);

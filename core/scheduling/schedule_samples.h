@@ -5,6 +5,7 @@
 #include "core/geometry/vec.h"
 
 #include <cstddef>
+#include <optional>
 #include <span>
 
 namespace bladeaxis::scheduling {
@@ -28,6 +29,15 @@ class Vec3Run {
     }
     std::size_t size() const { return m_count; }
     bool empty() const { return m_count == 0; }
+    // The values as an array when they are one: the stages then read them through a span,
+    // which the compiler vectorises (a strided read in the traversal sign's sum took three
+    // times as long).
+    std::optional<std::span<const Vec3>> contiguous() const {
+        if (m_stride != sizeof(Vec3)) {
+            return std::nullopt;
+        }
+        return std::span<const Vec3>(reinterpret_cast<const Vec3*>(m_first), m_count);
+    }
 
   private:
     const std::byte* m_first = nullptr;
@@ -51,6 +61,10 @@ struct ScheduleSamples {
     }
 
     std::size_t count() const { return axes.size(); }
+    // The centres as an array, when they are given as one.
+    std::optional<std::span<const Vec3>> contiguousCentres() const {
+        return pointsAreTips ? std::nullopt : points.contiguous();
+    }
     Vec3 centre(std::size_t i) const {
         return pointsAreTips ? Vec3(points[i] + toolRadius * axes[i].normalized()) : points[i];
     }

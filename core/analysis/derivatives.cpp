@@ -212,11 +212,17 @@ class CentralDifferences {
 
 } // namespace
 
-void filteredDerivatives(std::span<const double> s, std::span<const double> position, double feed,
-                         double filterSeconds, AxisSeries& series) {
+// False, with `series` unfinished, when `cancel` was set on the way: it is looked at between the
+// smoothing passes and every kIterationsPerCancelPoll milliseconds of the loops (tens of
+// millions of them on a large program, about a second per axis).
+bool filteredDerivatives(std::span<const double> s, std::span<const double> position, double feed,
+                         double filterSeconds, AxisSeries& series, const CancelToken* cancel) {
     constexpr double kStep = 1e-3;
     std::vector<double> p;
     smoothedPositions(s, position, feed, filterSeconds, kStep, p);
+    if (isCancelled(cancel)) {
+        return false;
+    }
     const std::size_t m = p.size();
     CentralDifferences differences(p, kStep);
     const auto velocity = [&](std::ptrdiff_t k) { return differences.velocity(k); };
@@ -226,12 +232,15 @@ void filteredDerivatives(std::span<const double> s, std::span<const double> posi
     series.velocity.assign(n, 0.0);
     series.acceleration.assign(n, 0.0);
     if (m < 3) {
-        return; // no differences on fewer than three steps (filterAxis's zeros)
+        return true; // no differences on fewer than three steps (filterAxis's zeros)
     }
     AbsPercentile velocityQuantile(m, kReportedQuantile);
     AbsPercentile accelerationQuantile(m, kReportedQuantile);
     double peakVelocity = 0.0, peakAcceleration = 0.0, peakJerk = 0.0;
     for (std::size_t k = 0; k < m; ++k) {
+        if (isCancelledAt(cancel, k)) {
+            return false;
+        }
         const auto i = static_cast<std::ptrdiff_t>(k);
         const double v = velocity(i), a = acceleration(i), j = jerk(i);
         peakVelocity = std::max(peakVelocity, std::abs(v));
@@ -241,6 +250,9 @@ void filteredDerivatives(std::span<const double> s, std::span<const double> posi
         accelerationQuantile.add(a);
     }
     for (std::size_t i = 0; i < n; ++i) {
+        if (isCancelledAt(cancel, i)) {
+            return false;
+        }
         const double at =
             std::clamp((s[i] - s.front()) / feed / kStep, 0.0, static_cast<double>(m - 1));
         const auto k = std::min(static_cast<std::size_t>(at), m - 1);
@@ -258,6 +270,7 @@ void filteredDerivatives(std::span<const double> s, std::span<const double> posi
     series.peakJerk = peakJerk;
     series.p999Velocity = velocityQuantile.value();
     series.p999Acceleration = accelerationQuantile.value();
+    return true;
 }
 
 // The knots of the derivative spline: ascending sample indices, or every sample (`indices`
@@ -524,7 +537,10 @@ Result<AxisSeries> differentiateOne(const SharedFit& fit, std::span<const double
         if (Status bounded = checkFilterLength(fit.s, fit.feed); !bounded) {
             return std::unexpected(std::move(bounded.error()));
         }
-        filteredDerivatives(fit.s, position, fit.feed, fit.filterSeconds, series);
+        if (!filteredDerivatives(fit.s, position, fit.feed, fit.filterSeconds, series,
+                                 fit.cancel)) {
+            return std::unexpected(cancelledError());
+        }
         break;
     case DerivativeMethod::FiniteDifference:
         finiteDifferences(fit.s, position, fit.feed, series);

@@ -187,8 +187,16 @@ Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel
     }
     result.original = std::move(*profile);
     result.constantFeed = analysis::constantFeedTime(result.original, result.machine, false);
+    // The models after the profile each take a few tenths of a second on millions of blocks:
+    // a cancelled job stops between them.
+    if (auto status = checkCancelled(cancel); !status) {
+        return status;
+    }
     result.blockByBlock =
         analysis::blockByBlockTime(*result.axes, {.records = pass}, result.machine);
+    if (auto status = checkCancelled(cancel); !status) {
+        return status;
+    }
     if (result.toolRadius) {
         result.originalInterpolation = kinematics::interpolationDeviation(
             *result.axes, result.machine.chain, *result.toolRadius);

@@ -75,8 +75,14 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutco
         return std::unexpected(status.error());
     }
     motion.blockByBlock = analysis::blockByBlockTime(*outcome.axes, samples, machine);
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
     motion.interpolation =
         kinematics::interpolationDeviation(*outcome.axes, machine.chain, outcome.toolRadius);
+    if (auto status = checkCancelled(cancel); !status) {
+        return std::unexpected(status.error());
+    }
     motion.timeOptimal = analysis::convergedTimeOptimalOrNone(motion.profile, machine, &cancel);
     if (auto status = checkCancelled(cancel); !status) { // T2 cut short: none, not a figure
         return std::unexpected(status.error());

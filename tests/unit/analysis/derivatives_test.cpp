@@ -233,7 +233,8 @@ TEST(DifferentiateAxes, AnAxisCancelledWhileItsPositionsAreHandedOutIsNotDiffere
     const std::vector<double> s = randomGrid(rng, 200);
     const std::vector<std::vector<double>> axes = randomAxes(rng, s);
     ASSERT_GE(axes.size(), 2u);
-    for (DerivativeMethod method : {DerivativeMethod::Spline, DerivativeMethod::FiniteDifference}) {
+    for (DerivativeMethod method : {DerivativeMethod::Spline, DerivativeMethod::FiniteDifference,
+                                    DerivativeMethod::Filtered}) {
         CancelToken cancel;
         std::vector<int> asked(axes.size(), 0);
         const PositionsOf cancelling = [&](std::size_t k, std::vector<double>&) {

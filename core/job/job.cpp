@@ -199,7 +199,10 @@ Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel
     }
     if (result.toolRadius) {
         result.originalInterpolation = kinematics::interpolationDeviation(
-            *result.axes, result.machine.chain, *result.toolRadius);
+            *result.axes, result.machine.chain, *result.toolRadius, 3, &cancel);
+    }
+    if (auto status = checkCancelled(cancel); !status) { // a cut-short deviation is no figure
+        return status;
     }
     result.originalLostMotion = analysis::lostMotion(result.original, result.machine);
     return {};

@@ -78,8 +78,8 @@ Result<NewMotion> analyseNewMotion(const RescheduleInput& input, RescheduleOutco
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }
-    motion.interpolation =
-        kinematics::interpolationDeviation(*outcome.axes, machine.chain, outcome.toolRadius);
+    motion.interpolation = kinematics::interpolationDeviation(*outcome.axes, machine.chain,
+                                                              outcome.toolRadius, 3, &cancel);
     if (auto status = checkCancelled(cancel); !status) {
         return std::unexpected(status.error());
     }

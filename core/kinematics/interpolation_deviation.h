@@ -6,6 +6,7 @@
 // r dA^2 / 8 (0.8 um for 1 deg at 20 mm, 12 um for 4 deg). Keeping the programmed points is
 // not keeping the surface between them; this measures the difference.
 
+#include "core/base/progress.h"
 #include "core/kinematics/machine_model.h"
 
 #include <cstddef>
@@ -20,9 +21,12 @@ struct InterpolationDeviation {
 };
 
 // axes: the machine axes of consecutive records; the ball of radius `ballRadius` (mm) sits on
-// the tool axis. Each block is sampled at `samplesPerBlock` interior points.
+// the tool axis. Each block is sampled at `samplesPerBlock` interior points, the blocks on the
+// context's threads (the same result on any number). Once `cancel` is set it ends early with a
+// partial result, which a caller that looks at the token then drops.
 InterpolationDeviation interpolationDeviation(std::span<const MachineAxes> axes,
                                               const TableAHeadB& chain, double ballRadius,
-                                              int samplesPerBlock = 3);
+                                              int samplesPerBlock = 3,
+                                              const CancelToken* cancel = nullptr);
 
 } // namespace bladeaxis::kinematics

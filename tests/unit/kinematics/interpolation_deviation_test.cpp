@@ -1,6 +1,7 @@
 // The ball centre between two programmed points as a control without tool-centre-point
 // interpolation moves the axes: checked against the arc a turning table sweeps.
 
+#include "core/base/execution.h"
 #include "core/base/units.h"
 #include "core/kinematics/interpolation_deviation.h"
 
@@ -39,6 +40,42 @@ TEST(InterpolationDeviation, HalvingTheRotaryStepQuartersTheDeviation) {
         return interpolationDeviation(axes, machine.chain, 4.0, 9).maxMm;
     };
     EXPECT_NEAR(deviationFor(2.0) / deviationFor(1.0), 4.0, 0.01);
+}
+
+// Long enough for several ranges of threads, with two large turns in different ranges: any
+// thread count gives the serial maximum and its block.
+TEST(InterpolationDeviation, AnyThreadCountGivesTheSerialMaximumAndItsFirstBlock) {
+    const MachineModel machine = defaultBladeMachine();
+    std::vector<MachineAxes> axes;
+    double a = 0.0;
+    for (std::size_t i = 0; i < 100'000; ++i) {
+        const bool big = i == 30'000 || i == 80'000; // the same turn twice
+        a += units::degToRad(big ? 3.0 : 0.1 + 0.05 * std::sin(0.001 * static_cast<double>(i)));
+        axes.push_back({0.01 * static_cast<double>(i % 500), 0, 20, a, 0});
+    }
+    InterpolationDeviation serial;
+    {
+        const ThreadCountScope one(1);
+        serial = interpolationDeviation(axes, machine.chain, 4.0);
+    }
+    EXPECT_TRUE(serial.block == 30'000U || serial.block == 80'000U) << serial.block;
+    for (unsigned threads : {2U, 3U, 4U}) {
+        const ThreadCountScope scope(threads);
+        const InterpolationDeviation parallel = interpolationDeviation(axes, machine.chain, 4.0);
+        EXPECT_EQ(parallel.maxMm, serial.maxMm) << threads;
+        EXPECT_EQ(parallel.block, serial.block) << threads;
+        EXPECT_EQ(parallel.blocks, serial.blocks) << threads;
+    }
+}
+
+TEST(InterpolationDeviation, ACancelledTokenEndsItEarly) {
+    const MachineModel machine = defaultBladeMachine();
+    std::vector<MachineAxes> axes(200'000, MachineAxes{0, 0, 20, 0, 0});
+    axes.back().a = 1.0; // the one turn is in the last block
+    CancelToken cancel;
+    cancel.requestCancel();
+    EXPECT_EQ(interpolationDeviation(axes, machine.chain, 4.0, 3, &cancel).maxMm, 0.0);
+    EXPECT_GT(interpolationDeviation(axes, machine.chain, 4.0).maxMm, 0.0);
 }
 
 } // namespace

@@ -246,11 +246,16 @@ TEST(JobFile, UnknownDerivativeMethodNamesTheKey) {
     EXPECT_EQ(status.error().where.line, 3);
 }
 
+// A job file's text read as job.json.
+Status parsedJob(const std::string& text) {
+    JobSpec spec;
+    return parseJobJson(text, "job.json", spec);
+}
+
 TEST(JobFile, UnknownParameterNamesTheKeyAndLine) {
     const std::string text =
         "{\n \"schema\": \"bladeaxis-job/1\",\n \"parameters\": {\n  \"margn_deg\": 3\n }\n}";
-    JobSpec spec;
-    const auto status = parseJobJson(text, "job.json", spec);
+    const Status status = parsedJob(text);
     ASSERT_FALSE(status.has_value());
     EXPECT_EQ(status.error().toString(),
               "job.json:4: invalid argument: parameters.margn_deg: unknown key in the scheduling "
@@ -263,8 +268,7 @@ TEST(JobFile, AnErrorInALayerEditNamesTheEditsLineAndKey) {
     const std::string text = "{\n \"schema\": \"bladeaxis-job/1\",\n \"preset\": \"best\",\n"
                              " \"layer_edits\": [\n  { \"layer\": 1 },\n"
                              "  { \"layer\": 2, \"preset\": \"bogus\" }\n ]\n}";
-    JobSpec spec;
-    const auto status = parseJobJson(text, "job.json", spec);
+    const Status status = parsedJob(text);
     ASSERT_FALSE(status.has_value());
     EXPECT_EQ(status.error().toString(), "job.json:6: invalid argument: layer_edits[1].preset: "
                                          "expected \"faithful\" or \"best\"");
@@ -273,8 +277,7 @@ TEST(JobFile, AnErrorInALayerEditNamesTheEditsLineAndKey) {
 TEST(JobFile, AParameterOutOfRangeIsNamedWithItsSectionAndUnit) {
     const std::string text =
         "{\n \"schema\": \"bladeaxis-job/1\",\n \"parameters\": {\n  \"margin_deg\": 99\n }\n}";
-    JobSpec spec;
-    const auto status = parseJobJson(text, "job.json", spec);
+    const Status status = parsedJob(text);
     ASSERT_FALSE(status.has_value());
     EXPECT_EQ(status.error().where.line, 4);
     EXPECT_NE(status.error().message.find("parameters.margin_deg: expected a number from 0 to 45"),

@@ -137,12 +137,18 @@ std::vector<double> movingAverage(std::span<const double> values, std::size_t wi
     return out;
 }
 
-void smoothedPositions(std::span<const double> s, std::span<const double> position, double feed,
-                       double windowSeconds, double step, std::vector<double>& out) {
+bool smoothedPositions(std::span<const double> s, std::span<const double> position, double feed,
+                       double windowSeconds, double step, std::vector<double>& out,
+                       const CancelToken* cancel) {
     const auto width = static_cast<std::size_t>(std::lround(std::max(windowSeconds, 0.0) / step));
     resample(s, position, feed, step, out);
-    movingAverageInPlace(out, width);
-    movingAverageInPlace(out, width);
+    for (int pass = 0; pass < 2; ++pass) {
+        if (isCancelled(cancel)) {
+            return false;
+        }
+        movingAverageInPlace(out, width);
+    }
+    return true;
 }
 
 double sampleAt(const std::vector<double>& series, double step, double t) {

@@ -4,6 +4,8 @@
 // a centred moving average applied twice (a triangular FIR). Its derivatives measure the tool
 // orientation rather than the CL discretisation (raw second differences of G-code are impulses).
 
+#include "core/base/progress.h"
+
 #include <span>
 #include <vector>
 
@@ -31,9 +33,12 @@ void movingAverageInPlace(std::vector<double>& values, std::size_t width);
 
 // filterAxis's smoothed positions alone, into `out`, smoothed in place: what the derivatives
 // are taken from without keeping velocity, acceleration and jerk series (24 bytes per
-// millisecond of the pass and axis) or a second series of positions (8).
-void smoothedPositions(std::span<const double> s, std::span<const double> position, double feed,
-                       double windowSeconds, double step, std::vector<double>& out);
+// millisecond of the pass and axis) or a second series of positions (8). False, with `out`
+// unfinished, when `cancel` is set before a smoothing pass (each a tenth of a second or more
+// on tens of millions of milliseconds).
+bool smoothedPositions(std::span<const double> s, std::span<const double> position, double feed,
+                       double windowSeconds, double step, std::vector<double>& out,
+                       const CancelToken* cancel = nullptr);
 
 // Linear interpolation of a uniformly stepped series at time t (clamped to its ends).
 double sampleAt(const std::vector<double>& series, double step, double t);

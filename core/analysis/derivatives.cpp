@@ -219,8 +219,8 @@ bool filteredDerivatives(std::span<const double> s, std::span<const double> posi
                          double filterSeconds, AxisSeries& series, const CancelToken* cancel) {
     constexpr double kStep = 1e-3;
     std::vector<double> p;
-    smoothedPositions(s, position, feed, filterSeconds, kStep, p);
-    if (isCancelled(cancel)) {
+    if (!smoothedPositions(s, position, feed, filterSeconds, kStep, p, cancel) ||
+        isCancelled(cancel)) {
         return false;
     }
     const std::size_t m = p.size();

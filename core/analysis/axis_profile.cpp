@@ -221,9 +221,10 @@ Result<AxisProfile> analyseAxisMotion(SharedMachineAxes sharedAxes, const PathSa
     const PositionsOf positionsOf = [&](std::size_t k, std::vector<double>& scratch) {
         return sampledAxis(axes, profile.sampleRecord, kinematics::kAllAxes[k], scratch);
     };
-    std::vector<Result<AxisSeries>> series = differentiateAxes(
-        profile.pathParameter, kinematics::kAllAxes.size(), positionsOf, profile.feed,
-        options.method, options.filterSeconds, knots, options.cancel);
+    std::vector<Result<AxisSeries>> series =
+        differentiateAxes(profile.pathParameter, kinematics::kAllAxes.size(), positionsOf,
+                          profile.feed, options.method, options.filterSeconds, knots,
+                          options.cancel, options.filterSeriesBytesAtOnce);
     // The axes skipped on cancellation hold Cancelled: the job's, not an error of theirs.
     if (Status going = checkCancelled(options.cancel); !going) {
         return std::unexpected(std::move(going.error()));

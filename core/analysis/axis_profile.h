@@ -73,6 +73,10 @@ struct AxisProfileOptions {
     // analysis ends with ErrorCode::Cancelled within one axis's differentiation (about 0.3 s
     // at five million records). None: the analysis runs to its end.
     const CancelToken* cancel = nullptr;
+    // The most bytes the filter's millisecond series (8 per millisecond of the pass and axis)
+    // may hold at once; above it the axes are differentiated one at a time. 0: no limit, the
+    // axes on every thread of the context. A caller that owns a memory bound sets it (a job).
+    double filterSeriesBytesAtOnce = 0.0;
 };
 
 // One machine axis. Derivatives are time derivatives at the constant feed F:

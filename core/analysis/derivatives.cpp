@@ -558,22 +558,19 @@ Result<AxisSeries> differentiateOne(const SharedFit& fit, std::span<const double
     return series;
 }
 
-// The controller filter holds an axis's millisecond series while it differentiates the axis
-// (8 bytes per millisecond of the pass). Above this many bytes for the axes filtered at once
-// they go one at a time: a five-million-block program's series are about 190 MB per axis, and
-// two at once took the job's peak, which is in the input's analysis, above 1.5 GB. A
-// million-block program's (about 40 MB each) still go on every thread.
-constexpr double kFilterSeriesBytesAtOnce = 256.0 * 1024.0 * 1024.0;
-
+// The axes differentiated at once: every thread of the context, or one when the controller
+// filter's series of that many axes (8 bytes per millisecond of the pass each) would pass the
+// caller's budget.
 unsigned seriesThreads(std::span<const double> s, std::size_t axes, double feed,
-                       DerivativeMethod method) {
+                       DerivativeMethod method, double seriesBytesAtOnce) {
     const unsigned threads = resolveThreadCount(currentThreadCount());
-    if (method != DerivativeMethod::Filtered || s.size() < 2 || !(feed > 0.0)) {
+    if (method != DerivativeMethod::Filtered || !(seriesBytesAtOnce > 0.0) || s.size() < 2 ||
+        !(feed > 0.0)) {
         return threads;
     }
     const double milliseconds = (s.back() - s.front()) / feed / 1e-3;
     const double atOnce = static_cast<double>(std::min<std::size_t>(threads, axes));
-    return 8.0 * milliseconds * atOnce > kFilterSeriesBytesAtOnce ? 1U : threads;
+    return 8.0 * milliseconds * atOnce > seriesBytesAtOnce ? 1U : threads;
 }
 
 } // namespace
@@ -582,10 +579,11 @@ std::vector<Result<AxisSeries>> differentiateAxes(std::span<const double> s, std
                                                   const PositionsOf& positionsOf, double feed,
                                                   DerivativeMethod method, double filterSeconds,
                                                   std::span<const std::size_t> knots,
-                                                  const CancelToken* cancel) {
+                                                  const CancelToken* cancel,
+                                                  double filterSeriesBytesAtOnce) {
     const SharedFit fit(s, feed, method, filterSeconds, knots, cancel);
     std::vector<Result<AxisSeries>> results(axes);
-    const ThreadCountScope threads(seriesThreads(s, axes, feed, method));
+    const ThreadCountScope threads(seriesThreads(s, axes, feed, method, filterSeriesBytesAtOnce));
     forEachSeries(axes, s.size(), [&](std::size_t k) {
         if (isCancelled(cancel)) {
             results[k] = std::unexpected(cancelledError());

@@ -53,11 +53,14 @@ using PositionsOf =
 // differentiateAxes of `axes` axes whose positions are handed out one axis at a time: only the
 // axes being differentiated (one per thread) have positions and spline moments at once. An axis
 // that starts after `cancel` is set is not differentiated, and a spline fit under way stops
-// within 65,536 samples: their results are ErrorCode::Cancelled.
+// within 65,536 samples: their results are ErrorCode::Cancelled. With a budget
+// (AxisProfileOptions::filterSeriesBytesAtOnce) the filter's axes go one at a time when their
+// millisecond series would pass it together.
 std::vector<Result<AxisSeries>>
 differentiateAxes(std::span<const double> s, std::size_t axes, const PositionsOf& positionsOf,
                   double feed, DerivativeMethod method, double filterSeconds = 0.008,
-                  std::span<const std::size_t> knots = {}, const CancelToken* cancel = nullptr);
+                  std::span<const std::size_t> knots = {}, const CancelToken* cancel = nullptr,
+                  double filterSeriesBytesAtOnce = 0.0);
 
 // The p-quantile (0 <= p <= 1) of |values|, linear interpolation between order statistics
 // (numpy's default). 0 for an empty input. O(n).

@@ -87,4 +87,15 @@ int lineOfJsonKey(std::string_view text, std::span<const std::string> path) {
     return found;
 }
 
+std::string jsonKeyPathText(std::span<const std::string> path) {
+    std::string text;
+    for (const std::string& segment : path) {
+        const bool index = !segment.empty() && std::ranges::all_of(segment, [](char c) {
+            return c >= '0' && c <= '9';
+        });
+        text += index ? "[" + segment + "]" : (text.empty() ? "" : ".") + segment;
+    }
+    return text;
+}
+
 } // namespace bladeaxis

@@ -13,4 +13,8 @@ namespace bladeaxis {
 // With a key given twice the last one counts, as nlohmann keeps the last value.
 int lineOfJsonKey(std::string_view text, std::span<const std::string> path);
 
+// A key path as a file's reader names it: "axes.Z.max_mm", an array element's index in
+// brackets ("layer_edits[2].preset").
+std::string jsonKeyPathText(std::span<const std::string> path);
+
 } // namespace bladeaxis

@@ -176,6 +176,7 @@ Status analyse(JobResult& result, const JobSpec& spec, const CancelToken& cancel
             "' (is the machine file the machine it runs on?)");
     }
     analysis::AxisProfileOptions options = spec.analysis;
+    options.filterSeriesBytesAtOnce = kFilterSeriesBytesAtOnce;
     options.blockTimes = passIsBlockTimed(result.program, result.pass.first, result.pass.count);
     options.cancel = &cancel;
     if (result.toolRadius) {

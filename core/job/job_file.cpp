@@ -27,18 +27,6 @@ using Json = nlohmann::json;
 
 constexpr const char* kSchema = "bladeaxis-job/1";
 
-// A key path as the file reads: "parameters.margin_deg", "layer_edits[2].key_points".
-std::string dotted(const std::vector<std::string>& keyPath) {
-    std::string text;
-    for (const std::string& segment : keyPath) {
-        const bool index = !segment.empty() && std::ranges::all_of(segment, [](char c) {
-            return c >= '0' && c <= '9';
-        });
-        text += index ? "[" + segment + "]" : (text.empty() ? "" : ".") + segment;
-    }
-    return text;
-}
-
 class JobReader {
   public:
     JobReader(std::string_view text, const fs::path& path) : m_text(text), m_path(path) {}
@@ -50,7 +38,7 @@ class JobReader {
     // "layer_edits[2].preset".
     std::unexpected<Error> failAt(const std::vector<std::string>& keyPath,
                                   const std::string& what) const {
-        return makeError(ErrorCode::InvalidArgument, dotted(keyPath) + ": " + what,
+        return makeError(ErrorCode::InvalidArgument, jsonKeyPathText(keyPath) + ": " + what,
                          {m_path.string(), lineOfJsonKey(m_text, keyPath), 0});
     }
     std::unexpected<Error> fail(std::string_view key, const std::string& what) const {

@@ -15,6 +15,12 @@
 
 namespace bladeaxis::job {
 
+// The most a job lets the controller filter's millisecond series hold at once (8 bytes per
+// millisecond of the pass and axis), in both analyses: a five-million-block program's series are
+// about 190 MB per axis, and two at once took the job's peak above its 1.5 GB bound; a
+// million-block program's (about 40 MB each) still go on every thread.
+inline constexpr double kFilterSeriesBytesAtOnce = 256.0 * 1024.0 * 1024.0;
+
 // The program read and parsed (or the demo program generated, with its radius in `toolRadius`).
 Result<io::LoadedProgram> loadInput(const JobSpec& spec, const Retention& keep,
                                     const kinematics::MachineModel& machine,

@@ -140,6 +140,7 @@ RescheduleInput rescheduleInputOf(JobResult& result, const JobSpec& spec,
     reschedule.keep = result.kept;
     reschedule.analysis = spec.analysis;
     reschedule.analysis.toolRadius = *result.toolRadius;
+    reschedule.analysis.filterSeriesBytesAtOnce = kFilterSeriesBytesAtOnce;
     reschedule.analysis.blockTimes =
         passIsBlockTimed(result.program, result.pass.first, result.pass.count);
     return reschedule;

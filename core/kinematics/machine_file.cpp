@@ -50,14 +50,6 @@ std::vector<std::string> splitPath(std::string_view dotted) {
     return segments;
 }
 
-std::string joinPath(const std::vector<std::string>& segments) {
-    std::string dotted;
-    for (const std::string& segment : segments) {
-        dotted += (dotted.empty() ? "" : ".") + segment;
-    }
-    return dotted;
-}
-
 // The keys each object of a machine file may hold are its schema's (generated from
 // resources/schemas/machine-file.schema.json, docs/machine-file.md). A key outside them was
 // ignored, so "max_mmm" silently dropped the travel check: it is refused.
@@ -109,7 +101,8 @@ std::unexpected<Error> MachineReader::failAt(const std::vector<std::string>& pat
     for (std::size_t length = path.size(); line == 0 && length > 0; --length) {
         line = lineOfJsonKey(m_text, std::span(path).first(length));
     }
-    return makeError(ErrorCode::MachineFile, joinPath(path) + ": " + what, {m_file, line, 0});
+    return makeError(ErrorCode::MachineFile, jsonKeyPathText(path) + ": " + what,
+                     {m_file, line, 0});
 }
 
 Status MachineReader::knownKeys(const Json& object, const std::vector<std::string>& path,

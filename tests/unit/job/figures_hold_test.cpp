@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "awkward_programs.h"
 #include "demo_job.h"
@@ -24,12 +25,16 @@ const compare::Comparison& comparisonOf(const std::string& name, const toolpath:
         return found->second;
     }
     const CleanPass& clean = cleanPass();
-    const fs::path file = fs::temp_directory_path() / ("bladeaxis_figures_" + name + ".cl");
+    // One file per process: ctest runs each case of this suite as its own process, two at a
+    // time, and a shared name let one read the other's half-written program.
+    const fs::path file = fs::temp_directory_path() /
+                          ("bladeaxis_figures_" + name + "_" + std::to_string(::getpid()) + ".cl");
     std::ofstream(file, std::ios::binary) << aptText(path, clean.toolRadius, clean.feedMmPerMin);
     JobSpec spec;
     spec.program = file;
     spec.compare = true;
     auto result = runQuietly(spec);
+    fs::remove(file);
     if (!result || !result->comparison) {
         throw std::runtime_error(result ? "no comparison" : result.error().toString());
     }
